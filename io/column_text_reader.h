@@ -1,0 +1,30 @@
+#pragma once
+
+#include <string>
+
+#include "io/diagnostics.h"
+#include "io/section_table.h"
+#include "io/units.h"
+
+namespace caliper3d::io {
+
+// The reference tool's plain column text: per line
+//   depth R1 .. RN P1AZ DEVI HAZI
+// separated by spaces or tabs, decimal point or decimal comma. Blank lines and
+// lines starting with '#' are skipped; CRLF line ends are accepted.
+struct ColumnTextOptions {
+    int armCount = 6;
+    LengthUnit depthUnit = LengthUnit::Metre;
+    LengthUnit radiusUnit = LengthUnit::Inch;
+};
+
+// Reads the whole file. Throws ParseError naming file, line and column when a
+// line has the wrong number of columns or a field is not a number.
+SectionTable readColumnText(const std::string& path, const ColumnTextOptions& options,
+                            Diagnostics* diagnostics = nullptr);
+
+// Same, from text already in memory; `name` is used in messages.
+SectionTable parseColumnText(const std::string& text, const std::string& name,
+                             const ColumnTextOptions& options, Diagnostics* diagnostics = nullptr);
+
+}  // namespace caliper3d::io

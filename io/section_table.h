@@ -1,0 +1,38 @@
+#pragma once
+
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace caliper3d::io {
+
+inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// One caliper log as read from a file, in the product's internal units:
+// depths in metres (measured depth along the hole), radii in millimetres
+// (tool axis to wall), angles in degrees. Struct of arrays; every non-empty
+// vector has one value per row. Optional curves are empty when the log lacks
+// them; a missing value inside a present curve is NaN.
+struct SectionTable {
+    std::string source;   // file the table came from (for messages)
+    int armCount = 0;     // radii per row
+
+    std::vector<double> depth_m;
+    std::vector<double> radius_mm;  // row-major: armCount values per row
+    std::vector<double> p1az_deg;   // azimuth of arm 1 from north, clockwise
+    std::vector<double> devi_deg;   // inclination, 0 = vertical down
+    std::vector<double> hazi_deg;   // hole azimuth from north, clockwise
+    std::vector<double> rb_deg;     // relative bearing of arm 1 from the high side
+    std::vector<double> bitSize_mm; // bit size per row (from a parameter or a curve)
+
+    std::size_t rowCount() const { return depth_m.size(); }
+    const double* radii(std::size_t row) const { return radius_mm.data() + row * armCount; }
+    double* radii(std::size_t row) { return radius_mm.data() + row * armCount; }
+
+    // Appends all rows of `other` (same armCount and same optional curves).
+    void append(const SectionTable& other);
+    void reserve(std::size_t rows);
+};
+
+}  // namespace caliper3d::io

@@ -1,0 +1,199 @@
+#include "reconstruction/well_geometry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
+#include <glm/trigonometric.hpp>
+
+#include "reconstruction/arm_geometry.h"
+#include "reconstruction/colour_map.h"
+
+namespace caliper3d::reconstruction {
+
+namespace {
+
+double valueAt(const std::vector<double>& curve, std::size_t row) {
+    return row < curve.size() ? curve[row] : io::kNaN;
+}
+
+// Carries the last finite value forward (0 before the first) so that a null
+// orientation reading never produces a NaN position.
+std::vector<double> filled(const std::vector<double>& curve, std::size_t rows) {
+    std::vector<double> out(rows, 0.0);
+    double last = 0.0;
+    for (std::size_t i = 0; i < rows; ++i) {
+        const double v = valueAt(curve, i);
+        if (std::isfinite(v)) last = v;
+        out[i] = last;
+    }
+    return out;
+}
+
+}  // namespace
+
+WellGeometry::WellGeometry(std::shared_ptr<const io::SectionTable> table,
+                           const GeometryOptions& options)
+    : m_table(std::move(table)),
+      m_options(options),
+      m_sampler(std::max(3, m_table ? m_table->armCount : 3), options.splinePoints) {
+    const io::SectionTable& t = *m_table;
+    const std::size_t rows = t.rowCount();
+    if (t.armCount < 3) throw std::invalid_argument(t.source + ": need at least 3 arms to draw a section");
+    if (rows < 2) throw std::invalid_argument(t.source + ": need at least 2 sections to draw a hole");
+    for (std::size_t i = 1; i < rows; ++i) {
+        if (!(t.depth_m[i] > t.depth_m[i - 1]))
+            throw std::invalid_argument(t.source + ": depths must increase (row " +
+                                        std::to_string(i + 1) + ")");
+    }
+
+    const std::vector<double> inc = filled(t.devi_deg, rows);
+    const std::vector<double> azi = filled(t.hazi_deg, rows);
+    std::vector<SurveyStation> stations(rows);
+    for (std::size_t i = 0; i < rows; ++i) stations[i] = {t.depth_m[i], inc[i], azi[i]};
+    m_path = minimumCurvaturePath(stations);
+
+    m_frames.resize(rows);
+    const bool hasP1az = !t.p1az_deg.empty();
+    const bool hasRb = !t.rb_deg.empty();
+    for (std::size_t i = 0; i < rows; ++i) {
+        const double p1az = valueAt(t.p1az_deg, i);
+        const double rb = valueAt(t.rb_deg, i);
+        const bool steep = inc[i] > m_options.steepInclination_deg;
+        if (hasRb && std::isfinite(rb) && (steep || !hasP1az || !std::isfinite(p1az))) {
+            m_frames[i] = frameFromRelativeBearing(inc[i], azi[i], rb);
+        } else {
+            m_frames[i] = frameFromPadAzimuth(inc[i], azi[i], std::isfinite(p1az) ? p1az : 0.0);
+        }
+    }
+
+    // Segments of equal length; consecutive segments share their boundary row.
+    const double segment = std::max(m_options.segmentLength_m, 1e-3);
+    std::size_t first = 0;
+    while (first + 1 < rows) {
+        const double limit = t.depth_m[first] + segment;
+        std::size_t last = first + 1;
+        while (last + 1 < rows && t.depth_m[last + 1] <= limit) ++last;
+        m_segments.emplace_back(first, last);
+        first = last;
+    }
+}
+
+Ned WellGeometry::centre(std::size_t row) const {
+    const PathPoint& p = m_path[row];
+    return Ned(p.north, p.east, p.tvd) + m_options.wellheadOffset;
+}
+
+double WellGeometry::bitRadius_mm(std::size_t row) const {
+    return valueAt(m_table->bitSize_mm, row) / 2.0;
+}
+
+std::vector<double> WellGeometry::repairedRadii(std::size_t row) const {
+    const int n = m_table->armCount;
+    const double* r = m_table->radii(row);
+    std::vector<double> out(r, r + n);
+    auto valid = [](double v) { return std::isfinite(v) && v > 0.0; };
+    int good = 0;
+    for (double v : out) good += valid(v) ? 1 : 0;
+    if (good == n) return out;
+    if (good == 0) {
+        const double fallback = std::isfinite(bitRadius_mm(row)) ? bitRadius_mm(row) : 100.0;
+        std::fill(out.begin(), out.end(), fallback);
+        return out;
+    }
+    // Linear interpolation around the section between the nearest valid arms.
+    for (int k = 0; k < n; ++k) {
+        if (valid(r[k])) continue;
+        int before = 1, after = 1;
+        while (!valid(r[(k - before + n) % n])) ++before;
+        while (!valid(r[(k + after) % n])) ++after;
+        const double a = r[(k - before + n) % n], b = r[(k + after) % n];
+        out[static_cast<std::size_t>(k)] = a + (b - a) * before / static_cast<double>(before + after);
+    }
+    return out;
+}
+
+void WellGeometry::appendRing(Mesh& mesh, std::size_t row, bool spline) const {
+    const int n = m_table->armCount;
+    const std::vector<double> pads = repairedRadii(row);
+    std::vector<double> radii;
+    if (spline) {
+        radii.resize(static_cast<std::size_t>(m_sampler.samples()));
+        m_sampler.sample(pads.data(), radii.data());
+    } else {
+        radii = pads;
+    }
+    const int points = static_cast<int>(radii.size());
+    const SectionFrame& f = m_frames[row];
+    const Ned c = centre(row);
+    const double bitRadius = bitRadius_mm(row);
+    const std::size_t base = mesh.positions.size();
+    for (int j = 0; j < points; ++j) {
+        const double phi = glm::two_pi<double>() * j / points;
+        const Ned p = c + (radii[static_cast<std::size_t>(j)] / 1000.0) * f.direction(phi);
+        mesh.positions.emplace_back(toScene(p));
+        mesh.colours.push_back(gaugeColour(radii[static_cast<std::size_t>(j)], bitRadius));
+    }
+    // Outward normals: in-plane tangent (clockwise) crossed with the hole axis.
+    for (int j = 0; j < points; ++j) {
+        const glm::vec3& next = mesh.positions[base + static_cast<std::size_t>((j + 1) % points)];
+        const glm::vec3& prev = mesh.positions[base + static_cast<std::size_t>((j + points - 1) % points)];
+        const glm::dvec3 d = glm::dvec3(next - prev);
+        glm::dvec3 normal = glm::cross(d, toScene(f.tangent));
+        const double len = glm::length(normal);
+        mesh.normals.emplace_back(len > 0 ? normal / len : toScene(f.direction(glm::two_pi<double>() * j / points)));
+    }
+    (void)n;
+}
+
+Mesh WellGeometry::buildLevel(const std::vector<std::size_t>& rows, bool spline) const {
+    Mesh mesh;
+    const int points = spline ? m_sampler.samples() : m_table->armCount;
+    mesh.positions.reserve(rows.size() * static_cast<std::size_t>(points));
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        appendRing(mesh, rows[i], spline);
+        if (i > 0) {
+            appendClosedStrip(mesh.stripIndices, static_cast<std::int32_t>((i - 1) * points),
+                              static_cast<std::int32_t>(i * points), points);
+        }
+    }
+    return mesh;
+}
+
+SegmentMesh WellGeometry::buildSegment(std::size_t segment) const {
+    const auto [first, last] = m_segments.at(segment);
+    SegmentMesh out;
+    out.index = segment;
+    out.firstRow = first;
+    out.lastRow = last;
+    out.top_m = m_table->depth_m[first];
+    out.bottom_m = m_table->depth_m[last];
+
+    std::vector<std::size_t> all;
+    for (std::size_t r = first; r <= last; ++r) all.push_back(r);
+    out.levels.push_back(buildLevel(all, true));
+
+    // Coarser levels: rows picked at a fixed depth spacing, ends always kept
+    // so that neighbouring segments meet without a gap at every level.
+    for (double spacing : {m_options.coarseSpacing_m, m_options.coarsestSpacing_m}) {
+        std::vector<std::size_t> rows{first};
+        double next = out.top_m + spacing;
+        for (std::size_t r = first + 1; r < last; ++r) {
+            if (m_table->depth_m[r] >= next) {
+                rows.push_back(r);
+                next = m_table->depth_m[r] + spacing;
+            }
+        }
+        rows.push_back(last);
+        out.levels.push_back(buildLevel(rows, false));
+    }
+
+    const glm::dvec3 a = toScene(centre(first)), b = toScene(centre(last));
+    out.centre = glm::vec3((a + b) / 2.0);
+    out.radius = static_cast<float>(glm::length(b - a) / 2.0 + 1.0);
+    return out;
+}
+
+}  // namespace caliper3d::reconstruction

@@ -1,0 +1,79 @@
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "io/section_table.h"
+#include "reconstruction/mesh.h"
+#include "reconstruction/minimum_curvature.h"
+#include "reconstruction/periodic_spline.h"
+#include "reconstruction/section_frame.h"
+
+namespace caliper3d::reconstruction {
+
+struct GeometryOptions {
+    int splinePoints = 48;            // M: samples of the closed spline per section
+    double segmentLength_m = 10.0;    // the well is cut into segments of this length
+    double coarseSpacing_m = 0.5;     // level 1: raw N-gon every this many metres
+    double coarsestSpacing_m = 2.5;   // level 2: raw N-gon, sparser still
+    double steepInclination_deg = 15.0;  // above this, arm 1 comes from RB when present
+    glm::dvec3 wellheadOffset{0.0, 0.0, 0.0};  // NED offset of this wellhead from the scene origin
+};
+
+// One segment's meshes, finest level first.
+struct SegmentMesh {
+    std::size_t index = 0;
+    std::size_t firstRow = 0;  // rows [firstRow, lastRow], sharing lastRow with the next segment
+    std::size_t lastRow = 0;
+    double top_m = 0.0;
+    double bottom_m = 0.0;
+    glm::vec3 centre{0.0f};    // scene frame, for LOD distances
+    float radius = 0.0f;       // bounding sphere radius, scene units (metres)
+    std::vector<Mesh> levels;
+};
+
+// The well's path, section frames and segment layout, computed once from a
+// section table; segment meshes are built on demand (a worker can build them
+// in any order and on any thread: this class is immutable after construction).
+class WellGeometry {
+public:
+    WellGeometry(std::shared_ptr<const io::SectionTable> table, const GeometryOptions& options);
+
+    const io::SectionTable& table() const { return *m_table; }
+    const GeometryOptions& options() const { return m_options; }
+    const std::vector<PathPoint>& path() const { return m_path; }
+    const SectionFrame& frame(std::size_t row) const { return m_frames[row]; }
+    std::size_t segmentCount() const { return m_segments.size(); }
+    std::pair<std::size_t, std::size_t> segmentRows(std::size_t segment) const {
+        return m_segments[segment];
+    }
+
+    // Radii of a row with missing or non-positive arms filled from their
+    // neighbours in the section (NaN-free; millimetres).
+    std::vector<double> repairedRadii(std::size_t row) const;
+
+    // Bit radius of a row, millimetres (NaN when unknown).
+    double bitRadius_mm(std::size_t row) const;
+
+    SegmentMesh buildSegment(std::size_t segment) const;
+
+    // Tool-axis position of a row in the analysis frame (metres), wellhead offset included.
+    Ned centre(std::size_t row) const;
+
+private:
+    void appendRing(Mesh& mesh, std::size_t row, bool spline) const;
+    Mesh buildLevel(const std::vector<std::size_t>& rows, bool spline) const;
+
+    std::shared_ptr<const io::SectionTable> m_table;
+    GeometryOptions m_options;
+    std::vector<PathPoint> m_path;
+    std::vector<SectionFrame> m_frames;
+    std::vector<std::pair<std::size_t, std::size_t>> m_segments;
+    PeriodicSplineSampler m_sampler;
+};
+
+}  // namespace caliper3d::reconstruction

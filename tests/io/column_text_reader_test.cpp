@@ -1,0 +1,84 @@
+#include "io/column_text_reader.h"
+
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "io/column_text_writer.h"
+#include "io/parse_error.h"
+
+using namespace caliper3d::io;
+
+TEST(ColumnTextReaderTest, ReadsReferenceLayoutWithTabsAndDecimalComma) {
+    const std::string text =
+        "1000.0\t4.25 4.25 4.25 4.25 4.25 4.25 359.97920 0.5 10\r\n"
+        "\n"
+        "# a comment\n"
+        "1000,0025 4,30 4,20 4,25 4,25 4,25 4,25 359,98610 0,5 10\n";
+    SectionTable t = parseColumnText(text, "well.txt", ColumnTextOptions{});
+    ASSERT_EQ(t.rowCount(), 2u);
+    EXPECT_EQ(t.armCount, 6);
+    EXPECT_DOUBLE_EQ(t.depth_m[1], 1000.0025);
+    EXPECT_NEAR(t.radii(0)[0], 4.25 * 25.4, 1e-9);  // inches -> mm
+    EXPECT_NEAR(t.radii(1)[1], 4.20 * 25.4, 1e-9);
+    EXPECT_DOUBLE_EQ(t.p1az_deg[0], 359.9792);
+    EXPECT_DOUBLE_EQ(t.p1az_deg[1], 359.9861);
+    EXPECT_DOUBLE_EQ(t.devi_deg[1], 0.5);
+    EXPECT_DOUBLE_EQ(t.hazi_deg[1], 10.0);
+}
+
+TEST(ColumnTextReaderTest, WrongColumnCountNamesFileLineAndLayout) {
+    const std::string text = "1 2 3 4 5 6 7 8 9 10\n1 2 3 4 5 6 7 8 9\n";
+    try {
+        parseColumnText(text, "bad.txt", ColumnTextOptions{});
+        FAIL() << "expected a ParseError";
+    } catch (const ParseError& e) {
+        EXPECT_EQ(e.file(), "bad.txt");
+        EXPECT_EQ(e.line(), 2u);
+        EXPECT_NE(std::string(e.what()).find("expected 10 columns"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("found 9"), std::string::npos) << e.what();
+    }
+}
+
+TEST(ColumnTextReaderTest, NonNumberNamesColumnAndToken) {
+    const std::string text = "1 2 3 x3 4 5 6 7 8 9\n";
+    try {
+        parseColumnText(text, "bad.txt", ColumnTextOptions{});
+        FAIL() << "expected a ParseError";
+    } catch (const ParseError& e) {
+        EXPECT_EQ(e.line(), 1u);
+        EXPECT_EQ(e.column(), 7u);
+        EXPECT_NE(std::string(e.what()).find("R3"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("'x3'"), std::string::npos) << e.what();
+    }
+}
+
+TEST(ColumnTextReaderTest, ArmCountAndUnitsAreOptions) {
+    ColumnTextOptions options;
+    options.armCount = 4;
+    options.radiusUnit = LengthUnit::Millimetre;
+    options.depthUnit = LengthUnit::Foot;
+    SectionTable t = parseColumnText("100 101 102 103 104 5 6 7\n", "f.txt", options);
+    ASSERT_EQ(t.rowCount(), 1u);
+    EXPECT_DOUBLE_EQ(t.depth_m[0], 30.48);
+    EXPECT_DOUBLE_EQ(t.radii(0)[3], 104.0);
+}
+
+TEST(ColumnTextReaderTest, WriterOutputReadsBack) {
+    SectionTable t;
+    t.armCount = 6;
+    for (int i = 0; i < 5; ++i) {
+        t.depth_m.push_back(100.0 + 0.0025 * i);
+        for (int k = 0; k < 6; ++k) t.radius_mm.push_back(108.0 + i + 0.1 * k);
+        t.p1az_deg.push_back(12.5 * i);
+        t.devi_deg.push_back(1.0);
+        t.hazi_deg.push_back(200.0);
+    }
+    std::ostringstream out;
+    writeColumnText(out, t);
+    SectionTable back = parseColumnText(out.str(), "roundtrip", ColumnTextOptions{});
+    ASSERT_EQ(back.rowCount(), t.rowCount());
+    for (std::size_t i = 0; i < t.radius_mm.size(); ++i) EXPECT_NEAR(back.radius_mm[i], t.radius_mm[i], 1e-9);
+    EXPECT_EQ(back.depth_m, t.depth_m);
+    EXPECT_EQ(back.p1az_deg, t.p1az_deg);
+}

@@ -1,0 +1,72 @@
+#include "reconstruction/well_geometry.h"
+
+#include <cmath>
+#include <memory>
+
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+#include <gtest/gtest.h>
+
+#include "reconstruction/synthetic_well.h"
+
+using namespace caliper3d::reconstruction;
+
+namespace {
+std::shared_ptr<const caliper3d::io::SectionTable> circleWell(double length, double step) {
+    return std::make_shared<const caliper3d::io::SectionTable>(
+        makeSyntheticWell(syntheticProfile("circle", length, step)));
+}
+}  // namespace
+
+TEST(WellGeometryTest, SegmentsCoverEveryRowAndShareBoundaries) {
+    WellGeometry g(circleWell(35.0, 0.1), GeometryOptions{});
+    ASSERT_EQ(g.segmentCount(), 4u);  // 10 m segments over 35 m
+    EXPECT_EQ(g.segmentRows(0).first, 0u);
+    for (std::size_t s = 1; s < g.segmentCount(); ++s)
+        EXPECT_EQ(g.segmentRows(s).first, g.segmentRows(s - 1).second);
+    EXPECT_EQ(g.segmentRows(g.segmentCount() - 1).second, g.table().rowCount() - 1);
+}
+
+TEST(WellGeometryTest, FullLevelHasSplineRingsAndCoarseLevelsAreNGons) {
+    GeometryOptions options;
+    options.splinePoints = 48;
+    WellGeometry g(circleWell(10.0, 0.1), options);
+    const SegmentMesh seg = g.buildSegment(0);
+    ASSERT_EQ(seg.levels.size(), 3u);
+    const std::size_t rings = seg.lastRow - seg.firstRow + 1;
+    EXPECT_EQ(seg.levels[0].positions.size(), rings * 48);
+    EXPECT_EQ(seg.levels[0].triangleCount(), (rings - 1) * 96);
+    EXPECT_EQ(seg.levels[1].positions.size() % 6, 0u);
+    EXPECT_LT(seg.levels[1].positions.size(), seg.levels[0].positions.size() / 8);
+    EXPECT_LE(seg.levels[2].positions.size(), seg.levels[1].positions.size());
+}
+
+TEST(WellGeometryTest, GaugeHoleVerticesLieAtBitRadiusAroundTheAxis) {
+    WellGeometry g(circleWell(10.0, 0.5), GeometryOptions{});
+    const SegmentMesh seg = g.buildSegment(0);
+    const Mesh& m = seg.levels[0];
+    for (std::size_t i = 0; i < m.positions.size(); ++i) {
+        const glm::vec3 p = m.positions[i];
+        // Vertical hole at the origin: the axis is the scene's Y axis.
+        EXPECT_NEAR(std::hypot(p.x, p.z), 0.21590f / 2, 1e-5f);
+        // Normals point outward.
+        EXPECT_GT(glm::dot(glm::vec2(m.normals[i].x, m.normals[i].z), glm::vec2(p.x, p.z)), 0.0f);
+    }
+    EXPECT_NEAR(m.positions.back().y, -10.0f, 1e-4f);
+}
+
+TEST(WellGeometryTest, MissingArmIsFilledFromNeighbours) {
+    auto table = makeSyntheticWell(syntheticProfile("circle", 2.0, 0.5));
+    table.radii(1)[2] = std::nan("");
+    table.radii(2)[0] = -1.0;
+    WellGeometry g(std::make_shared<const caliper3d::io::SectionTable>(table), GeometryOptions{});
+    for (double r : g.repairedRadii(1)) EXPECT_NEAR(r, 215.9 / 2, 1e-9);
+    for (double r : g.repairedRadii(2)) EXPECT_NEAR(r, 215.9 / 2, 1e-9);
+}
+
+TEST(WellGeometryTest, RejectsDepthsThatDoNotIncrease) {
+    auto table = makeSyntheticWell(syntheticProfile("circle", 2.0, 0.5));
+    table.depth_m[2] = table.depth_m[1];
+    EXPECT_THROW(WellGeometry(std::make_shared<const caliper3d::io::SectionTable>(table), GeometryOptions{}),
+                 std::invalid_argument);
+}

@@ -1,0 +1,32 @@
+#pragma once
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+
+namespace caliper3d::test {
+
+// Folder of the read-only reference data (../shared/data beside the checkout),
+// or the CALIPER3D_SHARED_DATA environment variable when set.
+inline std::filesystem::path sharedData() {
+    if (const char* env = std::getenv("CALIPER3D_SHARED_DATA")) return env;
+    return CALIPER3D_SHARED_DATA;
+}
+
+// A scratch folder for files a test writes.
+inline std::filesystem::path scratch(const std::string& name) {
+    std::filesystem::path dir = std::filesystem::path(CALIPER3D_TEST_TMP);
+    std::filesystem::create_directories(dir);
+    return dir / name;
+}
+
+}  // namespace caliper3d::test
+
+// Skips the current test when a reference data file is absent.
+#define CALIPER3D_REQUIRE_DATA(path)                                            \
+    do {                                                                        \
+        if (!std::filesystem::exists(path))                                     \
+            GTEST_SKIP() << "reference data not present: " << (path).string(); \
+    } while (0)
