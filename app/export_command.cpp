@@ -1,0 +1,51 @@
+#include <chrono>
+#include <cstdio>
+#include <exception>
+
+#include "app/commands.h"
+#include "app/input_options.h"
+#include "app/scene_assembly.h"
+#include "app/verb_parser.h"
+#include "scenegraph/iv_export.h"
+#include "scenegraph/main_thread.h"
+
+namespace caliper3d::app {
+
+int runExport(const QStringList& args) {
+    try {
+        VerbParser verb("export", "FILE... -o OUT.iv", "Export wells as an Open Inventor scene.");
+        QCommandLineParser& p = verb.parser();
+        p.addOption({{"o", "output"}, "Output file (.iv).", "OUT"});
+        p.addOption({"binary", "Write binary Open Inventor (smaller, faster to read)."});
+        p.addOption({"gzip", "Compress the output with gzip."});
+        addInputOptions(p);
+        if (!verb.parse(args, 1)) return kExitOk;
+        if (!verb.isSet("output")) throw UsageError("caliper3d export: -o OUT.iv is required");
+        const std::string out = verb.value("output");
+        if (out.size() < 3 || out.compare(out.size() - 3, 3, ".iv") != 0)
+            throw UsageError("caliper3d export: only .iv output is supported so far, got '" + out + "'");
+        const InputOptions options = inputOptionsFrom(p);
+
+        scenegraph::initCoin();
+        const auto start = std::chrono::steady_clock::now();
+        AssembledScene scene = assembleScene(verb.positional(), options);
+        if (scene.wells == 0) return kExitBadInput;
+        scenegraph::IvExportOptions ivOptions;
+        ivOptions.binary = verb.isSet("binary");
+        ivOptions.gzip = verb.isSet("gzip");
+        scenegraph::writeIv(scene.root.get(), out, ivOptions);
+        const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::printf("wrote %s (%d well%s) in %.2f s\n", out.c_str(), scene.wells, scene.wells == 1 ? "" : "s",
+                    seconds);
+        return scene.failures > 0 ? kExitBadInput : kExitOk;
+    } catch (const UsageError& e) {
+        std::fprintf(stderr, "%s\n", e.what());
+        return kExitUsage;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "caliper3d export: %s\n", e.what());
+        return kExitBadInput;
+    }
+}
+
+}  // namespace caliper3d::app

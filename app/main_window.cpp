@@ -1,0 +1,132 @@
+#include "app/main_window.h"
+
+#include <QAction>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QStatusBar>
+#include <QTimer>
+
+#include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
+#include <Inventor/actions/SoGetBoundingBoxAction.h>
+#include <Inventor/nodes/SoCamera.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+#include "reconstruction/well_load_pipeline.h"
+#include "scenegraph/camera_setup.h"
+#include "scenegraph/iv_export.h"
+#include "scenegraph/segment_feeder.h"
+#include "scenegraph/well_scene.h"
+
+namespace caliper3d::app {
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
+    setWindowTitle("caliper3d");
+    resize(1200, 800);
+    auto* centre = new QWidget(this);
+    setCentralWidget(centre);
+    m_viewer = new SoQtExaminerViewer(centre);
+    m_viewer->setBackgroundColor(SbColor(0.11f, 0.13f, 0.17f));
+    m_viewer->setTransparencyType(SoGLRenderAction::SORTED_OBJECT_BLEND);
+    m_sceneRoot = new SoSeparator;
+    m_sceneRoot->ref();
+    m_viewer->setSceneGraph(m_sceneRoot);
+    m_status = new QLabel("No well loaded", this);
+    statusBar()->addWidget(m_status, 1);
+    buildMenus();
+}
+
+MainWindow::~MainWindow() {
+    // Stop the worker before the nodes and the viewer go.
+    m_feeder.reset();
+    m_pipeline.reset();
+    m_viewer->setSceneGraph(nullptr);
+    m_well.reset();
+    m_sceneRoot->unref();
+    delete m_viewer;
+}
+
+void MainWindow::buildMenus() {
+    QMenu* file = menuBar()->addMenu("&File");
+    file->addAction("&Open well...", this, &MainWindow::openDialog, QKeySequence::Open);
+    file->addAction("&Export scene (.iv)...", this, &MainWindow::exportDialog);
+    file->addSeparator();
+    file->addAction("&Quit", this, &QWidget::close, QKeySequence::Quit);
+    QMenu* view = menuBar()->addMenu("&View");
+    view->addAction("View &all", this, [this] { m_viewer->viewAll(); });
+    view->addAction("&Iso", this, [this] { setView(int(scenegraph::ViewDirection::Iso)); });
+    view->addAction("Looking &north", this, [this] { setView(int(scenegraph::ViewDirection::North)); });
+    view->addAction("Looking &east", this, [this] { setView(int(scenegraph::ViewDirection::East)); });
+    view->addAction("From &top", this, [this] { setView(int(scenegraph::ViewDirection::Top)); });
+}
+
+bool MainWindow::loading() const { return m_feeder && !m_feeder->done(); }
+
+void MainWindow::openWell(const QString& path, const InputOptions& options) {
+    m_feeder.reset();
+    m_pipeline.reset();
+    m_sceneRoot->removeAllChildren();
+    m_well = std::make_unique<scenegraph::WellScene>();
+    m_sceneRoot->addChild(m_well->root());
+    m_lastOptions = options;
+    m_viewedAll = false;
+    const std::string file = path.toStdString();
+    m_pipeline = std::make_unique<reconstruction::WellLoadPipeline>(
+        [file, options] { return readWellFile(file, options, nullptr); }, geometryOptions(options));
+    const QString name = QFileInfo(path).fileName();
+    m_status->setText("Loading " + name + "...");
+    setWindowTitle("caliper3d - " + name);
+    scenegraph::SegmentFeeder::Callbacks callbacks;
+    callbacks.progress = [this, name](std::size_t attached) {
+        if (!m_viewedAll && attached >= 1) {
+            m_viewer->viewAll();
+            m_viewedAll = true;
+        }
+        m_status->setText(QString("Loading %1: %2 segments").arg(name).arg(attached));
+    };
+    callbacks.finished = [this, name](std::size_t segments) {
+        m_status->setText(QString("%1: %2 segments, %3 triangles at full detail")
+                              .arg(name)
+                              .arg(segments)
+                              .arg(m_well->fullDetailTriangles()));
+        m_viewer->viewAll();
+        emit wellLoaded(static_cast<int>(segments));
+    };
+    callbacks.failed = [this, name](const std::string& message) {
+        m_status->setText(name + ": failed");
+        emit wellFailed(QString::fromStdString(message));
+    };
+    m_feeder = std::make_unique<scenegraph::SegmentFeeder>(*m_pipeline, *m_well, callbacks);
+    m_pipeline->start();
+}
+
+void MainWindow::openDialog() {
+    const QString path = QFileDialog::getOpenFileName(this, "Open caliper log", QString(),
+                                                      "Caliper logs (*.txt *.las *.LAS *.csv);;All files (*)");
+    if (!path.isEmpty()) openWell(path, m_lastOptions);
+}
+
+void MainWindow::exportDialog() {
+    const QString path = QFileDialog::getSaveFileName(this, "Export scene", "scene.iv", "Open Inventor (*.iv)");
+    if (path.isEmpty()) return;
+    try {
+        scenegraph::writeIv(m_sceneRoot, path.toStdString());
+        m_status->setText("Wrote " + path);
+    } catch (const std::exception& e) {
+        QMessageBox::warning(this, "Export failed", e.what());
+    }
+}
+
+void MainWindow::setView(int direction) {
+    SoCamera* camera = m_viewer->getCamera();
+    if (!camera) return;
+    SoGetBoundingBoxAction bbox(m_viewer->getViewportRegion());
+    bbox.apply(m_sceneRoot);
+    if (bbox.getBoundingBox().isEmpty()) return;
+    scenegraph::aimCamera(camera, static_cast<scenegraph::ViewDirection>(direction), bbox.getBoundingBox().getCenter());
+    m_viewer->viewAll();
+}
+
+}  // namespace caliper3d::app

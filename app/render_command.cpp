@@ -1,0 +1,60 @@
+#include <cstdio>
+#include <exception>
+
+#include "app/commands.h"
+#include "app/input_options.h"
+#include "app/png_output.h"
+#include "app/scene_assembly.h"
+#include "app/verb_parser.h"
+#include "io/number_parsing.h"
+#include "scenegraph/main_thread.h"
+
+namespace caliper3d::app {
+
+int runRender(const QStringList& args) {
+    try {
+        VerbParser verb("render", "FILE... -o OUT.png", "Render wells to a PNG picture without a window.");
+        QCommandLineParser& p = verb.parser();
+        p.addOption({{"o", "output"}, "Output picture (.png).", "OUT"});
+        p.addOption({"width", "Picture width in pixels (default 1024).", "W", "1024"});
+        p.addOption({"height", "Picture height in pixels (default 768).", "H", "768"});
+        p.addOption({"view", "iso, north, east, top, or hole (inside the first well, looking down it) (default iso).", "VIEW", "iso"});
+        p.addOption({"at", "With --view hole: measured depth of the eye in metres (default: top of the log).", "MD"});
+        addInputOptions(p);
+        if (!verb.parse(args, 1)) return kExitOk;
+        if (!verb.isSet("output")) throw UsageError("caliper3d render: -o OUT.png is required");
+        bool okW = false, okH = false;
+        const int width = p.value("width").toInt(&okW), height = p.value("height").toInt(&okH);
+        if (!okW || !okH || width < 16 || height < 16 || width > 8192 || height > 8192)
+            throw UsageError("caliper3d render: --width and --height take whole numbers from 16 to 8192");
+        const bool downHole = verb.value("view") == "hole";
+        const auto view = scenegraph::parseViewDirection(verb.value("view"));
+        if (!view && !downHole) throw UsageError("caliper3d render: --view takes iso, north, east, top or hole");
+        double at = 0.0;
+        if (verb.isSet("at") && !io::parseNumber(verb.value("at"), at))
+            throw UsageError("caliper3d render: --at takes a measured depth in metres");
+        const InputOptions options = inputOptionsFrom(p);
+
+        scenegraph::initCoin();
+        AssembledScene scene = assembleScene(verb.positional(), options);
+        if (scene.wells == 0) return kExitBadInput;
+        const std::string out = verb.value("output");
+        if (downHole) {
+            const auto& geometry = *scene.geometries.front();
+            if (!verb.isSet("at")) at = geometry.table().depth_m.front();
+            renderToPng(scene.root.get(), out, width, height, downHolePose(geometry, at));
+        } else {
+            renderToPng(scene.root.get(), out, width, height, *view);
+        }
+        std::printf("wrote %s (%dx%d)\n", out.c_str(), width, height);
+        return scene.failures > 0 ? kExitBadInput : kExitOk;
+    } catch (const UsageError& e) {
+        std::fprintf(stderr, "%s\n", e.what());
+        return kExitUsage;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "caliper3d render: %s\n", e.what());
+        return kExitBadInput;
+    }
+}
+
+}  // namespace caliper3d::app

@@ -1,0 +1,35 @@
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/input_options.h"
+#include <Inventor/nodes/SoSeparator.h>
+
+#include "reconstruction/well_geometry.h"
+#include "scenegraph/camera_setup.h"
+#include "scenegraph/node_ref.h"
+
+class SoSeparator;
+
+namespace caliper3d::app {
+
+// Every readable well of `files` in one scene, each under its own separator.
+// Reports each file's result on stdout (bad files on stderr) and keeps going.
+struct AssembledScene {
+    scenegraph::NodeRef<SoSeparator> root;
+    int wells = 0;
+    int failures = 0;
+    std::vector<std::shared_ptr<const reconstruction::WellGeometry>> geometries;
+};
+AssembledScene assembleScene(const std::vector<std::string>& files, const InputOptions& options);
+
+// The fly-through view: a camera on the first well's axis at measured depth
+// `md_m`, looking down the hole, high side up.
+scenegraph::CameraPose downHolePose(const reconstruction::WellGeometry& geometry, double md_m);
+
+// The bundled example well (written by 'caliper3d synth' at build time).
+std::string exampleWellPath();
+
+}  // namespace caliper3d::app

@@ -1,0 +1,35 @@
+#include "app/verb_parser.h"
+
+#include <cstdio>
+
+#include "app/input_options.h"
+
+namespace caliper3d::app {
+
+VerbParser::VerbParser(const char* verb, const char* positionalSyntax, const char* description)
+    : m_verb(verb) {
+    m_parser.setApplicationDescription(description);
+    m_parser.addHelpOption();
+    m_parser.addPositionalArgument("args", "", positionalSyntax);
+}
+
+bool VerbParser::parse(const QStringList& args, int minPositional) {
+    QStringList full = args;
+    full.prepend(QString("caliper3d ") + QString::fromStdString(m_verb));
+    if (!m_parser.parse(full)) throw UsageError("caliper3d " + m_verb + ": " + m_parser.errorText().toStdString());
+    if (m_parser.isSet("help")) {
+        std::fputs(m_parser.helpText().toLocal8Bit().constData(), stdout);
+        return false;
+    }
+    if (m_parser.positionalArguments().size() < minPositional)
+        throw UsageError("caliper3d " + m_verb + ": missing arguments; see 'caliper3d " + m_verb + " --help'");
+    return true;
+}
+
+std::vector<std::string> VerbParser::positional() const {
+    std::vector<std::string> out;
+    for (const QString& s : m_parser.positionalArguments()) out.push_back(s.toStdString());
+    return out;
+}
+
+}  // namespace caliper3d::app

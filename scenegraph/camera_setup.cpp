@@ -1,0 +1,84 @@
+#include "scenegraph/camera_setup.h"
+
+#include <Inventor/SbViewportRegion.h>
+#include <Inventor/actions/SoGetBoundingBoxAction.h>
+#include <Inventor/nodes/SoDirectionalLight.h>
+#include <Inventor/nodes/SoPerspectiveCamera.h>
+#include <Inventor/nodes/SoEnvironment.h>
+#include <Inventor/nodes/SoLightModel.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+#include "scenegraph/main_thread.h"
+
+namespace caliper3d::scenegraph {
+
+std::optional<ViewDirection> parseViewDirection(const std::string& name) {
+    if (name == "iso") return ViewDirection::Iso;
+    if (name == "north") return ViewDirection::North;
+    if (name == "east") return ViewDirection::East;
+    if (name == "top") return ViewDirection::Top;
+    return std::nullopt;
+}
+
+void aimCamera(SoCamera* camera, ViewDirection view, const SbVec3f& centre) {
+    SbVec3f look(-1.0f, -0.7f, -1.0f), up(0.0f, 1.0f, 0.0f);
+    switch (view) {
+        case ViewDirection::Iso: break;
+        case ViewDirection::North: look.setValue(0.0f, 0.0f, -1.0f); break;
+        case ViewDirection::East: look.setValue(1.0f, 0.0f, 0.0f); break;
+        case ViewDirection::Top: look.setValue(0.0f, -1.0f, 0.0f); up.setValue(0.0f, 0.0f, -1.0f); break;
+    }
+    look.normalize();
+    camera->position = centre - look;
+    camera->pointAt(centre, up);
+}
+
+SoSeparator* makeRenderRoot(SoNode* scene, ViewDirection view, int width, int height) {
+    assertMainThread("makeRenderRoot");
+    const SbViewportRegion viewport(static_cast<short>(width), static_cast<short>(height));
+    SoGetBoundingBoxAction bbox(viewport);
+    bbox.apply(scene);
+    const SbVec3f centre = bbox.getBoundingBox().isEmpty() ? SbVec3f(0, 0, 0) : bbox.getBoundingBox().getCenter();
+
+    auto* root = new SoSeparator;
+    auto* camera = new SoPerspectiveCamera;
+    aimCamera(camera, view, centre);
+    // A light shining along the view, like the viewer's headlight.
+    SbVec3f look;
+    camera->orientation.getValue().multVec(SbVec3f(0.0f, 0.0f, -1.0f), look);
+    auto* light = new SoDirectionalLight;
+    light->direction = look;
+    root->addChild(camera);
+    root->addChild(light);
+    root->addChild(scene);
+    camera->viewAll(scene, viewport, 1.05f);
+    return root;
+}
+
+SoSeparator* makeRenderRoot(SoNode* scene, const CameraPose& pose) {
+    assertMainThread("makeRenderRoot");
+    auto* root = new SoSeparator;
+    auto* camera = new SoPerspectiveCamera;
+    const SbVec3f eye(pose.eye), look(pose.look);
+    camera->position = eye;
+    camera->pointAt(eye + look, SbVec3f(pose.up));
+    camera->heightAngle = pose.heightAngle_rad;
+    camera->nearDistance = 0.01f;
+    camera->farDistance = 500.0f;
+    // Inside the hole every wall is seen at a grazing angle, so lighting from
+    // the eye leaves it black: show the wall colours unlit and let fog in the
+    // background colour give depth.
+    auto* lightModel = new SoLightModel;
+    lightModel->model = SoLightModel::BASE_COLOR;
+    auto* fog = new SoEnvironment;
+    fog->fogType = SoEnvironment::HAZE;
+    fog->fogColor.setValue(pose.fogColour);
+    fog->fogVisibility = pose.fogVisibility_m;
+    root->addChild(camera);
+    root->addChild(lightModel);
+    root->addChild(fog);
+    root->addChild(scene);
+    return root;
+}
+
+}  // namespace caliper3d::scenegraph

@@ -1,0 +1,41 @@
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+class SoNode;
+
+namespace caliper3d::scenegraph {
+
+// RGBA pixels, top row first.
+struct RenderedImage {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> rgba;
+
+    // Pixels whose colour differs from the top-left (background) pixel.
+    std::size_t nonBackgroundPixels() const;
+};
+
+// Renders a scene into an image without a window or an X server: a Mesa EGL
+// surfaceless context and a framebuffer object, drawn by SoGLRenderAction.
+// (Coin's own SoOffscreenRenderer cannot make a context with Debian's Coin 4.0.0.)
+// The scene must contain its camera and lights. Main thread only.
+class OffscreenRenderer {
+public:
+    OffscreenRenderer();
+    ~OffscreenRenderer();
+    OffscreenRenderer(const OffscreenRenderer&) = delete;
+    OffscreenRenderer& operator=(const OffscreenRenderer&) = delete;
+
+    // Throws std::runtime_error saying what failed (no EGL, no context, ...).
+    RenderedImage render(SoNode* scene, int width, int height, const float background[3]);
+
+private:
+    struct Context;
+    std::unique_ptr<Context> m_context;
+};
+
+}  // namespace caliper3d::scenegraph

@@ -1,0 +1,48 @@
+#include "scenegraph/segment_feeder.h"
+
+#include <Inventor/sensors/SoTimerSensor.h>
+
+#include "scenegraph/main_thread.h"
+#include "scenegraph/well_scene.h"
+
+namespace caliper3d::scenegraph {
+
+SegmentFeeder::SegmentFeeder(reconstruction::WellLoadPipeline& pipeline, WellScene& scene,
+                             Callbacks callbacks, std::size_t segmentsPerTick)
+    : m_pipeline(pipeline), m_scene(scene), m_callbacks(std::move(callbacks)), m_perTick(segmentsPerTick) {
+    assertMainThread("SegmentFeeder");
+    m_timer = std::make_unique<SoTimerSensor>(&SegmentFeeder::onTimer, this);
+    m_timer->setInterval(SbTime(0.02));
+    m_timer->schedule();
+}
+
+SegmentFeeder::~SegmentFeeder() {
+    if (m_timer) m_timer->unschedule();
+}
+
+void SegmentFeeder::onTimer(void* data, SoSensor*) { static_cast<SegmentFeeder*>(data)->drainOnce(); }
+
+bool SegmentFeeder::drainOnce() {
+    assertMainThread("SegmentFeeder::drainOnce");
+    if (m_done) return true;
+    for (auto& event : m_pipeline.events().drain(m_perTick)) {
+        if (auto* started = std::get_if<reconstruction::LoadStarted>(&event)) {
+            m_scene.setPath(*started->geometry);
+            if (m_callbacks.started) m_callbacks.started(*started->geometry);
+        } else if (auto* segment = std::get_if<reconstruction::SegmentMesh>(&event)) {
+            m_scene.addSegment(*segment);
+            ++m_attached;
+            if (m_callbacks.progress) m_callbacks.progress(m_attached);
+        } else if (auto* finished = std::get_if<reconstruction::LoadFinished>(&event)) {
+            m_done = true;
+            if (m_callbacks.finished) m_callbacks.finished(finished->segments);
+        } else if (auto* failed = std::get_if<reconstruction::LoadFailed>(&event)) {
+            m_done = true;
+            if (m_callbacks.failed) m_callbacks.failed(failed->message);
+        }
+    }
+    if (m_done) m_timer->unschedule();
+    return m_done;
+}
+
+}  // namespace caliper3d::scenegraph

@@ -1,0 +1,76 @@
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include "test_support.h"
+
+namespace {
+
+struct CommandRun {
+    int status = -1;
+    std::string output;  // stdout and stderr together
+};
+
+CommandRun run(const std::string& arguments) {
+    CommandRun r;
+    const std::string command = std::string(CALIPER3D_BINARY) + " " + arguments + " 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) return r;
+    std::array<char, 4096> buffer{};
+    while (std::fgets(buffer.data(), buffer.size(), pipe)) r.output += buffer.data();
+    const int raw = pclose(pipe);
+    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    return r;
+}
+
+}  // namespace
+
+TEST(CommandLineTest, SynthThenExportWritesAnInventorFile) {
+    const auto log = caliper3d::test::scratch("cli_synth.txt");
+    const auto iv = caliper3d::test::scratch("cli_synth.iv");
+    std::filesystem::remove(iv);
+    CommandRun synth = run("synth -o " + log.string() + " --length 30 --step 0.1");
+    ASSERT_EQ(synth.status, 0) << synth.output;
+    EXPECT_NE(synth.output.find("301 sections"), std::string::npos) << synth.output;
+    CommandRun exported = run("export " + log.string() + " -o " + iv.string());
+    ASSERT_EQ(exported.status, 0) << exported.output;
+    std::ifstream in(iv);
+    std::string header;
+    std::getline(in, header);
+    EXPECT_EQ(header.rfind("#Inventor V2.1 ascii", 0), 0u) << header;
+}
+
+TEST(CommandLineTest, BadInputExitsOneNamingFileAndLine) {
+    const auto bad = caliper3d::test::scratch("cli_bad.txt");
+    { std::ofstream(bad) << "1 2 3 4 5 6 7 8 9 10\n2 2 3 4 5 6 7 8 9\n"; }
+    CommandRun r = run("export " + bad.string() + " -o " + caliper3d::test::scratch("cli_bad.iv").string());
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find(bad.string() + ":2"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("expected 10 columns"), std::string::npos) << r.output;
+}
+
+TEST(CommandLineTest, BatchKeepsGoingPastABadFile) {
+    const auto good = caliper3d::test::scratch("cli_good.txt");
+    const auto bad = caliper3d::test::scratch("cli_bad2.txt");
+    { std::ofstream(bad) << "not numbers at all\n"; }
+    ASSERT_EQ(run("synth -o " + good.string() + " --length 20 --step 0.5").status, 0);
+    const auto iv = caliper3d::test::scratch("cli_batch.iv");
+    CommandRun r = run("export " + bad.string() + " " + good.string() + " -o " + iv.string());
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find(good.string() + ": 41 sections"), std::string::npos) << r.output;
+    EXPECT_TRUE(std::filesystem::exists(iv));
+}
+
+TEST(CommandLineTest, BadUsageExitsTwo) {
+    EXPECT_EQ(run("frobnicate").status, 2);
+    EXPECT_EQ(run("export").status, 2);
+    EXPECT_EQ(run("export x.txt").status, 2);  // no -o
+    EXPECT_EQ(run("synth -o x.txt --step -1").status, 2);
+    EXPECT_EQ(run("render x.txt -o x.png --view sideways").status, 2);
+    EXPECT_EQ(run("export x.txt -o x.iv --arms 1").status, 2);
+    EXPECT_EQ(run("--help").status, 0);
+}

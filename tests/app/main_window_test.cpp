@@ -1,0 +1,90 @@
+#include "app/main_window.h"
+
+#include <fstream>
+#include <memory>
+
+#include <QApplication>
+#include <QEventLoop>
+#include <QGLWidget>
+#include <QTimer>
+#include <gtest/gtest.h>
+
+#include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
+
+#include "app/gui_session.h"
+#include "io/column_text_writer.h"
+#include "reconstruction/synthetic_well.h"
+#include "test_support.h"
+
+using namespace caliper3d;
+
+namespace {
+
+class MainWindowTest : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        if (!app::haveDisplay()) return;
+        static int argc = 1;
+        static char name[] = "app_tests";
+        static char* argv[] = {name, nullptr};
+        s_application = new QApplication(argc, argv);
+        app::initGui();
+    }
+    void SetUp() override {
+        if (!app::haveDisplay()) GTEST_SKIP() << "no display (run under xvfb-run)";
+    }
+    // Waits for `signal` on the event loop, at most `ms` milliseconds.
+    template <typename Signal>
+    static bool waitFor(app::MainWindow& window, Signal signal, int ms) {
+        QEventLoop loop;
+        bool fired = false;
+        QObject::connect(&window, signal, &loop, [&] {
+            fired = true;
+            loop.quit();
+        });
+        QTimer::singleShot(ms, &loop, &QEventLoop::quit);
+        loop.exec();
+        return fired;
+    }
+    static QApplication* s_application;
+};
+QApplication* MainWindowTest::s_application = nullptr;
+
+}  // namespace
+
+TEST_F(MainWindowTest, OpensTheExampleAndRendersTheWell) {
+    const auto log = test::scratch("window_example.txt");
+    io::writeColumnTextFile(log.string(),
+                            reconstruction::makeSyntheticWell(reconstruction::syntheticProfile("example", 60.0, 0.1)));
+    app::MainWindow window;
+    window.resize(640, 480);
+    window.show();
+    app::InputOptions options;
+    options.bitSize_mm = 215.9;
+    window.openWell(QString::fromStdString(log.string()), options);
+    ASSERT_TRUE(waitFor(window, &app::MainWindow::wellLoaded, 60000)) << "the well did not load";
+    EXPECT_FALSE(window.loading());
+
+    auto* gl = qobject_cast<QGLWidget*>(window.viewer()->getGLWidget());
+    ASSERT_NE(gl, nullptr);
+    window.viewer()->render();
+    const QImage frame = gl->grabFrameBuffer();
+    ASSERT_FALSE(frame.isNull());
+    const QRgb background = frame.pixel(0, 0);
+    std::size_t drawn = 0;
+    for (int y = 0; y < frame.height(); ++y)
+        for (int x = 0; x < frame.width(); ++x) drawn += frame.pixel(x, y) != background ? 1 : 0;
+    // A 60 m well framed whole is a thin line of a few hundred pixels.
+    EXPECT_GT(drawn, 200u);
+}
+
+TEST_F(MainWindowTest, BadFileReportsFailureWithFileAndLine) {
+    const auto bad = test::scratch("window_bad.txt");
+    { std::ofstream(bad) << "1 2 3\n"; }
+    app::MainWindow window;
+    QString message;
+    QObject::connect(&window, &app::MainWindow::wellFailed, [&](const QString& m) { message = m; });
+    window.openWell(QString::fromStdString(bad.string()), app::InputOptions{});
+    ASSERT_TRUE(waitFor(window, &app::MainWindow::wellFailed, 30000));
+    EXPECT_TRUE(message.contains(QString::fromStdString(bad.string() + ":1"))) << message.toStdString();
+}

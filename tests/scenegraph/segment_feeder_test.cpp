@@ -1,0 +1,84 @@
+#include "scenegraph/segment_feeder.h"
+
+#include <chrono>
+#include <memory>
+#include <stdexcept>
+#include <thread>
+
+#include <Inventor/SoDB.h>
+#include <Inventor/sensors/SoSensorManager.h>
+
+#include "coin_fixture.h"
+#include "reconstruction/synthetic_well.h"
+#include "scenegraph/iv_export.h"
+#include "scenegraph/well_scene.h"
+
+using namespace caliper3d;
+
+namespace {
+class SegmentFeederTest : public CoinTest {
+protected:
+    // Runs Coin's timer queue on this (the main) thread until the feeder is done.
+    static void pump(scenegraph::SegmentFeeder& feeder) {
+        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+        while (!feeder.done() && std::chrono::steady_clock::now() < deadline) {
+            SoDB::getSensorManager()->processTimerQueue();
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        }
+    }
+};
+}  // namespace
+
+TEST_F(SegmentFeederTest, WorkerSegmentsReachTheSceneOnTheMainThread) {
+    reconstruction::WellLoadPipeline pipeline(
+        [] { return reconstruction::makeSyntheticWell(reconstruction::syntheticProfile("example", 80.0, 0.1)); },
+        reconstruction::GeometryOptions{});
+    scenegraph::WellScene scene;
+    std::size_t finishedWith = 0;
+    bool started = false;
+    scenegraph::SegmentFeeder::Callbacks callbacks;
+    callbacks.started = [&](const reconstruction::WellGeometry&) { started = true; };
+    callbacks.finished = [&](std::size_t n) { finishedWith = n; };
+    scenegraph::SegmentFeeder feeder(pipeline, scene, callbacks, 2);
+    pipeline.start();
+    pump(feeder);
+    ASSERT_TRUE(feeder.done());
+    EXPECT_TRUE(started);
+    EXPECT_EQ(finishedWith, 8u);  // 80 m in 10 m segments
+    EXPECT_EQ(feeder.attached(), 8u);
+    EXPECT_EQ(scenegraph::countScene(scene.root()).lods, 8u);
+}
+
+TEST_F(SegmentFeederTest, ReaderFailureIsReportedNotThrown) {
+    reconstruction::WellLoadPipeline pipeline(
+        []() -> io::SectionTable { throw std::runtime_error("bad.txt:3: expected 10 columns"); },
+        reconstruction::GeometryOptions{});
+    scenegraph::WellScene scene;
+    std::string message;
+    scenegraph::SegmentFeeder::Callbacks callbacks;
+    callbacks.failed = [&](const std::string& m) { message = m; };
+    scenegraph::SegmentFeeder feeder(pipeline, scene, callbacks);
+    pipeline.start();
+    pump(feeder);
+    EXPECT_EQ(message, "bad.txt:3: expected 10 columns");
+    EXPECT_EQ(scene.segmentCount(), 0u);
+}
+
+TEST_F(SegmentFeederTest, CancelledPipelineStopsEarly) {
+    reconstruction::WellLoadPipeline pipeline(
+        [] { return reconstruction::makeSyntheticWell(reconstruction::syntheticProfile("circle", 400.0, 0.01)); },
+        reconstruction::GeometryOptions{});
+    pipeline.start();
+    pipeline.cancel();
+    std::size_t segments = 0;
+    for (;;) {
+        auto event = pipeline.events().waitPop();
+        if (std::holds_alternative<reconstruction::SegmentMesh>(*event)) ++segments;
+        if (auto* finished = std::get_if<reconstruction::LoadFinished>(&*event)) {
+            EXPECT_EQ(finished->segments, segments);
+            break;
+        }
+        ASSERT_FALSE(std::holds_alternative<reconstruction::LoadFailed>(*event));
+    }
+    EXPECT_LT(segments, 40u);  // 400 m is 40 segments; cancelled long before the end
+}
