@@ -12,7 +12,7 @@
 namespace caliper3d::app {
 
 int runExport(const QStringList& args) {
-    try {
+    return guardedVerb("export", [&]() -> int {
         VerbParser verb("export", "FILE... -o OUT.iv", "Export wells as an Open Inventor scene.");
         QCommandLineParser& p = verb.parser();
         p.addOption({{"o", "output"}, "Output file (.iv).", "OUT"});
@@ -41,13 +41,7 @@ int runExport(const QStringList& args) {
                     scene.wells, scene.wells == 1 ? "" : "s", Seconds(built - start).count(),
                     Seconds(written - built).count());
         return scene.failures > 0 ? kExitBadInput : kExitOk;
-    } catch (const UsageError& e) {
-        std::fprintf(stderr, "%s\n", e.what());
-        return kExitUsage;
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "caliper3d export: %s\n", e.what());
-        return kExitBadInput;
-    }
+    });
 }
 
 }  // namespace caliper3d::app

@@ -12,7 +12,7 @@
 namespace caliper3d::app {
 
 int runRender(const QStringList& args) {
-    try {
+    return guardedVerb("render", [&]() -> int {
         VerbParser verb("render", "FILE... -o OUT.png", "Render wells to a PNG picture without a window.");
         QCommandLineParser& p = verb.parser();
         p.addOption({{"o", "output"}, "Output picture (.png).", "OUT"});
@@ -48,13 +48,7 @@ int runRender(const QStringList& args) {
         }
         std::printf("wrote %s (%dx%d)\n", out.c_str(), width, height);
         return scene.failures > 0 ? kExitBadInput : kExitOk;
-    } catch (const UsageError& e) {
-        std::fprintf(stderr, "%s\n", e.what());
-        return kExitUsage;
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "caliper3d render: %s\n", e.what());
-        return kExitBadInput;
-    }
+    });
 }
 
 }  // namespace caliper3d::app

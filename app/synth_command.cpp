@@ -11,7 +11,7 @@
 namespace caliper3d::app {
 
 int runSynth(const QStringList& args) {
-    try {
+    return guardedVerb("synth", [&]() -> int {
         VerbParser verb("synth", "-o OUT", "Write a synthetic caliper log with known features.");
         QCommandLineParser& p = verb.parser();
         p.addOption({{"o", "output"}, "Output log (column text: depth R1..R6 P1AZ DEVI HAZI).", "OUT"});
@@ -38,13 +38,7 @@ int runSynth(const QStringList& args) {
         std::printf("wrote %s (%zu sections, %.1f m, profile %s)\n", out.c_str(), table.rowCount(), length,
                     verb.value("profile").c_str());
         return kExitOk;
-    } catch (const UsageError& e) {
-        std::fprintf(stderr, "%s\n", e.what());
-        return kExitUsage;
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "caliper3d synth: %s\n", e.what());
-        return kExitBadInput;
-    }
+    });
 }
 
 }  // namespace caliper3d::app

@@ -32,4 +32,16 @@ std::vector<std::string> VerbParser::positional() const {
     return out;
 }
 
+int guardedVerb(const char* verb, const std::function<int()>& body) {
+    try {
+        return body();
+    } catch (const UsageError& e) {
+        std::fprintf(stderr, "%s\n", e.what());
+        return 2;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "caliper3d %s: %s\n", verb, e.what());
+        return 1;
+    }
+}
+
 }  // namespace caliper3d::app

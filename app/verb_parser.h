@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -26,5 +27,9 @@ private:
     std::string m_verb;
     QCommandLineParser m_parser;
 };
+
+// Runs a verb's body and turns what it throws into the exit status:
+// UsageError -> 2, any other error -> 1, each reported on stderr.
+int guardedVerb(const char* verb, const std::function<int()>& body);
 
 }  // namespace caliper3d::app

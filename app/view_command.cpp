@@ -48,7 +48,7 @@ InputOptions exampleOptions() {
 }  // namespace
 
 int runView(int argc, char** argv, const QStringList& args) {
-    try {
+    return guardedVerb("view", [&]() -> int {
         VerbParser verb("view", "FILE...", "Open wells in the 3D viewer.");
         addInputOptions(verb.parser());
         if (!verb.parse(args, 1)) return kExitOk;
@@ -58,13 +58,7 @@ int runView(int argc, char** argv, const QStringList& args) {
             return kExitUsage;
         }
         return showWindow(argc, argv, verb.positional(), options);
-    } catch (const UsageError& e) {
-        std::fprintf(stderr, "%s\n", e.what());
-        return kExitUsage;
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "caliper3d view: %s\n", e.what());
-        return kExitBadInput;
-    }
+    });
 }
 
 int runDefault(int argc, char** argv) {
