@@ -18,7 +18,7 @@ const char kUsage[] =
     "  render FILE... -o OUT.png         picture (--width W --height H --view iso|north|east|top)\n"
     "  synth -o OUT [--length M --step M --profile NAME]   synthetic log with known features\n"
     "common: --arms N --depth-unit m|ft --radius-unit in|mm|cm --bit-size VALUE[in|mm]\n"
-    "        --points M --segment-length METRES\n"
+    "        --points M --segment-length METRES --exaggerate F\n"
     "Run 'caliper3d VERB --help' for a verb's options.\n";
 }  // namespace
 

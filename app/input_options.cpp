@@ -14,6 +14,7 @@ void addInputOptions(QCommandLineParser& parser) {
     parser.addOption({"bit-size", "Bit size, e.g. 8.5in or 215.9mm (a bare number is inches).", "VALUE"});
     parser.addOption({"points", "Points per section of the closed spline (default 48).", "M", "48"});
     parser.addOption({"segment-length", "Length of one level-of-detail segment in metres (default 10).", "METRES", "10"});
+    parser.addOption({"exaggerate", "Draw radii F times larger around the true path (display only; default 1).", "F", "1"});
 }
 
 namespace {
@@ -44,6 +45,9 @@ InputOptions inputOptionsFrom(const QCommandLineParser& parser) {
     o.splinePoints = static_cast<int>(points);
     o.segmentLength_m = number(parser, "segment-length");
     if (!(o.segmentLength_m > 0.0)) throw UsageError("--segment-length: expected a positive number of metres");
+    o.radialExaggeration = number(parser, "exaggerate");
+    if (!(o.radialExaggeration >= 1.0 && o.radialExaggeration <= 1000.0))
+        throw UsageError("--exaggerate: expected a factor from 1 to 1000");
     if (parser.isSet("bit-size")) {
         std::string text = parser.value("bit-size").toStdString();
         double scale = 25.4;
@@ -67,6 +71,7 @@ reconstruction::GeometryOptions geometryOptions(const InputOptions& options) {
     reconstruction::GeometryOptions g;
     g.splinePoints = options.splinePoints;
     g.segmentLength_m = options.segmentLength_m;
+    g.radialExaggeration = options.radialExaggeration;
     return g;
 }
 

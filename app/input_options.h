@@ -18,6 +18,7 @@ struct InputOptions {
     std::optional<double> bitSize_mm;
     int splinePoints = 48;
     double segmentLength_m = 10.0;
+    double radialExaggeration = 1.0;
 };
 
 // Thrown for bad command-line usage (exit status 2).

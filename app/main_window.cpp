@@ -60,6 +60,10 @@ void MainWindow::buildMenus() {
     view->addAction("Looking &north", this, [this] { setView(int(scenegraph::ViewDirection::North)); });
     view->addAction("Looking &east", this, [this] { setView(int(scenegraph::ViewDirection::East)); });
     view->addAction("From &top", this, [this] { setView(int(scenegraph::ViewDirection::Top)); });
+    view->addSeparator();
+    QMenu* exaggeration = view->addMenu("Radial e&xaggeration");
+    for (double factor : {1.0, 10.0, 50.0, 200.0})
+        exaggeration->addAction(QString("x%1").arg(factor), this, [this, factor] { setExaggeration(factor); });
 }
 
 bool MainWindow::loading() const { return m_feeder && !m_feeder->done(); }
@@ -71,6 +75,7 @@ void MainWindow::openWell(const QString& path, const InputOptions& options) {
     m_well = std::make_unique<scenegraph::WellScene>();
     m_sceneRoot->addChild(m_well->root());
     m_lastOptions = options;
+    m_lastPath = path;
     m_viewedAll = false;
     const std::string file = path.toStdString();
     m_pipeline = std::make_unique<reconstruction::WellLoadPipeline>(
@@ -117,6 +122,13 @@ void MainWindow::exportDialog() {
     } catch (const std::exception& e) {
         QMessageBox::warning(this, "Export failed", e.what());
     }
+}
+
+void MainWindow::setExaggeration(double factor) {
+    if (m_lastPath.isEmpty()) return;
+    InputOptions options = m_lastOptions;
+    options.radialExaggeration = factor;
+    openWell(m_lastPath, options);
 }
 
 void MainWindow::setView(int direction) {

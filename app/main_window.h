@@ -45,12 +45,13 @@ private:
     void openDialog();
     void exportDialog();
     void setView(int direction);
-    void finishLoad();
+    void setExaggeration(double factor);
 
     SoQtExaminerViewer* m_viewer = nullptr;
     SoSeparator* m_sceneRoot = nullptr;
     QLabel* m_status = nullptr;
     InputOptions m_lastOptions;
+    QString m_lastPath;
     std::unique_ptr<scenegraph::WellScene> m_well;
     std::unique_ptr<reconstruction::WellLoadPipeline> m_pipeline;
     std::unique_ptr<scenegraph::SegmentFeeder> m_feeder;

@@ -79,10 +79,17 @@ int runDefault(int argc, char** argv) {
         // the elongated lobes show in colour; a whole-well view is a thin line.
         renderToPng(scene.root.get(), "out/example.png", 1024, 768,
                     downHolePose(*scene.geometries.front(), 59.0));
+        // And the whole well, radii drawn 50 times larger so it is more than a line.
+        InputOptions overview = exampleOptions();
+        overview.radialExaggeration = 50.0;
+        AssembledScene whole = assembleScene({example}, overview);
+        if (whole.wells == 0) return kExitBadInput;
+        renderToPng(whole.root.get(), "out/example-overview.png", 600, 900, scenegraph::ViewDirection::Iso);
         const auto here = std::filesystem::current_path();
         std::printf("No display: rendered the example well instead of opening a window.\n"
-                    "  scene:   %s\n  picture: %s\n",
-                    (here / "out/example.iv").c_str(), (here / "out/example.png").c_str());
+                    "  scene:    %s\n  picture:  %s\n  overview: %s\n",
+                    (here / "out/example.iv").c_str(), (here / "out/example.png").c_str(),
+                    (here / "out/example-overview.png").c_str());
         return kExitOk;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "caliper3d: %s\n", e.what());

@@ -132,7 +132,8 @@ void WellGeometry::appendRing(Mesh& mesh, std::size_t row, bool spline) const {
     const std::size_t base = mesh.positions.size();
     for (int j = 0; j < points; ++j) {
         const double phi = glm::two_pi<double>() * j / points;
-        const Ned p = c + (radii[static_cast<std::size_t>(j)] / 1000.0) * f.direction(phi);
+        const double drawn_m = radii[static_cast<std::size_t>(j)] / 1000.0 * m_options.radialExaggeration;
+        const Ned p = c + drawn_m * f.direction(phi);
         mesh.positions.emplace_back(toScene(p));
         mesh.colours.push_back(gaugeColour(radii[static_cast<std::size_t>(j)], bitRadius));
     }

@@ -21,6 +21,9 @@ struct GeometryOptions {
     double coarseSpacing_m = 0.5;     // level 1: raw N-gon every this many metres
     double coarsestSpacing_m = 2.5;   // level 2: raw N-gon, sparser still
     double steepInclination_deg = 15.0;  // above this, arm 1 comes from RB when present
+    // Display only: radii drawn this many times larger around the true path, so
+    // that a long well seen whole is more than a line. Analysis never uses it.
+    double radialExaggeration = 1.0;
     glm::dvec3 wellheadOffset{0.0, 0.0, 0.0};  // NED offset of this wellhead from the scene origin
 };
 

@@ -1,5 +1,8 @@
 #include "scenegraph/camera_setup.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/actions/SoGetBoundingBoxAction.h>
 #include <Inventor/nodes/SoDirectionalLight.h>
@@ -46,12 +49,37 @@ SoSeparator* makeRenderRoot(SoNode* scene, ViewDirection view, int width, int he
     // A light shining along the view, like the viewer's headlight.
     SbVec3f look;
     camera->orientation.getValue().multVec(SbVec3f(0.0f, 0.0f, -1.0f), look);
+    look.normalize();
     auto* light = new SoDirectionalLight;
     light->direction = look;
     root->addChild(camera);
     root->addChild(light);
     root->addChild(scene);
-    camera->viewAll(scene, viewport, 1.05f);
+    // Back off until every corner of the bounding box is inside the view
+    // frustum: tighter than SoCamera::viewAll's bounding sphere for a long, thin
+    // well (and viewAll also clips the sphere's rim and ignores slack).
+    const SbBox3f& box = bbox.getBoundingBox();
+    SbVec3f lo(0, 0, 0), hi(0, 0, 0);
+    if (!box.isEmpty()) box.getBounds(lo, hi);
+    SbVec3f right, up;
+    camera->orientation.getValue().multVec(SbVec3f(1.0f, 0.0f, 0.0f), right);
+    camera->orientation.getValue().multVec(SbVec3f(0.0f, 1.0f, 0.0f), up);
+    const float aspect = static_cast<float>(width) / static_cast<float>(height);
+    const float tanV = std::tan(camera->heightAngle.getValue() / 2.0f);
+    const float tanH = tanV * aspect;
+    float distance = 0.01f, radius = 0.01f;
+    for (int corner = 0; corner < 8; ++corner) {
+        const SbVec3f p((corner & 1) ? hi[0] : lo[0], (corner & 2) ? hi[1] : lo[1], (corner & 4) ? hi[2] : lo[2]);
+        const SbVec3f d = p - centre;
+        const float depth = d.dot(look);  // positive: beyond the centre
+        distance = std::max(distance, std::abs(d.dot(up)) / tanV - depth);
+        distance = std::max(distance, std::abs(d.dot(right)) / tanH - depth);
+        radius = std::max(radius, d.length());
+    }
+    distance *= 1.05f;
+    camera->position = centre - look * distance;
+    camera->nearDistance = std::max(distance - radius * 1.1f, distance * 1e-3f);
+    camera->farDistance = distance + radius * 1.1f;
     return root;
 }
 

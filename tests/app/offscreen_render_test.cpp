@@ -35,4 +35,9 @@ TEST(OffscreenRenderTest, WellRendersToAPngWithoutAWindow) {
     EXPECT_EQ(png.height(), 240);
     const QRgb corner = png.pixel(0, 0);
     EXPECT_EQ(qRed(corner), image.rgba[0]);
+    // Framed whole: nothing touches the top or bottom edge.
+    for (int x = 0; x < png.width(); ++x) {
+        EXPECT_EQ(png.pixel(x, 0), corner) << "top edge, x " << x;
+        EXPECT_EQ(png.pixel(x, png.height() - 1), corner) << "bottom edge, x " << x;
+    }
 }

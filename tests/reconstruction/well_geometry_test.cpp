@@ -70,3 +70,14 @@ TEST(WellGeometryTest, RejectsDepthsThatDoNotIncrease) {
     EXPECT_THROW(WellGeometry(std::make_shared<const caliper3d::io::SectionTable>(table), GeometryOptions{}),
                  std::invalid_argument);
 }
+
+TEST(WellGeometryTest, RadialExaggerationScalesTheDrawnRadiusOnly) {
+    GeometryOptions options;
+    options.radialExaggeration = 20.0;
+    WellGeometry g(circleWell(10.0, 0.5), options);
+    const SegmentMesh segment = g.buildSegment(0);
+    const Mesh& m = segment.levels[0];
+    for (const glm::vec3& p : m.positions) EXPECT_NEAR(std::hypot(p.x, p.z), 20.0f * 0.21590f / 2, 1e-4f);
+    for (double r : g.repairedRadii(3)) EXPECT_NEAR(r, 215.9 / 2, 1e-9);  // the data stay true
+    EXPECT_NEAR(m.positions.back().y, -10.0f, 1e-4f);                    // and so does the path
+}
