@@ -39,7 +39,8 @@ int runCommandLine(int argc, char** argv) {
         std::puts("caliper3d 0.1.0");
         return kExitOk;
     }
-    std::fprintf(stderr, "caliper3d: unknown verb '%s'\n%s", verb.toLocal8Bit().constData(), kUsage);
+    std::fprintf(stderr, "caliper3d: unknown verb '%s'\n%s", verb.toLocal8Bit().constData(),
+                 kUsage);
     return kExitUsage;
 }
 

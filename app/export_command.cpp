@@ -23,7 +23,8 @@ int runExport(const QStringList& args) {
         if (!verb.isSet("output")) throw UsageError("caliper3d export: -o OUT.iv is required");
         const std::string out = verb.value("output");
         if (out.size() < 3 || out.compare(out.size() - 3, 3, ".iv") != 0)
-            throw UsageError("caliper3d export: only .iv output is supported so far, got '" + out + "'");
+            throw UsageError("caliper3d export: only .iv output is supported so far, got '" + out +
+                             "'");
         const InputOptions options = inputOptionsFrom(p);
 
         scenegraph::initCoin();
@@ -37,9 +38,9 @@ int runExport(const QStringList& args) {
         scenegraph::writeIv(scene.root.get(), out, ivOptions);
         const auto written = std::chrono::steady_clock::now();
         using Seconds = std::chrono::duration<double>;
-        std::printf("wrote %s (%d well%s): read and built in %.2f s, written in %.2f s\n", out.c_str(),
-                    scene.wells, scene.wells == 1 ? "" : "s", Seconds(built - start).count(),
-                    Seconds(written - built).count());
+        std::printf("wrote %s (%d well%s): read and built in %.2f s, written in %.2f s\n",
+                    out.c_str(), scene.wells, scene.wells == 1 ? "" : "s",
+                    Seconds(built - start).count(), Seconds(written - built).count());
         return scene.failures > 0 ? kExitBadInput : kExitOk;
     });
 }

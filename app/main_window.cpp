@@ -57,16 +57,21 @@ void MainWindow::buildMenus() {
     QMenu* view = menuBar()->addMenu("&View");
     view->addAction("View &all", this, [this] { m_viewer->viewAll(); });
     view->addAction("&Iso", this, [this] { setView(int(scenegraph::ViewDirection::Iso)); });
-    view->addAction("Looking &north", this, [this] { setView(int(scenegraph::ViewDirection::North)); });
-    view->addAction("Looking &east", this, [this] { setView(int(scenegraph::ViewDirection::East)); });
+    view->addAction("Looking &north", this,
+                    [this] { setView(int(scenegraph::ViewDirection::North)); });
+    view->addAction("Looking &east", this,
+                    [this] { setView(int(scenegraph::ViewDirection::East)); });
     view->addAction("From &top", this, [this] { setView(int(scenegraph::ViewDirection::Top)); });
     view->addSeparator();
     QMenu* exaggeration = view->addMenu("Radial e&xaggeration");
     for (double factor : {1.0, 10.0, 50.0, 200.0})
-        exaggeration->addAction(QString("x%1").arg(factor), this, [this, factor] { setExaggeration(factor); });
+        exaggeration->addAction(QString("x%1").arg(factor), this,
+                                [this, factor] { setExaggeration(factor); });
 }
 
-bool MainWindow::loading() const { return m_feeder && !m_feeder->done(); }
+bool MainWindow::loading() const {
+    return m_feeder && !m_feeder->done();
+}
 
 void MainWindow::openWell(const QString& path, const InputOptions& options) {
     m_feeder.reset();
@@ -108,13 +113,15 @@ void MainWindow::openWell(const QString& path, const InputOptions& options) {
 }
 
 void MainWindow::openDialog() {
-    const QString path = QFileDialog::getOpenFileName(this, "Open caliper log", QString(),
-                                                      "Caliper logs (*.txt *.las *.LAS *.csv);;All files (*)");
+    const QString path =
+        QFileDialog::getOpenFileName(this, "Open caliper log", QString(),
+                                     "Caliper logs (*.txt *.las *.LAS *.csv);;All files (*)");
     if (!path.isEmpty()) openWell(path, m_lastOptions);
 }
 
 void MainWindow::exportDialog() {
-    const QString path = QFileDialog::getSaveFileName(this, "Export scene", "scene.iv", "Open Inventor (*.iv)");
+    const QString path =
+        QFileDialog::getSaveFileName(this, "Export scene", "scene.iv", "Open Inventor (*.iv)");
     if (path.isEmpty()) return;
     try {
         scenegraph::writeIv(m_sceneRoot, path.toStdString());
@@ -137,7 +144,8 @@ void MainWindow::setView(int direction) {
     SoGetBoundingBoxAction bbox(m_viewer->getViewportRegion());
     bbox.apply(m_sceneRoot);
     if (bbox.getBoundingBox().isEmpty()) return;
-    scenegraph::aimCamera(camera, static_cast<scenegraph::ViewDirection>(direction), bbox.getBoundingBox().getCenter());
+    scenegraph::aimCamera(camera, static_cast<scenegraph::ViewDirection>(direction),
+                          bbox.getBoundingBox().getCenter());
     m_viewer->viewAll();
 }
 

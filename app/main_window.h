@@ -17,7 +17,7 @@ class WellLoadPipeline;
 namespace caliper3d::scenegraph {
 class SegmentFeeder;
 class WellScene;
-}
+}  // namespace caliper3d::scenegraph
 
 namespace caliper3d::app {
 

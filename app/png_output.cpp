@@ -2,19 +2,21 @@
 
 #include <stdexcept>
 
-#include <QImage>
 #include <Inventor/nodes/SoSeparator.h>
+#include <QImage>
 
 #include "scenegraph/node_ref.h"
 
 namespace caliper3d::app {
 
 namespace detail {
-scenegraph::RenderedImage renderRootToPng(SoNode* root, const std::string& path, int width, int height) {
+scenegraph::RenderedImage renderRootToPng(SoNode* root, const std::string& path, int width,
+                                          int height) {
     scenegraph::OffscreenRenderer renderer;
     const float background[3] = {0.11f, 0.13f, 0.17f};
     scenegraph::RenderedImage image = renderer.render(root, width, height, background);
-    QImage picture(image.rgba.data(), image.width, image.height, image.width * 4, QImage::Format_RGBA8888);
+    QImage picture(image.rgba.data(), image.width, image.height, image.width * 4,
+                   QImage::Format_RGBA8888);
     if (!picture.save(QString::fromStdString(path), "PNG"))
         throw std::runtime_error(path + ": cannot write the PNG file");
     return image;

@@ -17,7 +17,8 @@ scenegraph::RenderedImage renderToPng(SoNode* scene, const std::string& path, in
                                       const scenegraph::CameraPose& pose);
 
 namespace detail {
-scenegraph::RenderedImage renderRootToPng(SoNode* root, const std::string& path, int width, int height);
+scenegraph::RenderedImage renderRootToPng(SoNode* root, const std::string& path, int width,
+                                          int height);
 }
 
 }  // namespace caliper3d::app

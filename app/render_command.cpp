@@ -13,23 +13,32 @@ namespace caliper3d::app {
 
 int runRender(const QStringList& args) {
     return guardedVerb("render", [&]() -> int {
-        VerbParser verb("render", "FILE... -o OUT.png", "Render wells to a PNG picture without a window.");
+        VerbParser verb("render", "FILE... -o OUT.png",
+                        "Render wells to a PNG picture without a window.");
         QCommandLineParser& p = verb.parser();
         p.addOption({{"o", "output"}, "Output picture (.png).", "OUT"});
         p.addOption({"width", "Picture width in pixels (default 1024).", "W", "1024"});
         p.addOption({"height", "Picture height in pixels (default 768).", "H", "768"});
-        p.addOption({"view", "iso, north, east, top, or hole (inside the first well, looking down it) (default iso).", "VIEW", "iso"});
-        p.addOption({"at", "With --view hole: measured depth of the eye in metres (default: top of the log).", "MD"});
+        p.addOption({"view",
+                     "iso, north, east, top, or hole (inside the first well, looking down it) "
+                     "(default iso).",
+                     "VIEW", "iso"});
+        p.addOption(
+            {"at",
+             "With --view hole: measured depth of the eye in metres (default: top of the log).",
+             "MD"});
         addInputOptions(p);
         if (!verb.parse(args, 1)) return kExitOk;
         if (!verb.isSet("output")) throw UsageError("caliper3d render: -o OUT.png is required");
         bool okW = false, okH = false;
         const int width = p.value("width").toInt(&okW), height = p.value("height").toInt(&okH);
         if (!okW || !okH || width < 16 || height < 16 || width > 8192 || height > 8192)
-            throw UsageError("caliper3d render: --width and --height take whole numbers from 16 to 8192");
+            throw UsageError(
+                "caliper3d render: --width and --height take whole numbers from 16 to 8192");
         const bool downHole = verb.value("view") == "hole";
         const auto view = scenegraph::parseViewDirection(verb.value("view"));
-        if (!view && !downHole) throw UsageError("caliper3d render: --view takes iso, north, east, top or hole");
+        if (!view && !downHole)
+            throw UsageError("caliper3d render: --view takes iso, north, east, top or hole");
         double at = 0.0;
         if (verb.isSet("at") && !io::parseNumber(verb.value("at"), at))
             throw UsageError("caliper3d render: --at takes a measured depth in metres");

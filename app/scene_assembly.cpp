@@ -20,18 +20,22 @@ AssembledScene assembleScene(const std::vector<std::string>& files, const InputO
     for (const std::string& file : files) {
         try {
             io::Diagnostics diagnostics;
-            auto table = std::make_shared<const io::SectionTable>(readWellFile(file, options, &diagnostics));
-            auto geometry = std::make_shared<const reconstruction::WellGeometry>(table, geometryOptions(options));
+            auto table =
+                std::make_shared<const io::SectionTable>(readWellFile(file, options, &diagnostics));
+            auto geometry = std::make_shared<const reconstruction::WellGeometry>(
+                table, geometryOptions(options));
             scenegraph::WellScene scene;
             scene.buildAll(*geometry);
             out.geometries.push_back(geometry);
             out.root->addChild(scene.root());
             ++out.wells;
-            std::printf("%s: %zu sections, %zu segments, %zu triangles at full detail, %zu warnings\n",
-                        file.c_str(), table->rowCount(), scene.segmentCount(), scene.fullDetailTriangles(),
-                        diagnostics.warningCount);
+            std::printf(
+                "%s: %zu sections, %zu segments, %zu triangles at full detail, %zu warnings\n",
+                file.c_str(), table->rowCount(), scene.segmentCount(), scene.fullDetailTriangles(),
+                diagnostics.warningCount);
             for (const io::Warning& w : diagnostics.warnings)
-                std::fprintf(stderr, "%s:%zu: warning: %s\n", w.file.c_str(), w.line, w.message.c_str());
+                std::fprintf(stderr, "%s:%zu: warning: %s\n", w.file.c_str(), w.line,
+                             w.message.c_str());
         } catch (const std::exception& e) {
             ++out.failures;
             std::fprintf(stderr, "caliper3d: %s\n", e.what());
@@ -47,7 +51,8 @@ scenegraph::CameraPose downHolePose(const reconstruction::WellGeometry& geometry
     const std::size_t r = std::min(row, depth.size() - 1);
     const reconstruction::PathPoint& p = geometry.path()[r];
     const glm::dvec3 eye = reconstruction::toScene(geometry.centre(r));
-    const glm::dvec3 look = reconstruction::toScene(reconstruction::holeTangent(p.inc_deg, p.azi_deg));
+    const glm::dvec3 look =
+        reconstruction::toScene(reconstruction::holeTangent(p.inc_deg, p.azi_deg));
     const glm::dvec3 up = reconstruction::toScene(reconstruction::highSide(p.inc_deg, p.azi_deg));
     scenegraph::CameraPose pose;
     for (int i = 0; i < 3; ++i) {

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "app/input_options.h"
 #include <Inventor/nodes/SoSeparator.h>
+#include "app/input_options.h"
 
 #include "reconstruction/well_geometry.h"
 #include "scenegraph/camera_setup.h"

@@ -14,18 +14,22 @@ int runSynth(const QStringList& args) {
     return guardedVerb("synth", [&]() -> int {
         VerbParser verb("synth", "-o OUT", "Write a synthetic caliper log with known features.");
         QCommandLineParser& p = verb.parser();
-        p.addOption({{"o", "output"}, "Output log (column text: depth R1..R6 P1AZ DEVI HAZI).", "OUT"});
+        p.addOption(
+            {{"o", "output"}, "Output log (column text: depth R1..R6 P1AZ DEVI HAZI).", "OUT"});
         p.addOption({"length", "Well length in metres (default 300).", "M", "300"});
         p.addOption({"step", "Sampling step in metres (default 0.05).", "M", "0.05"});
-        p.addOption({"profile", "Profile: example or circle (default example).", "NAME", "example"});
+        p.addOption(
+            {"profile", "Profile: example or circle (default example).", "NAME", "example"});
         if (!verb.parse(args, 0)) return kExitOk;
         if (!verb.isSet("output")) throw UsageError("caliper3d synth: -o OUT is required");
         double length = 0, step = 0;
         if (!io::parseNumber(verb.value("length"), length) || !(length > 0))
             throw UsageError("caliper3d synth: --length takes a positive number of metres");
         if (!io::parseNumber(verb.value("step"), step) || !(step > 0) || step >= length)
-            throw UsageError("caliper3d synth: --step takes a positive number of metres below --length");
-        if (length / step > 5e7) throw UsageError("caliper3d synth: more than 50 million sections asked for");
+            throw UsageError(
+                "caliper3d synth: --step takes a positive number of metres below --length");
+        if (length / step > 5e7)
+            throw UsageError("caliper3d synth: more than 50 million sections asked for");
         reconstruction::SyntheticWellSpec spec;
         try {
             spec = reconstruction::syntheticProfile(verb.value("profile"), length, step);
@@ -35,8 +39,8 @@ int runSynth(const QStringList& args) {
         const io::SectionTable table = reconstruction::makeSyntheticWell(spec);
         const std::string out = verb.value("output");
         io::writeColumnTextFile(out, table);
-        std::printf("wrote %s (%zu sections, %.1f m, profile %s)\n", out.c_str(), table.rowCount(), length,
-                    verb.value("profile").c_str());
+        std::printf("wrote %s (%zu sections, %.1f m, profile %s)\n", out.c_str(), table.rowCount(),
+                    length, verb.value("profile").c_str());
         return kExitOk;
     });
 }

@@ -16,13 +16,15 @@ VerbParser::VerbParser(const char* verb, const char* positionalSyntax, const cha
 bool VerbParser::parse(const QStringList& args, int minPositional) {
     QStringList full = args;
     full.prepend(QString("caliper3d ") + QString::fromStdString(m_verb));
-    if (!m_parser.parse(full)) throw UsageError("caliper3d " + m_verb + ": " + m_parser.errorText().toStdString());
+    if (!m_parser.parse(full))
+        throw UsageError("caliper3d " + m_verb + ": " + m_parser.errorText().toStdString());
     if (m_parser.isSet("help")) {
         std::fputs(m_parser.helpText().toLocal8Bit().constData(), stdout);
         return false;
     }
     if (m_parser.positionalArguments().size() < minPositional)
-        throw UsageError("caliper3d " + m_verb + ": missing arguments; see 'caliper3d " + m_verb + " --help'");
+        throw UsageError("caliper3d " + m_verb + ": missing arguments; see 'caliper3d " + m_verb +
+                         " --help'");
     return true;
 }
 

@@ -19,7 +19,8 @@ namespace caliper3d::app {
 
 namespace {
 
-int showWindow(int argc, char** argv, const std::vector<std::string>& files, const InputOptions& options) {
+int showWindow(int argc, char** argv, const std::vector<std::string>& files,
+               const InputOptions& options) {
     QApplication application(argc, argv);
     initGui();
     MainWindow window;
@@ -32,7 +33,8 @@ int showWindow(int argc, char** argv, const std::vector<std::string>& files, con
     // The first wells only; the File menu opens more.
     window.openWell(QString::fromStdString(files.front()), options);
     if (files.size() > 1)
-        std::fprintf(stderr, "caliper3d view: showing %s; open the others from the File menu\n", files.front().c_str());
+        std::fprintf(stderr, "caliper3d view: showing %s; open the others from the File menu\n",
+                     files.front().c_str());
     // The first frame can stay black until something changes: redraw once shown.
     QTimer::singleShot(100, &window, [&window] { window.update(); });
     const int rc = application.exec();
@@ -54,7 +56,9 @@ int runView(int argc, char** argv, const QStringList& args) {
         if (!verb.parse(args, 1)) return kExitOk;
         const InputOptions options = inputOptionsFrom(verb.parser());
         if (!haveDisplay()) {
-            std::fprintf(stderr, "caliper3d view: no display; use 'caliper3d render' or 'caliper3d export'\n");
+            std::fprintf(
+                stderr,
+                "caliper3d view: no display; use 'caliper3d render' or 'caliper3d export'\n");
             return kExitUsage;
         }
         return showWindow(argc, argv, verb.positional(), options);
@@ -64,7 +68,9 @@ int runView(int argc, char** argv, const QStringList& args) {
 int runDefault(int argc, char** argv) {
     const std::string example = exampleWellPath();
     if (!std::filesystem::exists(example)) {
-        std::fprintf(stderr, "caliper3d: the bundled example %s is missing; rebuild, or run 'caliper3d synth -o FILE'\n",
+        std::fprintf(stderr,
+                     "caliper3d: the bundled example %s is missing; rebuild, or run 'caliper3d "
+                     "synth -o FILE'\n",
                      example.c_str());
         return kExitBadInput;
     }
@@ -84,12 +90,14 @@ int runDefault(int argc, char** argv) {
         overview.radialExaggeration = 50.0;
         AssembledScene whole = assembleScene({example}, overview);
         if (whole.wells == 0) return kExitBadInput;
-        renderToPng(whole.root.get(), "out/example-overview.png", 600, 900, scenegraph::ViewDirection::Iso);
+        renderToPng(whole.root.get(), "out/example-overview.png", 600, 900,
+                    scenegraph::ViewDirection::Iso);
         const auto here = std::filesystem::current_path();
-        std::printf("No display: rendered the example well instead of opening a window.\n"
-                    "  scene:    %s\n  picture:  %s\n  overview: %s\n",
-                    (here / "out/example.iv").c_str(), (here / "out/example.png").c_str(),
-                    (here / "out/example-overview.png").c_str());
+        std::printf(
+            "No display: rendered the example well instead of opening a window.\n"
+            "  scene:    %s\n  picture:  %s\n  overview: %s\n",
+            (here / "out/example.iv").c_str(), (here / "out/example.png").c_str(),
+            (here / "out/example-overview.png").c_str());
         return kExitOk;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "caliper3d: %s\n", e.what());

@@ -6,9 +6,9 @@
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/actions/SoGetBoundingBoxAction.h>
 #include <Inventor/nodes/SoDirectionalLight.h>
-#include <Inventor/nodes/SoPerspectiveCamera.h>
 #include <Inventor/nodes/SoEnvironment.h>
 #include <Inventor/nodes/SoLightModel.h>
+#include <Inventor/nodes/SoPerspectiveCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 #include "scenegraph/main_thread.h"
@@ -26,10 +26,18 @@ std::optional<ViewDirection> parseViewDirection(const std::string& name) {
 void aimCamera(SoCamera* camera, ViewDirection view, const SbVec3f& centre) {
     SbVec3f look(-1.0f, -0.7f, -1.0f), up(0.0f, 1.0f, 0.0f);
     switch (view) {
-        case ViewDirection::Iso: break;
-        case ViewDirection::North: look.setValue(0.0f, 0.0f, -1.0f); break;
-        case ViewDirection::East: look.setValue(1.0f, 0.0f, 0.0f); break;
-        case ViewDirection::Top: look.setValue(0.0f, -1.0f, 0.0f); up.setValue(0.0f, 0.0f, -1.0f); break;
+        case ViewDirection::Iso:
+            break;
+        case ViewDirection::North:
+            look.setValue(0.0f, 0.0f, -1.0f);
+            break;
+        case ViewDirection::East:
+            look.setValue(1.0f, 0.0f, 0.0f);
+            break;
+        case ViewDirection::Top:
+            look.setValue(0.0f, -1.0f, 0.0f);
+            up.setValue(0.0f, 0.0f, -1.0f);
+            break;
     }
     look.normalize();
     camera->position = centre - look;
@@ -41,7 +49,8 @@ SoSeparator* makeRenderRoot(SoNode* scene, ViewDirection view, int width, int he
     const SbViewportRegion viewport(static_cast<short>(width), static_cast<short>(height));
     SoGetBoundingBoxAction bbox(viewport);
     bbox.apply(scene);
-    const SbVec3f centre = bbox.getBoundingBox().isEmpty() ? SbVec3f(0, 0, 0) : bbox.getBoundingBox().getCenter();
+    const SbVec3f centre =
+        bbox.getBoundingBox().isEmpty() ? SbVec3f(0, 0, 0) : bbox.getBoundingBox().getCenter();
 
     auto* root = new SoSeparator;
     auto* camera = new SoPerspectiveCamera;
@@ -69,7 +78,8 @@ SoSeparator* makeRenderRoot(SoNode* scene, ViewDirection view, int width, int he
     const float tanH = tanV * aspect;
     float distance = 0.01f, radius = 0.01f;
     for (int corner = 0; corner < 8; ++corner) {
-        const SbVec3f p((corner & 1) ? hi[0] : lo[0], (corner & 2) ? hi[1] : lo[1], (corner & 4) ? hi[2] : lo[2]);
+        const SbVec3f p((corner & 1) ? hi[0] : lo[0], (corner & 2) ? hi[1] : lo[1],
+                        (corner & 4) ? hi[2] : lo[2]);
         const SbVec3f d = p - centre;
         const float depth = d.dot(look);  // positive: beyond the centre
         distance = std::max(distance, std::abs(d.dot(up)) / tanV - depth);

@@ -23,7 +23,8 @@ void writeIv(SoNode* scene, const std::string& path, const IvExportOptions& opti
     // Compression must be chosen before openFile(), or Coin ignores it.
     if (options.gzip && !out.setCompression("GZIP", 0.6f))
         throw std::runtime_error(path + ": this Coin build cannot write compressed files");
-    if (!out.openFile(path.c_str())) throw std::runtime_error(path + ": cannot open file for writing");
+    if (!out.openFile(path.c_str()))
+        throw std::runtime_error(path + ": cannot open file for writing");
     SoWriteAction write(&out);
     write.apply(scene);
     out.closeFile();
@@ -32,7 +33,8 @@ void writeIv(SoNode* scene, const std::string& path, const IvExportOptions& opti
 SoNode* readIv(const std::string& path) {
     assertMainThread("readIv");
     SoInput in;
-    if (!in.openFile(path.c_str(), TRUE)) throw std::runtime_error(path + ": cannot open file for reading");
+    if (!in.openFile(path.c_str(), TRUE))
+        throw std::runtime_error(path + ": cannot open file for reading");
     SoSeparator* root = SoDB::readAll(&in);
     in.closeFile();
     if (!root) throw std::runtime_error(path + ": not a readable Open Inventor file");

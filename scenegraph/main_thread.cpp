@@ -25,7 +25,9 @@ void initCoin() {
     SoInteraction::init();
 }
 
-bool onMainThread() { return !g_initialised || std::this_thread::get_id() == g_mainThread; }
+bool onMainThread() {
+    return !g_initialised || std::this_thread::get_id() == g_mainThread;
+}
 
 void assertMainThread(const char* where) {
 #ifndef NDEBUG

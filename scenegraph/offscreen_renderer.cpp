@@ -63,26 +63,32 @@ F load(const char* name) {
 OffscreenRenderer::OffscreenRenderer() = default;
 OffscreenRenderer::~OffscreenRenderer() = default;
 
-RenderedImage OffscreenRenderer::render(SoNode* scene, int width, int height, const float background[3]) {
+RenderedImage OffscreenRenderer::render(SoNode* scene, int width, int height,
+                                        const float background[3]) {
     assertMainThread("OffscreenRenderer::render");
     if (!m_context) {
         auto c = std::make_unique<Context>();
-        auto getPlatformDisplay =
-            reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
-        if (!getPlatformDisplay) throw std::runtime_error("offscreen rendering: EGL lacks eglGetPlatformDisplayEXT");
-        c->display = getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+        auto getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
+            eglGetProcAddress("eglGetPlatformDisplayEXT"));
+        if (!getPlatformDisplay)
+            throw std::runtime_error("offscreen rendering: EGL lacks eglGetPlatformDisplayEXT");
+        c->display =
+            getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
         if (c->display == EGL_NO_DISPLAY || !eglInitialize(c->display, nullptr, nullptr))
-            throw std::runtime_error("offscreen rendering: no surfaceless EGL display (Mesa EGL needed)");
-        if (!eglBindAPI(EGL_OPENGL_API)) throw std::runtime_error("offscreen rendering: EGL cannot bind OpenGL");
+            throw std::runtime_error(
+                "offscreen rendering: no surfaceless EGL display (Mesa EGL needed)");
+        if (!eglBindAPI(EGL_OPENGL_API))
+            throw std::runtime_error("offscreen rendering: EGL cannot bind OpenGL");
         const EGLint configAttributes[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
         EGLConfig config = nullptr;
         EGLint configs = 0;
         eglChooseConfig(c->display, configAttributes, &config, 1, &configs);
         const EGLint contextAttributes[] = {EGL_CONTEXT_OPENGL_PROFILE_MASK,
                                             EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT, EGL_NONE};
-        c->context = eglCreateContext(c->display, configs > 0 ? config : EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT,
-                                      contextAttributes);
-        if (c->context == EGL_NO_CONTEXT) throw std::runtime_error("offscreen rendering: cannot create an OpenGL context");
+        c->context = eglCreateContext(c->display, configs > 0 ? config : EGL_NO_CONFIG_KHR,
+                                      EGL_NO_CONTEXT, contextAttributes);
+        if (c->context == EGL_NO_CONTEXT)
+            throw std::runtime_error("offscreen rendering: cannot create an OpenGL context");
         if (!eglMakeCurrent(c->display, EGL_NO_SURFACE, EGL_NO_SURFACE, c->context))
             throw std::runtime_error("offscreen rendering: cannot make the context current");
         c->genFramebuffers = load<PFNGLGENFRAMEBUFFERSPROC>("glGenFramebuffers");
@@ -91,8 +97,10 @@ RenderedImage OffscreenRenderer::render(SoNode* scene, int width, int height, co
         c->genRenderbuffers = load<PFNGLGENRENDERBUFFERSPROC>("glGenRenderbuffers");
         c->bindRenderbuffer = load<PFNGLBINDRENDERBUFFERPROC>("glBindRenderbuffer");
         c->renderbufferStorage = load<PFNGLRENDERBUFFERSTORAGEPROC>("glRenderbufferStorage");
-        c->framebufferRenderbuffer = load<PFNGLFRAMEBUFFERRENDERBUFFERPROC>("glFramebufferRenderbuffer");
-        c->checkFramebufferStatus = load<PFNGLCHECKFRAMEBUFFERSTATUSPROC>("glCheckFramebufferStatus");
+        c->framebufferRenderbuffer =
+            load<PFNGLFRAMEBUFFERRENDERBUFFERPROC>("glFramebufferRenderbuffer");
+        c->checkFramebufferStatus =
+            load<PFNGLCHECKFRAMEBUFFERSTATUSPROC>("glCheckFramebufferStatus");
         c->deleteRenderbuffers = load<PFNGLDELETERENDERBUFFERSPROC>("glDeleteRenderbuffers");
         c->cacheContext = SoGLCacheContextElement::getUniqueCacheContext();
         m_context = std::move(c);
@@ -120,7 +128,8 @@ RenderedImage OffscreenRenderer::render(SoNode* scene, int width, int height, co
     glClearColor(background[0], background[1], background[2], 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);
-    SoGLRenderAction action(SbViewportRegion(static_cast<short>(width), static_cast<short>(height)));
+    SoGLRenderAction action(
+        SbViewportRegion(static_cast<short>(width), static_cast<short>(height)));
     action.setCacheContext(c.cacheContext);
     action.setTransparencyType(SoGLRenderAction::SORTED_OBJECT_BLEND);
     action.apply(scene);

@@ -9,7 +9,10 @@ namespace caliper3d::scenegraph {
 
 SegmentFeeder::SegmentFeeder(reconstruction::WellLoadPipeline& pipeline, WellScene& scene,
                              Callbacks callbacks, std::size_t segmentsPerTick)
-    : m_pipeline(pipeline), m_scene(scene), m_callbacks(std::move(callbacks)), m_perTick(segmentsPerTick) {
+    : m_pipeline(pipeline),
+      m_scene(scene),
+      m_callbacks(std::move(callbacks)),
+      m_perTick(segmentsPerTick) {
     assertMainThread("SegmentFeeder");
     m_timer = std::make_unique<SoTimerSensor>(&SegmentFeeder::onTimer, this);
     m_timer->setInterval(SbTime(0.02));
@@ -20,7 +23,9 @@ SegmentFeeder::~SegmentFeeder() {
     if (m_timer) m_timer->unschedule();
 }
 
-void SegmentFeeder::onTimer(void* data, SoSensor*) { static_cast<SegmentFeeder*>(data)->drainOnce(); }
+void SegmentFeeder::onTimer(void* data, SoSensor*) {
+    static_cast<SegmentFeeder*>(data)->drainOnce();
+}
 
 bool SegmentFeeder::drainOnce() {
     assertMainThread("SegmentFeeder::drainOnce");

@@ -16,12 +16,14 @@ SoIndexedTriangleStripSet* makeStripSet(const reconstruction::Mesh& mesh) {
     const int n = static_cast<int>(mesh.positions.size());
     vp->vertex.setNum(n);
     SbVec3f* v = vp->vertex.startEditing();
-    for (int i = 0; i < n; ++i) v[i].setValue(mesh.positions[i].x, mesh.positions[i].y, mesh.positions[i].z);
+    for (int i = 0; i < n; ++i)
+        v[i].setValue(mesh.positions[i].x, mesh.positions[i].y, mesh.positions[i].z);
     vp->vertex.finishEditing();
     if (mesh.normals.size() == mesh.positions.size()) {
         vp->normal.setNum(n);
         SbVec3f* nv = vp->normal.startEditing();
-        for (int i = 0; i < n; ++i) nv[i].setValue(mesh.normals[i].x, mesh.normals[i].y, mesh.normals[i].z);
+        for (int i = 0; i < n; ++i)
+            nv[i].setValue(mesh.normals[i].x, mesh.normals[i].y, mesh.normals[i].z);
         vp->normal.finishEditing();
         vp->normalBinding = SoVertexProperty::PER_VERTEX_INDEXED;
     }
@@ -31,7 +33,8 @@ SoIndexedTriangleStripSet* makeStripSet(const reconstruction::Mesh& mesh) {
     }
     auto* strips = new SoIndexedTriangleStripSet;
     strips->vertexProperty = vp;
-    strips->coordIndex.setValues(0, static_cast<int>(mesh.stripIndices.size()), mesh.stripIndices.data());
+    strips->coordIndex.setValues(0, static_cast<int>(mesh.stripIndices.size()),
+                                 mesh.stripIndices.data());
     // With vertexProperty bindings *_INDEXED and empty index fields, Coin uses coordIndex.
     return strips;
 }

@@ -45,7 +45,8 @@ void WellScene::setPath(const reconstruction::WellGeometry& geometry, double spa
     for (std::size_t row = 0; row < depth.size(); ++row) {
         if (depth[row] < next && row + 1 != depth.size()) continue;
         const glm::dvec3 p = reconstruction::toScene(geometry.centre(row));
-        coords->point.set1Value(n++, static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z));
+        coords->point.set1Value(n++, static_cast<float>(p.x), static_cast<float>(p.y),
+                                static_cast<float>(p.z));
         next = depth[row] + spacing_m;
     }
     auto* style = new SoDrawStyle;

@@ -47,7 +47,8 @@ TEST(CommandLineTest, SynthThenExportWritesAnInventorFile) {
 TEST(CommandLineTest, BadInputExitsOneNamingFileAndLine) {
     const auto bad = caliper3d::test::scratch("cli_bad.txt");
     { std::ofstream(bad) << "1 2 3 4 5 6 7 8 9 10\n2 2 3 4 5 6 7 8 9\n"; }
-    CommandRun r = run("export " + bad.string() + " -o " + caliper3d::test::scratch("cli_bad.iv").string());
+    CommandRun r =
+        run("export " + bad.string() + " -o " + caliper3d::test::scratch("cli_bad.iv").string());
     EXPECT_EQ(r.status, 1) << r.output;
     EXPECT_NE(r.output.find(bad.string() + ":2"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("expected 10 columns"), std::string::npos) << r.output;

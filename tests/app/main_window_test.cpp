@@ -3,11 +3,11 @@
 #include <fstream>
 #include <memory>
 
+#include <gtest/gtest.h>
 #include <QApplication>
 #include <QEventLoop>
 #include <QGLWidget>
 #include <QTimer>
-#include <gtest/gtest.h>
 
 #include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
 
@@ -54,8 +54,9 @@ QApplication* MainWindowTest::s_application = nullptr;
 
 TEST_F(MainWindowTest, OpensTheExampleAndRendersTheWell) {
     const auto log = test::scratch("window_example.txt");
-    io::writeColumnTextFile(log.string(),
-                            reconstruction::makeSyntheticWell(reconstruction::syntheticProfile("example", 60.0, 0.1)));
+    io::writeColumnTextFile(
+        log.string(),
+        reconstruction::makeSyntheticWell(reconstruction::syntheticProfile("example", 60.0, 0.1)));
     app::MainWindow window;
     window.resize(640, 480);
     window.show();
@@ -86,5 +87,6 @@ TEST_F(MainWindowTest, BadFileReportsFailureWithFileAndLine) {
     QObject::connect(&window, &app::MainWindow::wellFailed, [&](const QString& m) { message = m; });
     window.openWell(QString::fromStdString(bad.string()), app::InputOptions{});
     ASSERT_TRUE(waitFor(window, &app::MainWindow::wellFailed, 30000));
-    EXPECT_TRUE(message.contains(QString::fromStdString(bad.string() + ":1"))) << message.toStdString();
+    EXPECT_TRUE(message.contains(QString::fromStdString(bad.string() + ":1")))
+        << message.toStdString();
 }

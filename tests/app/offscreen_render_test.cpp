@@ -1,7 +1,7 @@
 #include <memory>
 
-#include <QImage>
 #include <gtest/gtest.h>
+#include <QImage>
 
 #include "app/png_output.h"
 #include "reconstruction/synthetic_well.h"
@@ -23,7 +23,8 @@ TEST(OffscreenRenderTest, WellRendersToAPngWithoutAWindow) {
     const auto path = test::scratch("offscreen.png");
     scenegraph::RenderedImage image;
     try {
-        image = app::renderToPng(scene.root(), path.string(), 320, 240, scenegraph::ViewDirection::East);
+        image = app::renderToPng(scene.root(), path.string(), 320, 240,
+                                 scenegraph::ViewDirection::East);
     } catch (const std::runtime_error& e) {
         FAIL() << e.what();
     }

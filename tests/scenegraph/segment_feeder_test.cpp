@@ -31,7 +31,10 @@ protected:
 
 TEST_F(SegmentFeederTest, WorkerSegmentsReachTheSceneOnTheMainThread) {
     reconstruction::WellLoadPipeline pipeline(
-        [] { return reconstruction::makeSyntheticWell(reconstruction::syntheticProfile("example", 80.0, 0.1)); },
+        [] {
+            return reconstruction::makeSyntheticWell(
+                reconstruction::syntheticProfile("example", 80.0, 0.1));
+        },
         reconstruction::GeometryOptions{});
     scenegraph::WellScene scene;
     std::size_t finishedWith = 0;
@@ -66,7 +69,10 @@ TEST_F(SegmentFeederTest, ReaderFailureIsReportedNotThrown) {
 
 TEST_F(SegmentFeederTest, CancelledPipelineStopsEarly) {
     reconstruction::WellLoadPipeline pipeline(
-        [] { return reconstruction::makeSyntheticWell(reconstruction::syntheticProfile("circle", 400.0, 0.01)); },
+        [] {
+            return reconstruction::makeSyntheticWell(
+                reconstruction::syntheticProfile("circle", 400.0, 0.01));
+        },
         reconstruction::GeometryOptions{});
     pipeline.start();
     pipeline.cancel();

@@ -46,7 +46,8 @@ TEST_F(SegmentNodeBuilderTest, SegmentBecomesLodFinestFirstWithIncreasingRanges)
     ASSERT_EQ(lod->getNumChildren(), 3);
     ASSERT_EQ(lod->range.getNum(), 2);
     EXPECT_LT(lod->range[0], lod->range[1]);
-    EXPECT_EQ(lod->center.getValue(), SbVec3f(segment.centre.x, segment.centre.y, segment.centre.z));
+    EXPECT_EQ(lod->center.getValue(),
+              SbVec3f(segment.centre.x, segment.centre.y, segment.centre.z));
     auto count = [&](int child) {
         auto* s = static_cast<SoIndexedTriangleStripSet*>(lod->getChild(child));
         return static_cast<SoVertexProperty*>(s->vertexProperty.getValue())->vertex.getNum();
