@@ -39,18 +39,18 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 }
 
 MainWindow::~MainWindow() {
-    // Stop the worker before the nodes and the viewer go.
-    m_feeder.reset();
-    m_pipeline.reset();
+    // Stop the workers before the nodes and the viewer go.
+    m_wells.clear();
     m_viewer->setSceneGraph(nullptr);
-    m_well.reset();
     m_sceneRoot->unref();
     delete m_viewer;
 }
 
 void MainWindow::buildMenus() {
     QMenu* file = menuBar()->addMenu("&File");
-    file->addAction("&Open well...", this, &MainWindow::openDialog, QKeySequence::Open);
+    file->addAction(
+        "&Open well...", this, [this] { openDialog(false); }, QKeySequence::Open);
+    file->addAction("&Add well...", this, [this] { openDialog(true); });
     file->addAction("&Export scene (.iv)...", this, &MainWindow::exportDialog);
     file->addSeparator();
     file->addAction("&Quit", this, &QWidget::close, QKeySequence::Quit);
@@ -70,53 +70,90 @@ void MainWindow::buildMenus() {
 }
 
 bool MainWindow::loading() const {
-    return m_feeder && !m_feeder->done();
+    for (const auto& well : m_wells)
+        if (!well->done) return true;
+    return false;
 }
 
 void MainWindow::openWell(const QString& path, const InputOptions& options) {
-    m_feeder.reset();
-    m_pipeline.reset();
+    m_wells.clear();
     m_sceneRoot->removeAllChildren();
-    m_well = std::make_unique<scenegraph::WellScene>();
-    m_sceneRoot->addChild(m_well->root());
-    m_lastOptions = options;
-    m_lastPath = path;
     m_viewedAll = false;
+    addWell(path, options);
+}
+
+void MainWindow::addWell(const QString& path, const InputOptions& options) {
+    auto well = std::make_unique<Well>();
+    Well& w = *well;
+    w.path = path;
+    w.options = options;
+    w.scene = std::make_unique<scenegraph::WellScene>();
+    m_sceneRoot->addChild(w.scene->root());
+    m_wells.push_back(std::move(well));
+    m_lastOptions = options;
+
     const std::string file = path.toStdString();
-    m_pipeline = std::make_unique<reconstruction::WellLoadPipeline>(
+    w.pipeline = std::make_unique<reconstruction::WellLoadPipeline>(
         [file, options] { return readWellFile(file, options, nullptr); }, geometryOptions(options));
     const QString name = QFileInfo(path).fileName();
     m_status->setText("Loading " + name + "...");
-    setWindowTitle("caliper3d - " + name);
+    setWindowTitle(m_wells.size() == 1 ? "caliper3d - " + name
+                                       : QString("caliper3d - %1 wells").arg(m_wells.size()));
     scenegraph::SegmentFeeder::Callbacks callbacks;
     callbacks.progress = [this, name](std::size_t attached) {
-        if (!m_viewedAll && attached >= 1) {
+        if (!m_viewedAll) {
             m_viewer->viewAll();
             m_viewedAll = true;
         }
         m_status->setText(QString("Loading %1: %2 segments").arg(name).arg(attached));
     };
-    callbacks.finished = [this, name](std::size_t segments) {
-        m_status->setText(QString("%1: %2 segments, %3 triangles at full detail")
+    callbacks.finished = [this, name, &w](std::size_t segments) {
+        m_status->setText(QString("%1: %2 segments, %3 triangles at full detail, radii x%4")
                               .arg(name)
                               .arg(segments)
-                              .arg(m_well->fullDetailTriangles()));
-        m_viewer->viewAll();
-        emit wellLoaded(static_cast<int>(segments));
+                              .arg(w.scene->fullDetailTriangles())
+                              .arg(w.options.radialExaggeration));
+        w.done = true;
+        // Signalled from the event loop, not from inside the feeder's tick, so a
+        // slot may open other wells (destroying this feeder) safely.
+        QMetaObject::invokeMethod(
+            this,
+            [this, segments] {
+                emit wellLoaded(static_cast<int>(segments));
+                wellDone();
+            },
+            Qt::QueuedConnection);
     };
-    callbacks.failed = [this, name](const std::string& message) {
-        m_status->setText(name + ": failed");
-        emit wellFailed(QString::fromStdString(message));
+    callbacks.failed = [this, name, &w](const std::string& message) {
+        m_status->setText(name + ": failed: " + QString::fromStdString(message));
+        w.done = true;
+        QMetaObject::invokeMethod(
+            this,
+            [this, message] {
+                emit wellFailed(QString::fromStdString(message));
+                wellDone();
+            },
+            Qt::QueuedConnection);
     };
-    m_feeder = std::make_unique<scenegraph::SegmentFeeder>(*m_pipeline, *m_well, callbacks);
-    m_pipeline->start();
+    w.feeder = std::make_unique<scenegraph::SegmentFeeder>(*w.pipeline, *w.scene, callbacks);
+    w.pipeline->start();
 }
 
-void MainWindow::openDialog() {
+void MainWindow::wellDone() {
+    if (loading()) return;
+    m_viewer->viewAll();
+    emit allWellsLoaded();
+}
+
+void MainWindow::openDialog(bool add) {
     const QString path =
         QFileDialog::getOpenFileName(this, "Open caliper log", QString(),
                                      "Caliper logs (*.txt *.las *.LAS *.csv);;All files (*)");
-    if (!path.isEmpty()) openWell(path, m_lastOptions);
+    if (path.isEmpty()) return;
+    if (add)
+        addWell(path, m_lastOptions);
+    else
+        openWell(path, m_lastOptions);
 }
 
 void MainWindow::exportDialog() {
@@ -132,10 +169,15 @@ void MainWindow::exportDialog() {
 }
 
 void MainWindow::setExaggeration(double factor) {
-    if (m_lastPath.isEmpty()) return;
-    InputOptions options = m_lastOptions;
-    options.radialExaggeration = factor;
-    openWell(m_lastPath, options);
+    std::vector<std::pair<QString, InputOptions>> shown;
+    for (const auto& well : m_wells) shown.emplace_back(well->path, well->options);
+    if (shown.empty()) return;
+    m_wells.clear();
+    m_sceneRoot->removeAllChildren();
+    for (auto& [path, options] : shown) {
+        options.radialExaggeration = factor;
+        addWell(path, options);
+    }
 }
 
 void MainWindow::setView(int direction) {

@@ -2,6 +2,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <QMainWindow>
 
@@ -32,17 +33,22 @@ public:
     explicit MainWindow(QWidget* parent = nullptr);
     ~MainWindow() override;
 
+    // Replaces the wells shown by this one.
     void openWell(const QString& path, const InputOptions& options);
+    // Adds a well to those shown; each loads on its own worker.
+    void addWell(const QString& path, const InputOptions& options);
+    std::size_t wellCount() const { return m_wells.size(); }
     SoQtExaminerViewer* viewer() const { return m_viewer; }
     bool loading() const;
 
 signals:
-    void wellLoaded(int segments);
+    void wellLoaded(int segments);  // once per well
+    void allWellsLoaded();
     void wellFailed(const QString& message);
 
 private:
     void buildMenus();
-    void openDialog();
+    void openDialog(bool add);
     void exportDialog();
     void setView(int direction);
     void setExaggeration(double factor);
@@ -51,10 +57,18 @@ private:
     SoSeparator* m_sceneRoot = nullptr;
     QLabel* m_status = nullptr;
     InputOptions m_lastOptions;
-    QString m_lastPath;
-    std::unique_ptr<scenegraph::WellScene> m_well;
-    std::unique_ptr<reconstruction::WellLoadPipeline> m_pipeline;
-    std::unique_ptr<scenegraph::SegmentFeeder> m_feeder;
+    // One well being shown: its nodes, and while it loads its worker and feeder.
+    // Members are destroyed feeder first, then the worker, then the nodes.
+    struct Well {
+        QString path;
+        InputOptions options;
+        std::unique_ptr<scenegraph::WellScene> scene;
+        std::unique_ptr<reconstruction::WellLoadPipeline> pipeline;
+        std::unique_ptr<scenegraph::SegmentFeeder> feeder;
+        bool done = false;
+    };
+    void wellDone();
+    std::vector<std::unique_ptr<Well>> m_wells;
     bool m_viewedAll = false;
 };
 

@@ -30,11 +30,9 @@ int showWindow(int argc, char** argv, const std::vector<std::string>& files,
         std::fprintf(stderr, "caliper3d: %s\n", message.toLocal8Bit().constData());
         status = kExitBadInput;
     });
-    // The first wells only; the File menu opens more.
     window.openWell(QString::fromStdString(files.front()), options);
-    if (files.size() > 1)
-        std::fprintf(stderr, "caliper3d view: showing %s; open the others from the File menu\n",
-                     files.front().c_str());
+    for (std::size_t i = 1; i < files.size(); ++i)
+        window.addWell(QString::fromStdString(files[i]), options);
     // The first frame can stay black until something changes: redraw once shown.
     QTimer::singleShot(100, &window, [&window] { window.update(); });
     const int rc = application.exec();

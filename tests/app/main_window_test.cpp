@@ -90,3 +90,22 @@ TEST_F(MainWindowTest, BadFileReportsFailureWithFileAndLine) {
     EXPECT_TRUE(message.contains(QString::fromStdString(bad.string() + ":1")))
         << message.toStdString();
 }
+
+TEST_F(MainWindowTest, ShowsSeveralWellsAtOnce) {
+    const auto a = test::scratch("window_a.txt");
+    const auto b = test::scratch("window_b.txt");
+    io::writeColumnTextFile(a.string(), reconstruction::makeSyntheticWell(
+                                            reconstruction::syntheticProfile("circle", 20.0, 0.1)));
+    io::writeColumnTextFile(
+        b.string(),
+        reconstruction::makeSyntheticWell(reconstruction::syntheticProfile("example", 30.0, 0.1)));
+    app::MainWindow window;
+    int loaded = 0;
+    QObject::connect(&window, &app::MainWindow::wellLoaded, [&](int) { ++loaded; });
+    window.openWell(QString::fromStdString(a.string()), app::InputOptions{});
+    window.addWell(QString::fromStdString(b.string()), app::InputOptions{});
+    ASSERT_TRUE(waitFor(window, &app::MainWindow::allWellsLoaded, 60000));
+    EXPECT_EQ(loaded, 2);
+    EXPECT_EQ(window.wellCount(), 2u);
+    EXPECT_FALSE(window.loading());
+}
