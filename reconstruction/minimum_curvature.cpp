@@ -52,6 +52,7 @@ std::vector<PathPoint> minimumCurvaturePath(const std::vector<SurveyStation>& st
             p.east = prev.east + s.dEast;
             p.tvd = prev.tvd + s.dTvd;
             p.dogleg_deg = glm::degrees(s.dogleg_rad);
+            p.dls_degPer30m = doglegSeverity_degPer30m(p.dogleg_deg, p.md - prev.md);
         }
         path.push_back(p);
     }

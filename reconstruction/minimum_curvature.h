@@ -22,6 +22,7 @@ struct PathPoint {
     double inc_deg = 0.0;
     double azi_deg = 0.0;
     double dogleg_deg = 0.0;  // dogleg angle from the previous station
+    double dls_degPer30m = 0.0;  // dogleg severity of the course that ends here (md in metres)
 };
 
 // Result of one minimum-curvature step between two stations.

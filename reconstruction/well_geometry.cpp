@@ -10,6 +10,7 @@
 
 #include "reconstruction/arm_geometry.h"
 #include "reconstruction/colour_map.h"
+#include "reconstruction/survey_interpolation.h"
 
 namespace caliper3d::reconstruction {
 
@@ -49,23 +50,33 @@ WellGeometry::WellGeometry(std::shared_ptr<const io::SectionTable> table,
                                         std::to_string(i + 1) + ")");
     }
 
-    const std::vector<double> inc = filled(t.devi_deg, rows);
-    const std::vector<double> azi = filled(t.hazi_deg, rows);
-    std::vector<SurveyStation> stations(rows);
-    for (std::size_t i = 0; i < rows; ++i) stations[i] = {t.depth_m[i], inc[i], azi[i]};
-    m_path = minimumCurvaturePath(stations);
+    if (!m_options.survey.empty()) {
+        m_path = interpolateSurveyPath(m_options.survey, t.depth_m);
+    } else {
+        const std::vector<double> inc = filled(t.devi_deg, rows);
+        const std::vector<double> azi = filled(t.hazi_deg, rows);
+        std::vector<SurveyStation> stations(rows);
+        for (std::size_t i = 0; i < rows; ++i) stations[i] = {t.depth_m[i], inc[i], azi[i]};
+        m_path = minimumCurvaturePath(stations);
+    }
 
+    // Arm 1 per design section 3: P1AZ in near-vertical holes, RB from the
+    // high side in steep ones (where P1AZ, a horizontal projection, loses
+    // precision) or when P1AZ is missing; P1AZ when RB is missing. A row with
+    // neither keeps arm 1 north and is counted as unoriented.
     m_frames.resize(rows);
-    const bool hasP1az = !t.p1az_deg.empty();
-    const bool hasRb = !t.rb_deg.empty();
+    m_orientation.resize(rows);
     for (std::size_t i = 0; i < rows; ++i) {
+        const double inc = m_path[i].inc_deg, azi = m_path[i].azi_deg;
         const double p1az = valueAt(t.p1az_deg, i);
         const double rb = valueAt(t.rb_deg, i);
-        const bool steep = inc[i] > m_options.steepInclination_deg;
-        if (hasRb && std::isfinite(rb) && (steep || !hasP1az || !std::isfinite(p1az))) {
-            m_frames[i] = frameFromRelativeBearing(inc[i], azi[i], rb);
+        const bool steep = inc > m_options.steepInclination_deg;
+        if (std::isfinite(rb) && (steep || !std::isfinite(p1az))) {
+            m_frames[i] = frameFromRelativeBearing(inc, azi, rb);
+            m_orientation[i] = Orientation::RelativeBearing;
         } else {
-            m_frames[i] = frameFromPadAzimuth(inc[i], azi[i], std::isfinite(p1az) ? p1az : 0.0);
+            m_frames[i] = frameFromPadAzimuth(inc, azi, std::isfinite(p1az) ? p1az : 0.0);
+            m_orientation[i] = std::isfinite(p1az) ? Orientation::PadAzimuth : Orientation::Unoriented;
         }
     }
 
@@ -91,28 +102,38 @@ double WellGeometry::bitRadius_mm(std::size_t row) const {
 }
 
 std::vector<double> WellGeometry::repairedRadii(std::size_t row) const {
+    std::vector<double> out(static_cast<std::size_t>(m_table->armCount));
+    repairRadii(row, out.data());
+    return out;
+}
+
+int WellGeometry::repairRadii(std::size_t row, double* out) const {
     const int n = m_table->armCount;
     const double* r = m_table->radii(row);
-    std::vector<double> out(r, r + n);
-    auto valid = [](double v) { return std::isfinite(v) && v > 0.0; };
+    const double lo = m_options.minArmRadius_mm, hi = m_options.maxArmRadius_mm;
+    auto valid = [lo, hi](double v) { return std::isfinite(v) && v > lo && v <= hi; };
     int good = 0;
-    for (double v : out) good += valid(v) ? 1 : 0;
-    if (good == n) return out;
+    for (int k = 0; k < n; ++k) {
+        out[k] = r[k];
+        good += valid(r[k]) ? 1 : 0;
+    }
+    if (good == n) return 0;
     if (good == 0) {
         const double fallback = std::isfinite(bitRadius_mm(row)) ? bitRadius_mm(row) : 100.0;
-        std::fill(out.begin(), out.end(), fallback);
-        return out;
+        std::fill(out, out + n, fallback);
+        return n;
     }
-    // Linear interpolation around the section between the nearest valid arms.
+    // Linear interpolation around the section between the nearest valid arms:
+    // a missing arm never becomes a spike or a notch in the mesh.
     for (int k = 0; k < n; ++k) {
         if (valid(r[k])) continue;
         int before = 1, after = 1;
         while (!valid(r[(k - before + n) % n])) ++before;
         while (!valid(r[(k + after) % n])) ++after;
         const double a = r[(k - before + n) % n], b = r[(k + after) % n];
-        out[static_cast<std::size_t>(k)] = a + (b - a) * before / static_cast<double>(before + after);
+        out[k] = a + (b - a) * before / static_cast<double>(before + after);
     }
-    return out;
+    return n - good;
 }
 
 void WellGeometry::appendRing(Mesh& mesh, std::size_t row, bool spline) const {

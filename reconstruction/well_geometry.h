@@ -25,6 +25,13 @@ struct GeometryOptions {
     // that a long well seen whole is more than a line. Analysis never uses it.
     double radialExaggeration = 1.0;
     glm::dvec3 wellheadOffset{0.0, 0.0, 0.0};  // NED offset of this wellhead from the scene origin
+    // A deviation survey (--survey) replaces the log's DEVI/HAZI for the path
+    // when not empty: the path is interpolated along its minimum-curvature arcs.
+    std::vector<SurveyStation> survey;
+    // Arm readings outside [minArmRadius_mm, maxArmRadius_mm] (a closed,
+    // stuck or over-reaching arm) are treated as missing and interpolated.
+    double minArmRadius_mm = 0.0;           // readings <= this are missing
+    double maxArmRadius_mm = 1.0e9;         // the tool's reach; no limit by default
 };
 
 // One segment's meshes, finest level first.
@@ -58,6 +65,12 @@ public:
     // Radii of a row with missing or non-positive arms filled from their
     // neighbours in the section (NaN-free; millimetres).
     std::vector<double> repairedRadii(std::size_t row) const;
+    // The same into `out` (armCount values); returns how many arms were repaired.
+    int repairRadii(std::size_t row, double* out) const;
+
+    // Which reading placed arm 1 on each row.
+    enum class Orientation : unsigned char { PadAzimuth, RelativeBearing, Unoriented };
+    Orientation orientation(std::size_t row) const { return m_orientation[row]; }
 
     // Bit radius of a row, millimetres (NaN when unknown).
     double bitRadius_mm(std::size_t row) const;
@@ -75,6 +88,7 @@ private:
     GeometryOptions m_options;
     std::vector<PathPoint> m_path;
     std::vector<SectionFrame> m_frames;
+    std::vector<Orientation> m_orientation;
     std::vector<std::pair<std::size_t, std::size_t>> m_segments;
     PeriodicSplineSampler m_sampler;
 };
