@@ -11,11 +11,19 @@ namespace caliper3d::io {
 // The reference tool's plain column text: per line
 //   depth R1 .. RN P1AZ DEVI HAZI
 // separated by spaces or tabs, decimal point or decimal comma. Blank lines and
-// lines starting with '#' are skipped; CRLF line ends are accepted.
+// lines starting with '#' are skipped; CRLF line ends are accepted; a first
+// line of names (no number on it) is skipped.
+//
+// Multi-finger tools often write only the finger radii: a file whose lines all
+// hold kMinRadiiOnlyColumns or more numbers, but not armCount + 4, is read as
+// radii only, depth = row index x rowStep_m (a counted warning says so).
 struct ColumnTextOptions {
+    static constexpr int kMinRadiiOnlyColumns = 8;
     int armCount = 6;
     LengthUnit depthUnit = LengthUnit::Metre;
     LengthUnit radiusUnit = LengthUnit::Inch;
+    bool allowRadiiOnly = true;
+    double rowStep_m = 0.01;
 };
 
 // Reads the whole file. Throws ParseError naming file, line and column when a

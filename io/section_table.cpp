@@ -11,7 +11,8 @@ void appendCurve(std::vector<double>& to, const std::vector<double>& from) {
 }  // namespace
 
 void SectionTable::append(const SectionTable& other) {
-    if (rowCount() == 0 && armCount == 0) armCount = other.armCount;
+    const bool empty = rowCount() == 0;
+    if (empty && armCount == 0) armCount = other.armCount;
     if (other.armCount != armCount)
         throw std::invalid_argument("SectionTable::append: arm counts differ");
     appendCurve(depth_m, other.depth_m);
@@ -21,6 +22,10 @@ void SectionTable::append(const SectionTable& other) {
     appendCurve(hazi_deg, other.hazi_deg);
     appendCurve(rb_deg, other.rb_deg);
     appendCurve(bitSize_mm, other.bitSize_mm);
+    if (empty && extraCurves.empty()) extraCurves = other.extraCurves;
+    else if (extraCurves.size() == other.extraCurves.size())
+        for (std::size_t i = 0; i < extraCurves.size(); ++i) appendCurve(extraCurves[i].values, other.extraCurves[i].values);
+    else throw std::invalid_argument("SectionTable::append: extra curves differ");
 }
 
 void SectionTable::reserve(std::size_t rows) {

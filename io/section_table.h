@@ -9,6 +9,15 @@ namespace caliper3d::io {
 
 inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+// A curve the log carries beside the caliper (gamma ray, resistivity, ...),
+// kept in its own unit for colouring and export.
+struct ExtraCurve {
+    std::string mnemonic;
+    std::string unit;
+    std::string description;
+    std::vector<double> values;  // one per row, NaN where null
+};
+
 // One caliper log as read from a file, in the product's internal units:
 // depths in metres (measured depth along the hole), radii in millimetres
 // (tool axis to wall), angles in degrees. Struct of arrays; every non-empty
@@ -25,6 +34,7 @@ struct SectionTable {
     std::vector<double> hazi_deg;   // hole azimuth from north, clockwise
     std::vector<double> rb_deg;     // relative bearing of arm 1 from the high side
     std::vector<double> bitSize_mm; // bit size per row (from a parameter or a curve)
+    std::vector<ExtraCurve> extraCurves;
 
     std::size_t rowCount() const { return depth_m.size(); }
     const double* radii(std::size_t row) const { return radius_mm.data() + row * armCount; }

@@ -1,0 +1,241 @@
+#include "io/las_header.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+
+#include "io/number_parsing.h"
+#include "io/parse_error.h"
+
+namespace caliper3d::io {
+
+namespace {
+
+std::string_view trim(std::string_view s) {
+    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
+    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
+    return s;
+}
+
+std::string lower(std::string_view s) {
+    std::string out(s);
+    std::transform(out.begin(), out.end(), out.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return out;
+}
+
+std::string upper(std::string_view s) {
+    std::string out(s);
+    std::transform(out.begin(), out.end(), out.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    return out;
+}
+
+enum class Section { Version, Well, Curves, Parameters, Other, Data, Ignored };
+
+// Section kinds by name: LAS 2.0 uses the first letter (~V ~W ~C ~P ~O ~A);
+// LAS 3.0 names groups (~Log_Parameter, ~Log_Definition, ~Log_Data) and
+// adds others (~Drilling_*, ~Core_*, ...) that a caliper reader skips.
+Section classify(std::string_view title) {
+    // Only the first word names the section: "~A  DEPT  P1NO_FBST ..." lists
+    // curve names after it, "~Log_Data | Log_Definition" an association.
+    std::string name = lower(trim(title.substr(1)));
+    const std::size_t end = name.find_first_of(" \t|");
+    if (end != std::string::npos) name.resize(end);
+    if (name.rfind("log_parameter", 0) == 0 || name.rfind("parameter", 0) == 0) return Section::Parameters;
+    if (name.rfind("log_definition", 0) == 0 || name.rfind("curve", 0) == 0) return Section::Curves;
+    if (name.rfind("log_data", 0) == 0 || name.rfind("ascii", 0) == 0) return Section::Data;
+    // Any other LAS 3.0 group (~Core_Data, ~Perforations_Definition, ...) is not a log.
+    if (name.find('_') != std::string::npos) return Section::Ignored;
+    switch (name.empty() ? '\0' : name.front()) {
+        case 'v': return Section::Version;
+        case 'w': return Section::Well;
+        case 'c': return Section::Curves;
+        case 'p': return Section::Parameters;
+        case 'o': return Section::Other;
+        case 'a': return Section::Data;
+        default: return Section::Ignored;
+    }
+}
+
+const LasItem* find(const std::vector<LasItem>& items, std::string_view mnemonic) {
+    const std::string wanted = upper(mnemonic);
+    for (const LasItem& item : items)
+        if (upper(item.mnemonic) == wanted) return &item;
+    return nullptr;
+}
+
+}  // namespace
+
+const LasItem* LasHeader::wellItem(std::string_view mnemonic) const { return find(well, mnemonic); }
+const LasItem* LasHeader::parameter(std::string_view mnemonic) const { return find(parameters, mnemonic); }
+
+bool splitLasItem(std::string_view line, LasItem& item) {
+    // The description follows the last colon (LAS 2.0, section 5.4); a line
+    // without one has no description.
+    std::string_view left = line;
+    std::string_view description;
+    const std::size_t colon = line.rfind(':');
+    if (colon != std::string_view::npos) {
+        left = line.substr(0, colon);
+        description = line.substr(colon + 1);
+    }
+    left = trim(left);
+    // Mnemonic and unit are split by the first '.', except that a mnemonic may
+    // itself end in a dot ("Cond..MS/M", "I. Res..OHM-M"): then the split is
+    // at the second dot of the first "..".
+    std::size_t dot = left.find("..");
+    if (dot != std::string_view::npos)
+        ++dot;
+    else
+        dot = left.find('.');
+    if (dot == std::string_view::npos) return false;
+    item.mnemonic = std::string(trim(left.substr(0, dot)));
+    std::string_view rest = left.substr(dot + 1);
+    std::size_t unitEnd = 0;
+    while (unitEnd < rest.size() && !std::isspace(static_cast<unsigned char>(rest[unitEnd]))) ++unitEnd;
+    item.unit = std::string(rest.substr(0, unitEnd));
+    item.value = std::string(trim(rest.substr(unitEnd)));
+    std::string_view d = trim(description);
+    // LAS 3.0: "{F}" format and "| association" ride in the description.
+    const std::size_t bar = d.find('|');
+    if (bar != std::string_view::npos) d = trim(d.substr(0, bar));
+    item.description = std::string(d);
+    return true;
+}
+
+LasHeader parseLasHeader(std::string_view text, const std::string& file, Diagnostics* diagnostics) {
+    LasHeader header;
+    header.file = file;
+    if (text.size() >= 2 && ((static_cast<unsigned char>(text[0]) == 0xFF && static_cast<unsigned char>(text[1]) == 0xFE) ||
+                             (static_cast<unsigned char>(text[0]) == 0xFE && static_cast<unsigned char>(text[1]) == 0xFF)))
+        throw ParseError(file, 1, 1, "expected LAS text in ASCII or UTF-8, found UTF-16 (convert it first)");
+    if (text.size() >= 3 && text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+
+    auto warn = [&](std::size_t line, std::string message) {
+        if (diagnostics) diagnostics->warn(file, line, std::move(message));
+    };
+
+    Section section = Section::Ignored;
+    bool inData = false;
+    bool seen[7] = {false, false, false, false, false, false, false};
+    bool skipping = false;  // inside a repeated section, ignored
+    bool sawSection = false;
+    std::size_t pos = 0, lineNumber = 0;
+    while (pos < text.size()) {
+        std::size_t end = text.find('\n', pos);
+        if (end == std::string_view::npos) end = text.size();
+        const std::size_t lineStart = pos;
+        std::string_view raw = text.substr(pos, end - pos);
+        pos = end + 1;
+        ++lineNumber;
+        if (!raw.empty() && raw.back() == '\r') raw.remove_suffix(1);
+        const std::string_view line = trim(raw);
+
+        if (!line.empty() && line.front() == '~') {
+            if (inData) {
+                header.dataEnd = lineStart;
+                inData = false;
+            }
+            sawSection = true;
+            section = classify(line);
+            const int index = static_cast<int>(section);
+            skipping = false;
+            if (section == Section::Ignored) {
+                warn(lineNumber, "section '" + std::string(line) + "' is not used by caliper3d; skipped");
+                continue;
+            }
+            if (seen[index]) {
+                warn(lineNumber, "section '" + std::string(line) + "' appears again; the first one is used");
+                skipping = true;
+                continue;
+            }
+            seen[index] = true;
+            if (section == Section::Data) {
+                header.hasData = true;
+                inData = true;
+                header.dataBegin = std::min(pos, text.size());
+                header.dataEnd = text.size();
+                header.dataFirstLine = lineNumber + 1;
+                // "~A DEPTH DT ..." names the columns; LAS 3.0 "~Log_Data | Log_Definition" does not.
+                std::string_view names = line.substr(1);
+                std::size_t first = 0;
+                while (first < names.size() && !std::isspace(static_cast<unsigned char>(names[first]))) ++first;
+                names = names.substr(first);
+                if (names.find('|') == std::string_view::npos) {
+                    std::size_t i = 0;
+                    while (i < names.size()) {
+                        while (i < names.size() && std::isspace(static_cast<unsigned char>(names[i]))) ++i;
+                        std::size_t j = i;
+                        while (j < names.size() && !std::isspace(static_cast<unsigned char>(names[j]))) ++j;
+                        if (j > i) header.dataNames.emplace_back(names.substr(i, j - i));
+                        i = j;
+                    }
+                }
+            }
+            continue;
+        }
+        if (inData || skipping) continue;
+        if (!sawSection) {
+            if (line.empty() || line.front() == '#') continue;
+            throw ParseError(file, lineNumber, 1,
+                             "expected a LAS section such as ~VERSION, found '" +
+                                 std::string(line.substr(0, 40)) + "'");
+        }
+        if (line.empty() || line.front() == '#') continue;
+        if (section == Section::Other) {
+            header.other += std::string(line) + "\n";
+            continue;
+        }
+        if (section == Section::Ignored) continue;
+        LasItem item;
+        item.line = lineNumber;
+        if (!splitLasItem(line, item)) {
+            // Outside ~C a bad line can be skipped safely; inside, every later
+            // column would shift onto the wrong curve.
+            if (section != Section::Curves) {
+                warn(lineNumber, "header line without 'MNEM.UNIT' skipped: '" + std::string(line.substr(0, 60)) + "'");
+                continue;
+            }
+            throw ParseError(file, lineNumber, 1,
+                             "expected a header line 'MNEM.UNIT VALUE : DESCRIPTION', found '" +
+                                 std::string(line.substr(0, 60)) + "'");
+        }
+        switch (section) {
+            case Section::Version: header.versionItems.push_back(item); break;
+            case Section::Well: header.well.push_back(item); break;
+            case Section::Curves: header.curves.push_back(item); break;
+            case Section::Parameters: header.parameters.push_back(item); break;
+            default: break;
+        }
+    }
+    if (!sawSection) throw ParseError(file, 1, 1, "expected a LAS file (sections starting with '~'), found none");
+
+    if (const LasItem* vers = find(header.versionItems, "VERS")) {
+        double v = 0.0;
+        if (parseNumber(vers->value, v)) header.version = v;
+        else warn(vers->line, "VERS '" + vers->value + "' is not a number; reading as LAS 2.0");
+    } else {
+        warn(1, "no VERS item; reading as LAS 2.0");
+    }
+    if (const LasItem* wrap = find(header.versionItems, "WRAP")) header.wrap = upper(wrap->value) == "YES";
+    if (const LasItem* dlm = find(header.versionItems, "DLM")) {
+        const std::string d = upper(dlm->value);
+        if (d == "COMMA") header.delimiter = ',';
+        else if (d == "TAB") header.delimiter = '\t';
+        else if (d == "SPACE" || d.empty()) header.delimiter = ' ';
+        else throw ParseError(file, dlm->line, 1, "expected DLM SPACE, TAB or COMMA, found '" + dlm->value + "'");
+    }
+    if (const LasItem* null = header.wellItem("NULL")) {
+        double v = 0.0;
+        if (parseNumber(null->value, v)) {
+            header.hasNull = true;
+            header.null = v;
+        } else if (!null->value.empty()) {
+            warn(null->line, "NULL '" + null->value + "' is not a number; using the common null values");
+        }
+    }
+    return header;
+}
+
+}  // namespace caliper3d::io

@@ -1,0 +1,224 @@
+#include "io/las_reader.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <limits>
+
+#include "io/number_parsing.h"
+#include "io/parse_error.h"
+
+namespace caliper3d::io {
+
+namespace {
+
+constexpr double kNull = std::numeric_limits<double>::quiet_NaN();
+
+std::string upper(std::string_view s) {
+    std::string out(s);
+    std::transform(out.begin(), out.end(), out.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    return out;
+}
+
+bool allOf(std::string_view s, char c) {
+    return !s.empty() && std::all_of(s.begin(), s.end(), [c](char x) { return x == c; });
+}
+
+bool isCommonNullNumber(double v) {
+    static const double kCommon[] = {-999.25, 999.25, -9999.25, 9999.25, -9999.0, 9999.0, -999.0};
+    for (double c : kCommon)
+        if (v == c) return true;
+    return false;
+}
+
+// Splits a data line into tokens: runs of blanks, or commas (LAS 3.0 DLM COMMA).
+void tokenize(std::string_view line, char delimiter, std::vector<std::string_view>& tokens,
+              std::vector<std::size_t>& columns) {
+    tokens.clear();
+    columns.clear();
+    auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
+    if (delimiter == ',') {
+        std::size_t start = 0;
+        while (start <= line.size()) {
+            std::size_t end = line.find(',', start);
+            if (end == std::string_view::npos) end = line.size();
+            std::size_t a = start, b = end;
+            while (a < b && blank(line[a])) ++a;
+            while (b > a && blank(line[b - 1])) --b;
+            tokens.push_back(line.substr(a, b - a));
+            columns.push_back(a + 1);
+            start = end + 1;
+        }
+        return;
+    }
+    std::size_t i = 0;
+    while (i < line.size()) {
+        while (i < line.size() && blank(line[i])) ++i;
+        if (i == line.size()) break;
+        std::size_t j = i;
+        while (j < line.size() && !blank(line[j])) ++j;
+        tokens.push_back(line.substr(i, j - i));
+        columns.push_back(i + 1);
+        i = j;
+    }
+}
+
+void splitArrayName(LasCurve& curve) {
+    const std::size_t open = curve.mnemonic.find('[');
+    const std::size_t close = curve.mnemonic.find(']', open == std::string::npos ? 0 : open);
+    if (open == std::string::npos || close == std::string::npos || close <= open + 1) return;
+    double index = 0;
+    if (!parseNumber(std::string_view(curve.mnemonic).substr(open + 1, close - open - 1), index)) return;
+    curve.arrayName = curve.mnemonic.substr(0, open);
+    curve.arrayIndex = static_cast<int>(index);
+}
+
+}  // namespace
+
+bool isNullToken(std::string_view token, NullPolicy policy) {
+    if (allOf(token, '*')) return true;  // Fortran field overflow
+    if (policy == NullPolicy::Declared) return false;
+    if (allOf(token, '-')) return true;
+    const std::string u = upper(token);
+    return u == "ERR" || u == "ERROR" || u == "NAN" || u == "NULL" || u == "N/A";
+}
+
+LasLog readLas(std::string_view text, const std::string& file, const LasReadOptions& options,
+               Diagnostics* diagnostics) {
+    LasLog log;
+    log.header = parseLasHeader(text, file, diagnostics);
+    const LasHeader& h = log.header;
+    auto warn = [&](std::size_t line, std::string message) {
+        if (diagnostics) diagnostics->warn(file, line, std::move(message));
+    };
+    if (h.curves.empty()) throw ParseError(file, 0, 0, "expected a ~C (curve information) section, found none");
+    if (!h.hasData) throw ParseError(file, 0, 0, "expected a ~A (data) section, found none");
+
+    for (const LasItem& item : h.curves) {
+        LasCurve curve;
+        curve.mnemonic = item.mnemonic;
+        curve.unit = item.unit;
+        curve.description = item.description;
+        curve.text = item.description.find("{S}") != std::string::npos;
+        splitArrayName(curve);
+        log.curves.push_back(std::move(curve));
+    }
+    // Duplicated mnemonics stay as separate curves, renamed NAME:2, NAME:3 (as lasio does).
+    for (std::size_t i = 0; i < log.curves.size(); ++i) {
+        int copies = 1;
+        for (std::size_t j = i + 1; j < log.curves.size(); ++j) {
+            if (upper(log.curves[j].mnemonic) == upper(log.curves[i].mnemonic) &&
+                log.curves[j].mnemonic.find(':') == std::string::npos) {
+                warn(h.curves[j].line, "curve '" + log.curves[j].mnemonic + "' is declared again; read as '" +
+                                           log.curves[j].mnemonic + ":" + std::to_string(copies + 1) + "'");
+                log.curves[j].mnemonic += ":" + std::to_string(++copies);
+            }
+        }
+    }
+    for (std::size_t i = 0; i < log.curves.size(); ++i)
+        if (log.curves[i].text) warn(h.curves[i].line, "curve '" + log.curves[i].mnemonic + "' holds text; skipped");
+
+    const std::size_t declared = log.curves.size();
+    std::size_t columns = declared;  // values per row, settled on the first row
+    bool settled = false;
+    std::vector<std::string_view> tokens;
+    std::vector<std::size_t> tokenColumns;
+    std::vector<double> row;
+    row.reserve(declared);
+    std::size_t rowLine = 0;
+
+    auto storeRow = [&]() {
+        for (std::size_t c = 0; c < declared; ++c) log.curves[c].values.push_back(c < row.size() ? row[c] : kNull);
+        row.clear();
+    };
+    auto valueOf = [&](std::string_view token, std::size_t curve, std::size_t lineNo, std::size_t column) {
+        LasCurve& target = log.curves[curve];
+        if (target.text) return kNull;
+        double v = 0.0;
+        if (parseNumber(token, v)) {
+            if (curve > 0 && ((h.hasNull && v == h.null) ||
+                              (options.nullPolicy == NullPolicy::Common && isCommonNullNumber(v)))) {
+                ++target.nulls;
+                return kNull;
+            }
+            return v;
+        }
+        if (curve > 0 && isNullToken(token, options.nullPolicy)) {
+            ++target.nulls;
+            return kNull;
+        }
+        throw ParseError(file, lineNo, column,
+                         "expected a number for curve " + target.mnemonic + ", found '" + std::string(token) + "'");
+    };
+
+    std::size_t pos = h.dataBegin, lineNumber = h.dataFirstLine - 1;
+    const std::string_view data = text.substr(0, h.dataEnd);
+    while (pos < data.size()) {
+        std::size_t end = data.find('\n', pos);
+        if (end == std::string_view::npos) end = data.size();
+        std::string_view line = data.substr(pos, end - pos);
+        const bool lastLine = end >= data.size() || data.find_first_not_of(" \t\r\n", end) == std::string_view::npos;
+        pos = end + 1;
+        ++lineNumber;
+        tokenize(line, h.delimiter, tokens, tokenColumns);
+        if (tokens.empty() || (tokens.size() == 1 && tokens[0].empty())) continue;
+        if (tokens.front().size() > 0 && tokens.front().front() == '#') continue;
+
+        if (h.wrap) {
+            if (row.empty()) rowLine = lineNumber;
+            for (std::size_t t = 0; t < tokens.size(); ++t) {
+                if (row.size() == declared)
+                    throw ParseError(file, lineNumber, tokenColumns[t],
+                                     "expected " + std::to_string(declared) + " values per depth in wrapped data, found more");
+                row.push_back(valueOf(tokens[t], row.size(), lineNumber, tokenColumns[t]));
+            }
+            if (row.size() == declared) storeRow();
+            continue;
+        }
+
+        if (!settled) {
+            settled = true;
+            columns = tokens.size();
+            if (columns > declared)
+                throw ParseError(file, lineNumber, tokenColumns[declared],
+                                 "expected " + std::to_string(declared) + " values (one per ~C curve), found " +
+                                     std::to_string(columns));
+            if (columns < declared) {
+                std::string missing;
+                for (std::size_t c = columns; c < declared; ++c) missing += (missing.empty() ? "" : ", ") + log.curves[c].mnemonic;
+                warn(lineNumber, std::to_string(declared) + " curves declared but rows hold " + std::to_string(columns) +
+                                     " values; no data for " + missing);
+            }
+        }
+        if (tokens.size() > columns)
+            throw ParseError(file, lineNumber, tokenColumns[columns],
+                             "expected " + std::to_string(columns) + " values, found " + std::to_string(tokens.size()));
+        if (tokens.size() < columns) {
+            if (allOf(tokens.back(), '*')) {
+                // An overflowed field ran into the next ones: they are unknown, not lost.
+                warn(lineNumber, "field overflow ('" + std::string(tokens.back()) + "') covers the last " +
+                                     std::to_string(columns - tokens.size() + 1) + " values; read as null");
+            } else if (lastLine) {
+                warn(lineNumber, "last line holds " + std::to_string(tokens.size()) + " of " + std::to_string(columns) +
+                                     " values (truncated file?); skipped");
+                break;
+            } else {
+                throw ParseError(file, lineNumber, 0,
+                                 "expected " + std::to_string(columns) + " values, found " + std::to_string(tokens.size()));
+            }
+        }
+        for (std::size_t t = 0; t < tokens.size(); ++t) row.push_back(valueOf(tokens[t], t, lineNumber, tokenColumns[t]));
+        while (row.size() < columns) {
+            ++log.curves[row.size()].nulls;
+            row.push_back(kNull);
+        }
+        storeRow();
+    }
+    if (h.wrap && !row.empty())
+        warn(rowLine, "last depth holds " + std::to_string(row.size()) + " of " + std::to_string(declared) +
+                          " wrapped values (truncated file?); skipped");
+    return log;
+}
+
+}  // namespace caliper3d::io

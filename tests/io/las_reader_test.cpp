@@ -1,0 +1,97 @@
+#include "io/las_reader.h"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "io/parse_error.h"
+
+using namespace caliper3d::io;
+
+namespace {
+const char kHeader[] =
+    "~Version\n VERS. 2.0 : v\n WRAP. NO : w\n~Well\n NULL. -999.25 : null\n~Curve\n"
+    " DEPT.M : depth\n GR.GAPI : gamma\n CALI.IN : caliper\n";
+}
+
+TEST(LasReaderTest, ReadsValuesAndCountsDeclaredAndCommonNulls) {
+    const std::string text = std::string(kHeader) + "~A\n100.0 50.5 8.5\n100.5 -999.25 ERR\n101.0 -9999 ---\n";
+    const LasLog log = readLas(text, "t.las", {}, nullptr);
+    ASSERT_EQ(log.rowCount(), 3u);
+    EXPECT_DOUBLE_EQ(log.curves[1].values[0], 50.5);
+    EXPECT_TRUE(std::isnan(log.curves[1].values[1]));
+    EXPECT_TRUE(std::isnan(log.curves[1].values[2]));
+    EXPECT_TRUE(std::isnan(log.curves[2].values[1]));
+    EXPECT_TRUE(std::isnan(log.curves[2].values[2]));
+    EXPECT_EQ(log.curves[1].nulls, 2u);
+    EXPECT_EQ(log.curves[2].nulls, 2u);
+}
+
+TEST(LasReaderTest, DeclaredNullPolicyRefusesTextNullsAndKeepsOtherNumbers) {
+    LasReadOptions options;
+    options.nullPolicy = NullPolicy::Declared;
+    const std::string numbers = std::string(kHeader) + "~A\n100.0 -9999 9999\n";
+    const LasLog log = readLas(numbers, "t.las", options, nullptr);
+    EXPECT_DOUBLE_EQ(log.curves[1].values[0], -9999.0);
+    EXPECT_DOUBLE_EQ(log.curves[2].values[0], 9999.0);
+    const std::string err = std::string(kHeader) + "~A\n100.0 ERR 1\n";
+    try {
+        readLas(err, "e.las", options, nullptr);
+        FAIL();
+    } catch (const ParseError& e) {
+        EXPECT_EQ(e.line(), 11u);
+        EXPECT_EQ(e.column(), 7u);
+        EXPECT_NE(std::string(e.what()).find("expected a number for curve GR, found 'ERR'"), std::string::npos);
+    }
+}
+
+TEST(LasReaderTest, EveryCommonNullTokenIsNull) {
+    for (const char* token : {"ERR", "err", "ERROR", "NaN", "NULL", "N/A", "-", "---", "****"})
+        EXPECT_TRUE(isNullToken(token, NullPolicy::Common)) << token;
+    EXPECT_TRUE(isNullToken("***", NullPolicy::Declared));
+    EXPECT_FALSE(isNullToken("ERR", NullPolicy::Declared));
+    EXPECT_FALSE(isNullToken("12", NullPolicy::Common));
+    for (const char* number : {"-999.25", "999.25", "-9999.25", "9999.25", "-9999", "9999", "-999"}) {
+        const std::string text = std::string(kHeader) + "~A\n1 " + number + " 2\n";
+        EXPECT_TRUE(std::isnan(readLas(text, "n.las", {}, nullptr).curves[1].values[0])) << number;
+    }
+}
+
+TEST(LasReaderTest, WrappedRowsSpanLinesAndTruncatedLastRowIsCounted) {
+    const std::string text =
+        "~V\n VERS. 2.0 :\n WRAP. YES :\n~C\n DEPT.M :\n A. :\n B. :\n C. :\n~A\n1\n 2 3\n 4\n2\n 5 6\n";
+    Diagnostics d;
+    const LasLog log = readLas(text, "w.las", {}, &d);
+    ASSERT_EQ(log.rowCount(), 1u);
+    EXPECT_DOUBLE_EQ(log.curves[3].values[0], 4.0);
+    EXPECT_EQ(d.warningCount, 1u);
+    EXPECT_EQ(d.warnings[0].line, 13u);
+}
+
+TEST(LasReaderTest, TruncatedLastLineIsSkippedWithAWarningButAShortLineInsideIsAnError) {
+    const std::string last = std::string(kHeader) + "~A\n1 2 3\n2 3\n";
+    Diagnostics d;
+    EXPECT_EQ(readLas(last, "l.las", {}, &d).rowCount(), 1u);
+    EXPECT_EQ(d.warningCount, 1u);
+    const std::string inside = std::string(kHeader) + "~A\n1 2 3\n2 3\n3 4 5\n";
+    try {
+        readLas(inside, "i.las", {}, nullptr);
+        FAIL();
+    } catch (const ParseError& e) {
+        EXPECT_EQ(e.line(), 12u);
+        EXPECT_NE(std::string(e.what()).find("expected 3 values, found 2"), std::string::npos);
+    }
+}
+
+TEST(LasReaderTest, DuplicatedMnemonicsAreRenamedAndTextColumnsSkipped) {
+    const std::string text =
+        "~V\n VERS. 3.0 :\n DLM. COMMA :\n~Log_Definition\n DEPT.M : {F}\n GR.GAPI : {F}\n GR.GAPI : {F}\n"
+        " NOTE. : remark {S}\n~Log_Data\n1.0, 10, 20, hello\n";
+    Diagnostics d;
+    const LasLog log = readLas(text, "d.las", {}, &d);
+    EXPECT_EQ(log.curves[2].mnemonic, "GR:2");
+    EXPECT_DOUBLE_EQ(log.curves[2].values[0], 20.0);
+    EXPECT_TRUE(log.curves[3].text);
+    EXPECT_TRUE(std::isnan(log.curves[3].values[0]));
+    EXPECT_EQ(d.warningCount, 2u);
+}
