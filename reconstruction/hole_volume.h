@@ -1,0 +1,31 @@
+#pragma once
+
+#include <vector>
+
+namespace caliper3d::reconstruction {
+
+// Hole and cement volumes over [top_m, bottom_m] (measured depth), by the
+// trapezoid rule along the hole on section areas (perpendicular to the hole
+// axis, so the integral along MD is the volume).
+struct VolumeOptions {
+    double top_m = -1e300;          // interval; clipped to the sections
+    double bottom_m = 1e300;
+    double casingOd_mm = 0.0;       // casing outer diameter; 0 = open hole only
+    double excess = 0.0;            // cement excess as a fraction (0.3 = 30 %)
+};
+struct HoleVolume {
+    double top_m = 0.0, bottom_m = 0.0;
+    double hole_m3 = 0.0;           // from the true section areas
+    double gaugeHole_m3 = 0.0;      // from the bit size (nominal hole)
+    double annulus_m3 = 0.0;        // true hole minus casing
+    double gaugeAnnulus_m3 = 0.0;   // bit-size hole minus casing
+    double cement_m3 = 0.0;         // annulus * (1 + excess)
+    double gaugeCement_m3 = 0.0;    // gaugeAnnulus * (1 + excess)
+};
+
+// md ascending; area_mm2 and bit_mm one per section (bit NaN: the section
+// adds nothing to the gauge volumes).
+HoleVolume holeVolume(const std::vector<double>& md_m, const std::vector<double>& area_mm2,
+                      const std::vector<double>& bit_mm, const VolumeOptions& options);
+
+}  // namespace caliper3d::reconstruction
