@@ -67,6 +67,8 @@ const LasItem* find(const std::vector<LasItem>& items, std::string_view mnemonic
 
 }  // namespace
 
+bool isLasDataTitle(std::string_view title) { return classify(title) == Section::Data; }
+
 const LasItem* LasHeader::wellItem(std::string_view mnemonic) const { return find(well, mnemonic); }
 const LasItem* LasHeader::parameter(std::string_view mnemonic) const { return find(parameters, mnemonic); }
 

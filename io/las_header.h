@@ -50,6 +50,10 @@ struct LasHeader {
 // repairs (duplicated sections, unusual order, unknown sections) in `diagnostics`.
 LasHeader parseLasHeader(std::string_view text, const std::string& file, Diagnostics* diagnostics);
 
+// True for a section title that starts the log data: "~A ...", "~ASCII",
+// "~Log_Data | Log_Definition" (the line trimmed, starting with '~').
+bool isLasDataTitle(std::string_view title);
+
 // Splits one header line into its parts (exposed for tests). Returns false
 // for a line that has no '.' separating mnemonic and unit.
 bool splitLasItem(std::string_view line, LasItem& item);

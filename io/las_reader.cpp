@@ -25,13 +25,6 @@ bool allOf(std::string_view s, char c) {
     return !s.empty() && std::all_of(s.begin(), s.end(), [c](char x) { return x == c; });
 }
 
-bool isCommonNullNumber(double v) {
-    static const double kCommon[] = {-999.25, 999.25, -9999.25, 9999.25, -9999.0, 9999.0, -999.0};
-    for (double c : kCommon)
-        if (v == c) return true;
-    return false;
-}
-
 // Splits a data line into tokens: runs of blanks, or commas (LAS 3.0 DLM COMMA).
 void tokenize(std::string_view line, char delimiter, std::vector<std::string_view>& tokens,
               std::vector<std::size_t>& columns) {
@@ -76,6 +69,37 @@ void splitArrayName(LasCurve& curve) {
 
 }  // namespace
 
+bool isCommonNullNumber(double v) {
+    // Cheap rejection first: this runs on every value of a large log.
+    if (v > -999.0 && v < 999.25) return false;
+    return v == -999.25 || v == 999.25 || v == -9999.25 || v == 9999.25 || v == -9999.0 || v == 9999.0 ||
+           v == -999.0;
+}
+
+std::vector<ColumnSpec> lasColumns(const LasHeader& h, Diagnostics* diagnostics) {
+    auto warn = [&](std::size_t line, std::string message) {
+        if (diagnostics) diagnostics->warn(h.file, line, std::move(message));
+    };
+    std::vector<ColumnSpec> columns;
+    for (const LasItem& item : h.curves)
+        columns.push_back({item.mnemonic, item.unit, item.description,
+                           item.description.find("{S}") != std::string::npos, item.line});
+    for (std::size_t i = 0; i < columns.size(); ++i) {
+        int copies = 1;
+        for (std::size_t j = i + 1; j < columns.size(); ++j) {
+            if (upper(columns[j].mnemonic) == upper(columns[i].mnemonic) &&
+                columns[j].mnemonic.find(':') == std::string::npos) {
+                warn(columns[j].line, "curve '" + columns[j].mnemonic + "' is declared again; read as '" +
+                                          columns[j].mnemonic + ":" + std::to_string(copies + 1) + "'");
+                columns[j].mnemonic += ":" + std::to_string(++copies);
+            }
+        }
+    }
+    for (const ColumnSpec& c : columns)
+        if (c.text) warn(c.line, "curve '" + c.mnemonic + "' holds text; skipped");
+    return columns;
+}
+
 bool isNullToken(std::string_view token, NullPolicy policy) {
     if (allOf(token, '*')) return true;  // Fortran field overflow
     if (policy == NullPolicy::Declared) return false;
@@ -95,30 +119,15 @@ LasLog readLas(std::string_view text, const std::string& file, const LasReadOpti
     if (h.curves.empty()) throw ParseError(file, 0, 0, "expected a ~C (curve information) section, found none");
     if (!h.hasData) throw ParseError(file, 0, 0, "expected a ~A (data) section, found none");
 
-    for (const LasItem& item : h.curves) {
+    for (const ColumnSpec& spec : lasColumns(h, diagnostics)) {
         LasCurve curve;
-        curve.mnemonic = item.mnemonic;
-        curve.unit = item.unit;
-        curve.description = item.description;
-        curve.text = item.description.find("{S}") != std::string::npos;
+        curve.mnemonic = spec.mnemonic;
+        curve.unit = spec.unit;
+        curve.description = spec.description;
+        curve.text = spec.text;
         splitArrayName(curve);
         log.curves.push_back(std::move(curve));
     }
-    // Duplicated mnemonics stay as separate curves, renamed NAME:2, NAME:3 (as lasio does).
-    for (std::size_t i = 0; i < log.curves.size(); ++i) {
-        int copies = 1;
-        for (std::size_t j = i + 1; j < log.curves.size(); ++j) {
-            if (upper(log.curves[j].mnemonic) == upper(log.curves[i].mnemonic) &&
-                log.curves[j].mnemonic.find(':') == std::string::npos) {
-                warn(h.curves[j].line, "curve '" + log.curves[j].mnemonic + "' is declared again; read as '" +
-                                           log.curves[j].mnemonic + ":" + std::to_string(copies + 1) + "'");
-                log.curves[j].mnemonic += ":" + std::to_string(++copies);
-            }
-        }
-    }
-    for (std::size_t i = 0; i < log.curves.size(); ++i)
-        if (log.curves[i].text) warn(h.curves[i].line, "curve '" + log.curves[i].mnemonic + "' holds text; skipped");
-
     const std::size_t declared = log.curves.size();
     std::size_t columns = declared;  // values per row, settled on the first row
     bool settled = false;

@@ -6,16 +6,11 @@
 #include <vector>
 
 #include "io/diagnostics.h"
+#include "io/curve_plan.h"
 #include "io/las_header.h"
+#include "io/read_options.h"
 
 namespace caliper3d::io {
-
-// Which values mean "no reading" in a LAS data section. Never applied to the
-// depth index (index_null.las holds a real depth equal to its NULL value).
-enum class NullPolicy {
-    Declared,  // the header's NULL only, plus text overflow ("****")
-    Common     // also -999.25, 999.25, +-9999.25, +-9999, -999, ERR, NaN, dashes
-};
 
 struct LasReadOptions {
     NullPolicy nullPolicy = NullPolicy::Common;
@@ -44,6 +39,14 @@ struct LasLog {
 // repaired fields in `diagnostics`.
 LasLog readLas(std::string_view text, const std::string& file, const LasReadOptions& options,
                Diagnostics* diagnostics);
+
+// The ~C curves as data columns: a duplicated mnemonic is renamed NAME:2,
+// NAME:3 (as lasio does) and a LAS 3.0 string column ({S}) is marked text;
+// both are noted in `diagnostics`.
+std::vector<ColumnSpec> lasColumns(const LasHeader& header, Diagnostics* diagnostics);
+
+// True for -999.25, 999.25, +-9999.25, +-9999 and -999: nulls under NullPolicy::Common.
+bool isCommonNullNumber(double v);
 
 // True for a token that means "no value" under `policy` (declared NULL aside).
 bool isNullToken(std::string_view token, NullPolicy policy);

@@ -1,0 +1,172 @@
+#include "io/curve_plan.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+#include "io/number_parsing.h"
+#include "io/parse_error.h"
+
+namespace caliper3d::io {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::string upper(std::string_view s) {
+    std::string out(s);
+    std::transform(out.begin(), out.end(), out.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    return out;
+}
+
+}  // namespace
+
+double angleScaleOf(const std::string& unit) {
+    const std::string u = upper(unit);
+    if (u.empty() || u == "DEG" || u == "DEGA" || u == "DEGREES" || u == "DEGREE" || u == "\xC2\xB0") return 1.0;
+    if (u == "RAD" || u == "RADIANS") return 180.0 / kPi;
+    return std::nan("");
+}
+
+SectionTable CurvePlan::emptyTable(const std::vector<ColumnSpec>& columns) const {
+    SectionTable t;
+    t.armCount = armCount;
+    for (int c : extraColumns) {
+        const ColumnSpec& spec = columns[static_cast<std::size_t>(c)];
+        t.extraCurves.push_back({spec.mnemonic, spec.unit, spec.description, {}});
+    }
+    return t;
+}
+
+void CurvePlan::mapRow(const double* raw, SectionTable& out) const {
+    out.depth_m.push_back(raw[depthColumn] * depthScale);
+    for (int k = 0; k < armCount; ++k)
+        out.radius_mm.push_back(raw[armColumn[static_cast<std::size_t>(k)]] * armScale[static_cast<std::size_t>(k)]);
+    std::vector<double>* angles[4] = {&out.p1az_deg, &out.devi_deg, &out.hazi_deg, &out.rb_deg};
+    for (int a = 0; a < 4; ++a)
+        if (angleColumn[a] >= 0) angles[a]->push_back(raw[angleColumn[a]] * angleScale[a]);
+    if (bitSizeColumn >= 0) out.bitSize_mm.push_back(raw[bitSizeColumn] * bitSizeScale);
+    else if (!std::isnan(bitSizeConstant)) out.bitSize_mm.push_back(bitSizeConstant);
+    for (std::size_t e = 0; e < extraColumns.size(); ++e)
+        out.extraCurves[e].values.push_back(raw[extraColumns[e]]);
+}
+
+CurvePlan makeCurvePlan(const std::vector<ColumnSpec>& columns, const LasHeader* header,
+                        const ReadOptions& options, const std::string& file, LogInfo& info,
+                        Diagnostics& diagnostics) {
+    CurvePlan plan;
+    std::vector<std::string> names;
+    for (const ColumnSpec& c : columns) names.push_back(c.mnemonic);
+    CurveRoles roles;
+    try {
+        roles = assignRoles(names, options.roles);
+    } catch (const std::invalid_argument& e) {
+        throw ParseError(file, 0, 0, e.what());
+    }
+    auto spec = [&](int c) -> const ColumnSpec& { return columns[static_cast<std::size_t>(c)]; };
+
+    // Depth, in its own unit or STRT's.
+    plan.depthColumn = roles.depth;
+    const ColumnSpec& depth = spec(roles.depth);
+    std::string depthUnitText = depth.unit;
+    if (depthUnitText.empty() && header)
+        if (const LasItem* strt = header->wellItem("STRT")) depthUnitText = strt->unit;
+    info.depthUnit = depthUnitText;
+    std::optional<LengthUnit> depthUnit = options.depthUnit ? options.depthUnit : parseLengthUnit(depthUnitText);
+    if (!depthUnit) {
+        if (!depthUnitText.empty())
+            throw ParseError(file, depth.line, 0,
+                             "expected a depth unit M or FT for " + depth.mnemonic + ", found '" + depthUnitText +
+                                 "' (or give --depth-unit)");
+        diagnostics.warn(file, depth.line, "depth has no unit; read as metres (give --depth-unit to change)");
+        depthUnit = LengthUnit::Metre;
+    }
+    plan.depthScale = toMetres(*depthUnit);
+    for (std::size_t c = 0; c < columns.size(); ++c)
+        if (static_cast<int>(c) != roles.depth && guessRole(columns[c].mnemonic).role == CurveRole::Depth &&
+            !columns[c].text)
+            plan.otherDepthColumns.push_back(static_cast<int>(c));
+
+    auto lengthScale = [&](int c) {
+        if (options.radiusUnit) return toMillimetres(*options.radiusUnit);
+        if (auto u = parseLengthUnit(spec(c).unit)) return toMillimetres(*u);
+        throw ParseError(file, spec(c).line, 0,
+                         "expected a length unit IN, MM or CM for caliper curve " + spec(c).mnemonic + ", found '" +
+                             spec(c).unit + "' (or give --radius-unit)");
+    };
+
+    if (!roles.radii.empty()) {
+        info.armSource = "radii";
+        for (int c : roles.radii) {
+            plan.armColumn.push_back(c);
+            plan.armScale.push_back(lengthScale(c));
+            info.armSource += " " + spec(c).mnemonic;
+        }
+    } else if (!roles.diameters.empty()) {
+        // Opposite-pad diameters: pad k and pad k + n/2 share diameter C((k-1) mod n/2 + 1)
+        // (C1 = pads 1-3, C2 = pads 2-4 on four-arm tools); each is taken as two equal radii.
+        const int pairs = static_cast<int>(roles.diameters.size());
+        for (int k = 0; k < 2 * pairs; ++k) {
+            const int c = roles.diameters[static_cast<std::size_t>(k % pairs)];
+            plan.armColumn.push_back(c);
+            plan.armScale.push_back(lengthScale(c) / 2.0);
+        }
+        info.armSource = "diameters";
+        for (int c : roles.diameters) info.armSource += " " + spec(c).mnemonic;
+        info.armSource += " (pad pairs; the tool is taken as centred)";
+        diagnostics.warn(file, spec(roles.diameters.front()).line,
+                         "radii from opposite-pad diameters: each pad pair is taken as centred on the tool");
+    } else {
+        info.armSource = "none: no caliper curves found (name them with --radii or --diameters)";
+    }
+    plan.armCount = static_cast<int>(plan.armColumn.size());
+    if (plan.armCount > 0 && plan.armCount < 3)
+        throw ParseError(file, 0, 0, "expected at least 3 arm radii, found " + std::to_string(plan.armCount));
+
+    const int angleRoles[4] = {roles.padAzimuth, roles.deviation, roles.holeAzimuth, roles.relativeBearing};
+    for (int a = 0; a < 4; ++a) {
+        const int c = angleRoles[a];
+        if (c < 0) continue;
+        const double scale = angleScaleOf(spec(c).unit);
+        if (!std::isfinite(scale))
+            throw ParseError(file, spec(c).line, 0,
+                             "expected an angle unit DEG or RAD for " + spec(c).mnemonic + ", found '" + spec(c).unit +
+                                 "'");
+        plan.angleColumn[a] = c;
+        plan.angleScale[a] = scale;
+    }
+
+    if (options.bitSize_mm) {
+        plan.bitSizeConstant = *options.bitSize_mm;
+    } else if (roles.bitSize >= 0) {
+        plan.bitSizeColumn = roles.bitSize;
+        plan.bitSizeScale = lengthScale(roles.bitSize);
+    } else if (header) {
+        for (const char* name : {"BS", "BIT", "BITSIZE", "BIT_SIZE"}) {
+            const LasItem* bs = header->parameter(name);
+            if (!bs) bs = header->wellItem(name);
+            double v = 0.0;
+            if (!bs || !parseNumber(bs->value, v)) continue;
+            const auto unit = parseLengthUnit(bs->unit);
+            if (!unit) {
+                diagnostics.warn(file, bs->line, "bit size " + bs->value + " has no length unit; ignored");
+                break;
+            }
+            plan.bitSizeConstant = v * toMillimetres(*unit);
+            break;
+        }
+    }
+    info.bitSize_mm = plan.bitSizeConstant;
+
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+        const ColumnSpec& col = columns[c];
+        const CurveRole role = roles.roleOf(static_cast<int>(c));
+        info.curves.push_back({col.mnemonic, col.unit, col.text ? "text (skipped)" : std::string(roleName(role)), 0});
+        if (role == CurveRole::Other && !col.text && guessRole(col.mnemonic).role != CurveRole::Depth)
+            plan.extraColumns.push_back(static_cast<int>(c));
+    }
+    return plan;
+}
+
+}  // namespace caliper3d::io

@@ -1,0 +1,38 @@
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "io/diagnostics.h"
+#include "io/section_table.h"
+
+namespace caliper3d::io {
+
+// One curve as `caliper3d info` lists it.
+struct CurveInfo {
+    std::string mnemonic;
+    std::string unit;
+    std::string role;
+    std::size_t nulls = 0;
+};
+
+// What `caliper3d info` prints about a log.
+struct LogInfo {
+    std::string file;
+    std::string format;       // "LAS 2.0", "column text (depth R1..R6 P1AZ DEVI HAZI)", ...
+    std::string wellName;
+    std::string depthUnit;    // as written in the file
+    std::size_t rows = 0;     // sections read
+    double top_m = 0.0;
+    double bottom_m = 0.0;
+    double step_m = 0.0;      // median step
+    int arms = 0;
+    std::string armSource;    // "radii R1..R6", "diameters C1, C2", ...
+    double bitSize_mm = kNaN;
+    std::vector<CurveInfo> curves;
+    Diagnostics diagnostics;
+    bool cancelled = false;   // the read was stopped by its cancellation token
+};
+
+}  // namespace caliper3d::io

@@ -1,0 +1,39 @@
+#pragma once
+
+#include <optional>
+
+#include "io/curve_roles.h"
+#include "io/units.h"
+
+namespace caliper3d::io {
+
+// Which values mean "no reading" in a LAS data section. Never applied to the
+// depth index (index_null.las holds a real depth equal to its NULL value).
+enum class NullPolicy {
+    Declared,  // the header's NULL only, plus text overflow ("****")
+    Common     // also -999.25, 999.25, +-9999.25, +-9999, -999, ERR, NaN, dashes
+};
+
+// What to do with a row whose depth goes back up in a log recorded downwards
+// (a log recorded upwards as a whole is always sorted, with a warning).
+enum class DepthOrder {
+    SkipBackwards,  // the row is skipped, counted in one warning
+    Reject          // ParseError at the first such row
+};
+
+// How to read a caliper log of any supported format. Every lenient behaviour
+// is a named option here with its default.
+struct ReadOptions {
+    int armCount = 6;                       // column text: radii per line
+    std::optional<LengthUnit> depthUnit;    // overrides the file's (column text default: metres)
+    std::optional<LengthUnit> radiusUnit;   // overrides the file's (column text default: inches,
+                                            //   millimetres when inches would be implausible)
+    bool allowRadiiOnly = true;             // column text of radii only: depth = row x rowStep_m
+    double rowStep_m = 0.01;                // column text with radii only: depth step per row
+    NullPolicy nullPolicy = NullPolicy::Common;
+    DepthOrder depthOrder = DepthOrder::SkipBackwards;
+    RoleOverrides roles;
+    std::optional<double> bitSize_mm;       // overrides the file's BS
+};
+
+}  // namespace caliper3d::io
