@@ -1,0 +1,95 @@
+#include "io/las_writer.h"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+#include <vector>
+
+namespace caliper3d::io {
+
+namespace {
+
+void put(std::string& line, double value, double null) {
+    char buffer[32];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, std::isfinite(value) ? value : null);
+    line.append(buffer, result.ptr);
+}
+
+struct Column {
+    std::string mnemonic;
+    std::string unit;
+    std::string description;
+    const std::vector<double>* values;  // nullptr: radius column `arm`
+    int arm = 0;
+};
+
+void item(std::ostream& out, const std::string& mnemonic, const std::string& unit, const std::string& value,
+          const std::string& description) {
+    std::string left = " " + mnemonic + "." + unit;
+    if (left.size() < 16) left.resize(16, ' ');
+    std::string middle = " " + value;
+    if (middle.size() < 24) middle.resize(24, ' ');
+    out << left << middle << " : " << description << "\n";
+}
+
+}  // namespace
+
+void writeLas(std::ostream& out, const SectionTable& t, const LasWriteOptions& options) {
+    const std::size_t rows = t.rowCount();
+    std::vector<Column> columns;
+    columns.push_back({"DEPT", "M", "measured depth", &t.depth_m, 0});
+    for (int k = 1; k <= t.armCount; ++k)
+        columns.push_back({"R" + std::to_string(k), "MM", "radius of arm " + std::to_string(k), nullptr, k});
+    const struct {
+        const char* mnemonic;
+        const char* unit;
+        const char* description;
+        const std::vector<double>* values;
+    } optional[] = {{"P1AZ", "DEG", "pad 1 azimuth", &t.p1az_deg},      {"DEVI", "DEG", "deviation", &t.devi_deg},
+                    {"HAZI", "DEG", "hole azimuth", &t.hazi_deg},       {"RB", "DEG", "relative bearing", &t.rb_deg},
+                    {"BS", "MM", "bit size", &t.bitSize_mm}};
+    for (const auto& o : optional)
+        if (o.values->size() == rows && rows > 0) columns.push_back({o.mnemonic, o.unit, o.description, o.values, 0});
+    for (const ExtraCurve& e : t.extraCurves)
+        if (e.values.size() == rows) columns.push_back({e.mnemonic, e.unit, e.description, &e.values, 0});
+
+    std::string text;
+    auto number = [&](double v) {
+        text.clear();
+        put(text, v, options.null);
+        return text;
+    };
+    out << "~Version information\n";
+    item(out, "VERS", "", "2.0", "CWLS log ASCII standard - version 2.0");
+    item(out, "WRAP", "", "NO", "one line per depth step");
+    out << "~Well information\n";
+    item(out, "STRT", "M", rows ? number(t.depth_m.front()) : "0", "start depth");
+    item(out, "STOP", "M", rows ? number(t.depth_m.back()) : "0", "stop depth");
+    item(out, "STEP", "M", rows > 1 ? number(t.depth_m[1] - t.depth_m[0]) : "0", "step");
+    item(out, "NULL", "", number(options.null), "null value");
+    item(out, "WELL", "", options.wellName, "well");
+    out << "~Curve information\n";
+    for (const Column& c : columns) item(out, c.mnemonic, c.unit, "", c.description);
+    out << "~ASCII\n";
+    std::string line;
+    for (std::size_t r = 0; r < rows; ++r) {
+        line.clear();
+        for (std::size_t c = 0; c < columns.size(); ++c) {
+            if (c) line.push_back(' ');
+            const Column& col = columns[c];
+            put(line, col.values ? (*col.values)[r] : t.radii(r)[col.arm - 1], options.null);
+        }
+        line.push_back('\n');
+        out.write(line.data(), static_cast<std::streamsize>(line.size()));
+    }
+}
+
+void writeLasFile(const std::string& path, const SectionTable& table, const LasWriteOptions& options) {
+    std::ofstream out(path, std::ios::binary);
+    if (!out) throw std::runtime_error(path + ": cannot open file for writing");
+    writeLas(out, table, options);
+    if (!out) throw std::runtime_error(path + ": write failed");
+}
+
+}  // namespace caliper3d::io
