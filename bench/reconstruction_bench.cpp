@@ -1,0 +1,54 @@
+// Reconstruction of the 4 km well of design section 5 (1.6 M sections at
+// 2.5 mm, six arms, 48 spline points): path + spline + analysis, on one and
+// two threads. Prints sections per second (docs/benchmarks-reconstruction.md).
+#include <memory>
+
+#include <benchmark/benchmark.h>
+
+#include "reconstruction/synthetic_well.h"
+#include "reconstruction/well_analysis.h"
+
+using namespace caliper3d;
+using namespace caliper3d::reconstruction;
+
+namespace {
+
+std::shared_ptr<const io::SectionTable> fourKilometreWell() {
+    static const auto table =
+        std::make_shared<const io::SectionTable>(makeSyntheticWell(syntheticProfile("example", 4000.0, 0.0025)));
+    return table;
+}
+
+void pathSplineAnalysis(benchmark::State& state) {
+    const auto table = fourKilometreWell();
+    AnalysisOptions options;
+    options.threads = static_cast<int>(state.range(0));
+    for (auto _ : state) {
+        const WellGeometry geometry(table, GeometryOptions{});
+        const WellAnalysis analysis = analyseWell(geometry, options);
+        benchmark::DoNotOptimize(analysis.sections.data());
+    }
+    state.counters["sections/s"] = benchmark::Counter(static_cast<double>(table->rowCount()) * state.iterations(),
+                                                      benchmark::Counter::kIsRate);
+    state.counters["sections"] = static_cast<double>(table->rowCount());
+}
+
+void analysisOnly(benchmark::State& state) {
+    const auto table = fourKilometreWell();
+    const WellGeometry geometry(table, GeometryOptions{});
+    AnalysisOptions options;
+    options.threads = static_cast<int>(state.range(0));
+    for (auto _ : state) {
+        const WellAnalysis analysis = analyseWell(geometry, options);
+        benchmark::DoNotOptimize(analysis.sections.data());
+    }
+    state.counters["sections/s"] = benchmark::Counter(static_cast<double>(table->rowCount()) * state.iterations(),
+                                                      benchmark::Counter::kIsRate);
+}
+
+}  // namespace
+
+BENCHMARK(pathSplineAnalysis)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+BENCHMARK(analysisOnly)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+
+BENCHMARK_MAIN();
