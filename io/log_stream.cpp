@@ -11,6 +11,7 @@
 #include <memory>
 #include <sstream>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "io/curve_plan.h"
@@ -121,6 +122,60 @@ private:
     bool m_eof = false;
 };
 
+// ---- tables -----------------------------------------------------------------------
+
+void appendRange(const std::vector<double>& from, std::vector<double>& to, std::size_t a, std::size_t b,
+                 std::size_t width) {
+    if (from.empty()) return;
+    to.insert(to.end(), from.begin() + static_cast<std::ptrdiff_t>(a * width),
+              from.begin() + static_cast<std::ptrdiff_t>(b * width));
+}
+
+void appendRows(const SectionTable& from, SectionTable& to, std::size_t a, std::size_t b) {
+    if (a >= b) return;
+    const std::size_t arms = static_cast<std::size_t>(from.armCount);
+    appendRange(from.depth_m, to.depth_m, a, b, 1);
+    appendRange(from.radius_mm, to.radius_mm, a, b, arms);
+    appendRange(from.p1az_deg, to.p1az_deg, a, b, 1);
+    appendRange(from.devi_deg, to.devi_deg, a, b, 1);
+    appendRange(from.hazi_deg, to.hazi_deg, a, b, 1);
+    appendRange(from.rb_deg, to.rb_deg, a, b, 1);
+    appendRange(from.bitSize_mm, to.bitSize_mm, a, b, 1);
+    for (std::size_t e = 0; e < from.extraCurves.size(); ++e)
+        appendRange(from.extraCurves[e].values, to.extraCurves[e].values, a, b, 1);
+}
+
+void clearRows(SectionTable& t) {
+    t.depth_m.clear();
+    t.radius_mm.clear();
+    t.p1az_deg.clear();
+    t.devi_deg.clear();
+    t.hazi_deg.clear();
+    t.rb_deg.clear();
+    t.bitSize_mm.clear();
+    for (ExtraCurve& e : t.extraCurves) e.values.clear();
+}
+
+void permute(SectionTable& t, const std::vector<std::size_t>& order) {
+    auto apply = [&](std::vector<double>& v, std::size_t width) {
+        if (v.empty()) return;
+        std::vector<double> out;
+        out.reserve(order.size() * width);
+        for (std::size_t r : order)
+            out.insert(out.end(), v.begin() + static_cast<std::ptrdiff_t>(r * width),
+                       v.begin() + static_cast<std::ptrdiff_t>((r + 1) * width));
+        v.swap(out);
+    };
+    apply(t.depth_m, 1);
+    apply(t.radius_mm, static_cast<std::size_t>(t.armCount));
+    apply(t.p1az_deg, 1);
+    apply(t.devi_deg, 1);
+    apply(t.hazi_deg, 1);
+    apply(t.rb_deg, 1);
+    apply(t.bitSize_mm, 1);
+    for (ExtraCurve& c : t.extraCurves) apply(c.values, 1);
+}
+
 // ---- rows -----------------------------------------------------------------------
 
 bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
@@ -172,7 +227,14 @@ void parseRows(const RowFormat& f, std::string_view text, std::size_t firstLine,
                const std::vector<ColumnSpec>& columns, ParsedRows& out) {
     try {
         const CurvePlan& plan = *f.plan;
-        out.table = plan.emptyTable(columns);
+        // Reused from block to block: its pages are already mapped.
+        if (out.table.extraCurves.size() != plan.extraColumns.size()) out.table = plan.emptyTable(columns);
+        clearRows(out.table);
+        out.lines.clear();
+        out.diagnostics = Diagnostics{};
+        out.linesConsumed = 0;
+        out.stopped = false;
+        out.error = nullptr;
         out.nulls.assign(f.declared, 0);
         out.depthDiffer.assign(plan.otherDepthColumns.size(), 0);
         std::vector<double> raw(f.declared, kNaN);
@@ -274,60 +336,6 @@ void parseRows(const RowFormat& f, std::string_view text, std::size_t firstLine,
     } catch (...) {
         out.error = std::current_exception();
     }
-}
-
-// ---- tables -----------------------------------------------------------------------
-
-void appendRange(const std::vector<double>& from, std::vector<double>& to, std::size_t a, std::size_t b,
-                 std::size_t width) {
-    if (from.empty()) return;
-    to.insert(to.end(), from.begin() + static_cast<std::ptrdiff_t>(a * width),
-              from.begin() + static_cast<std::ptrdiff_t>(b * width));
-}
-
-void appendRows(const SectionTable& from, SectionTable& to, std::size_t a, std::size_t b) {
-    if (a >= b) return;
-    const std::size_t arms = static_cast<std::size_t>(from.armCount);
-    appendRange(from.depth_m, to.depth_m, a, b, 1);
-    appendRange(from.radius_mm, to.radius_mm, a, b, arms);
-    appendRange(from.p1az_deg, to.p1az_deg, a, b, 1);
-    appendRange(from.devi_deg, to.devi_deg, a, b, 1);
-    appendRange(from.hazi_deg, to.hazi_deg, a, b, 1);
-    appendRange(from.rb_deg, to.rb_deg, a, b, 1);
-    appendRange(from.bitSize_mm, to.bitSize_mm, a, b, 1);
-    for (std::size_t e = 0; e < from.extraCurves.size(); ++e)
-        appendRange(from.extraCurves[e].values, to.extraCurves[e].values, a, b, 1);
-}
-
-void clearRows(SectionTable& t) {
-    t.depth_m.clear();
-    t.radius_mm.clear();
-    t.p1az_deg.clear();
-    t.devi_deg.clear();
-    t.hazi_deg.clear();
-    t.rb_deg.clear();
-    t.bitSize_mm.clear();
-    for (ExtraCurve& e : t.extraCurves) e.values.clear();
-}
-
-void permute(SectionTable& t, const std::vector<std::size_t>& order) {
-    auto apply = [&](std::vector<double>& v, std::size_t width) {
-        if (v.empty()) return;
-        std::vector<double> out;
-        out.reserve(order.size() * width);
-        for (std::size_t r : order)
-            out.insert(out.end(), v.begin() + static_cast<std::ptrdiff_t>(r * width),
-                       v.begin() + static_cast<std::ptrdiff_t>((r + 1) * width));
-        v.swap(out);
-    };
-    apply(t.depth_m, 1);
-    apply(t.radius_mm, static_cast<std::size_t>(t.armCount));
-    apply(t.p1az_deg, 1);
-    apply(t.devi_deg, 1);
-    apply(t.hazi_deg, 1);
-    apply(t.rb_deg, 1);
-    apply(t.bitSize_mm, 1);
-    for (ExtraCurve& c : t.extraCurves) apply(c.values, 1);
 }
 
 std::string lasVersionText(const LasHeader& h) {
@@ -601,6 +609,7 @@ private:
         m_held = m_plan.emptyTable(m_columns);
         m_nulls.assign(m_columns.size(), 0);
         m_depthDiffer.assign(m_plan.otherDepthColumns.size(), 0);
+        for (ParsedRows& part : m_parts) part.table = m_plan.emptyTable(m_columns);
         if (m_skipFirstLines) {
             // Skip the names line(s) of column text.
             for (std::size_t i = 0; i < m_skipFirstLines; ++i) {
@@ -638,7 +647,7 @@ private:
             const std::size_t nl = run.find('\n', run.size() / 2);
             if (nl != std::string_view::npos && nl + 1 < run.size()) split = nl + 1;
         }
-        ParsedRows parts[2];
+        ParsedRows* parts = m_parts;
         const std::string_view first = run.substr(0, split);
         if (split < run.size()) {
             const std::string_view second = run.substr(split);
@@ -676,8 +685,9 @@ private:
         if (m_radiiOnly)
             for (std::size_t r = 0; r < n; ++r) t.depth_m[r] = static_cast<double>(m_rowIndex++) * m_options.rowStep_m;
         std::size_t runStart = 0;
+        m_kept.clear();
         auto flush = [&](std::size_t end) {
-            appendRows(t, m_descending ? m_held : m_current, runStart, end);
+            if (end > runStart) m_kept.emplace_back(runStart, end);
             runStart = end + 1;
         };
         for (std::size_t r = 0; r < n; ++r) {
@@ -698,8 +708,6 @@ private:
                         // Recorded upwards: hold everything, sort at the end.
                         m_descending = true;
                         m_directionKnown = true;
-                        appendRows(t, m_current, runStart, r);
-                        runStart = r;
                         appendRows(m_current, m_held, 0, m_current.rowCount());
                         clearRows(m_current);
                     } else if (m_options.depthOrder == DepthOrder::Reject) {
@@ -719,6 +727,13 @@ private:
             m_last = d;
         }
         flush(n);
+        // The common case, a whole block in order: hand it on without a copy.
+        if (m_directionKnown && !m_descending && m_current.rowCount() == 0 && m_kept.size() == 1 &&
+            m_kept.front().first == 0 && m_kept.front().second == n && n >= m_stream.chunkRows) {
+            deliver(t);
+            return;
+        }
+        for (const auto& [a, b] : m_kept) appendRows(t, m_descending ? m_held : m_current, a, b);
     }
 
     void deliver(const SectionTable& chunk) {
@@ -873,6 +888,8 @@ private:
     RowFormat m_format;
 
     SectionTable m_current, m_held;
+    ParsedRows m_parts[2];
+    std::vector<std::pair<std::size_t, std::size_t>> m_kept;
     std::vector<std::size_t> m_nulls, m_depthDiffer;
     std::vector<double> m_steps;
     bool m_haveLast = false, m_directionKnown = false, m_descending = false;
