@@ -162,7 +162,13 @@ CurvePlan makeCurvePlan(const std::vector<ColumnSpec>& columns, const LasHeader*
     for (std::size_t c = 0; c < columns.size(); ++c) {
         const ColumnSpec& col = columns[c];
         const CurveRole role = roles.roleOf(static_cast<int>(c));
-        info.curves.push_back({col.mnemonic, col.unit, col.text ? "text (skipped)" : std::string(roleName(role)), 0});
+        const bool secondDepth = std::find(plan.otherDepthColumns.begin(), plan.otherDepthColumns.end(),
+                                           static_cast<int>(c)) != plan.otherDepthColumns.end();
+        info.curves.push_back({col.mnemonic, col.unit,
+                               col.text ? "text (skipped)"
+                                        : secondDepth ? "second depth (checked against the index)"
+                                                      : std::string(roleName(role)),
+                               0});
         if (role == CurveRole::Other && !col.text && guessRole(col.mnemonic).role != CurveRole::Depth)
             plan.extraColumns.push_back(static_cast<int>(c));
     }

@@ -29,7 +29,8 @@ struct LogInfo {
     double step_m = 0.0;      // median step
     int arms = 0;
     std::string armSource;    // "radii R1..R6", "diameters C1, C2", ...
-    double bitSize_mm = kNaN;
+    double bitSize_mm = kNaN;     // smallest bit size over the log
+    double bitSizeMax_mm = kNaN;  // largest (differs when a BS curve steps down the hole)
     std::vector<CurveInfo> curves;
     Diagnostics diagnostics;
     bool cancelled = false;   // the read was stopped by its cancellation token

@@ -92,7 +92,9 @@ std::string formatLogInfo(const LogInfo& info) {
     out << "\n";
     out << "arms:      " << info.arms << " from " << info.armSource << "\n";
     out.precision(1);
-    if (std::isfinite(info.bitSize_mm)) out << "bit size:  " << info.bitSize_mm << " mm\n";
+    if (std::isfinite(info.bitSize_mm) && std::isfinite(info.bitSizeMax_mm) && info.bitSizeMax_mm > info.bitSize_mm)
+        out << "bit size:  " << info.bitSize_mm << " to " << info.bitSizeMax_mm << " mm\n";
+    else if (std::isfinite(info.bitSize_mm)) out << "bit size:  " << info.bitSize_mm << " mm\n";
     else out << "bit size:  unknown (give --bit-size)\n";
     out << "curves:\n";
     for (const CurveInfo& c : info.curves) {

@@ -328,7 +328,8 @@ void parseRows(const RowFormat& f, std::string_view text, std::size_t firstLine,
             const double depth = raw[static_cast<std::size_t>(plan.depthColumn)];
             for (std::size_t k = 0; k < plan.otherDepthColumns.size(); ++k) {
                 const double other = raw[static_cast<std::size_t>(plan.otherDepthColumns[k])];
-                if (std::abs(other - depth) > 1e-6 * std::max(1.0, std::abs(depth))) ++out.depthDiffer[k];
+                // Vendors round a second depth curve differently: only a centimetre or more counts.
+                if (std::abs(other - depth) * plan.depthScale >= 0.01) ++out.depthDiffer[k];
             }
             plan.mapRow(raw.data(), out.table);
             out.lines.push_back(lineNumber);
@@ -742,6 +743,11 @@ private:
         m_info.rows += chunk.rowCount();
         if (before == 0) m_info.top_m = chunk.depth_m.front();
         m_info.bottom_m = chunk.depth_m.back();
+        for (double b : chunk.bitSize_mm)
+            if (std::isfinite(b)) {
+                m_bitSizeMin = std::min(m_bitSizeMin, b);
+                m_bitSizeMax = std::max(m_bitSizeMax, b);
+            }
         for (std::size_t r = 1; r < chunk.rowCount() && m_steps.size() < kStepSamples; ++r)
             m_steps.push_back(chunk.depth_m[r] - chunk.depth_m[r - 1]);
         m_consumer(chunk);
@@ -851,11 +857,15 @@ private:
             const ColumnSpec& c = m_columns[static_cast<std::size_t>(m_plan.otherDepthColumns[k])];
             d.warn(m_name, c.line, "depth curve " + c.mnemonic + " differs from the index " +
                                        m_columns[static_cast<std::size_t>(m_plan.depthColumn)].mnemonic + " on " +
-                                       std::to_string(m_depthDiffer[k]) + " rows; the index is used");
+                                       std::to_string(m_depthDiffer[k]) + " rows by 1 cm or more; the index is used");
         }
         for (std::size_t c = 0; c < m_info.curves.size() && c < m_nulls.size(); ++c) m_info.curves[c].nulls = m_nulls[c];
         if (m_radiiOnly && !m_info.curves.empty()) m_info.curves.front().nulls = 0;
         m_info.arms = m_plan.armCount;
+        if (m_bitSizeMin <= m_bitSizeMax) {
+            m_info.bitSize_mm = m_bitSizeMin;
+            m_info.bitSizeMax_mm = m_bitSizeMax;
+        }
         if (!m_steps.empty()) {
             std::nth_element(m_steps.begin(), m_steps.begin() + static_cast<std::ptrdiff_t>(m_steps.size() / 2), m_steps.end());
             m_info.step_m = m_steps[m_steps.size() / 2];
@@ -894,6 +904,7 @@ private:
     std::vector<double> m_steps;
     bool m_haveLast = false, m_directionKnown = false, m_descending = false;
     double m_last = 0.0;
+    double m_bitSizeMin = 1e300, m_bitSizeMax = -1e300;
     std::size_t m_nullDepths = 0, m_repeated = 0, m_backwards = 0;
     std::size_t m_firstNullDepthLine = 0, m_firstRepeatedLine = 0, m_firstBackwardsLine = 0;
 };

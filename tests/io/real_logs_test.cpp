@@ -59,6 +59,13 @@ TEST(RealLogsTest, FmiFourArmImagerTurnsPadPairDiametersIntoRadii) {
         EXPECT_DOUBLE_EQ(r[0], r[2]);
         EXPECT_DOUBLE_EQ(r[1], r[3]);
     }
+    EXPECT_EQ(roleOf(log.info, "DEPTH"), "second depth (checked against the index)");
+    bool warned = false;
+    for (const Warning& w : log.info.diagnostics.warnings)
+        warned = warned || w.message.find("DEPTH differs from the index DEPT on 122 rows") != std::string::npos;
+    EXPECT_TRUE(warned);
+    EXPECT_NEAR(log.info.bitSize_mm, 156.0, 1.0);
+    EXPECT_NEAR(log.info.bitSizeMax_mm, 251.0, 1.0);
     // The bit size curve steps 251 -> 159 -> 156 mm.
     double lo = 1e9, hi = 0;
     for (double b : log.table.bitSize_mm)
