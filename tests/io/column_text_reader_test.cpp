@@ -82,3 +82,22 @@ TEST(ColumnTextReaderTest, WriterOutputReadsBack) {
     EXPECT_EQ(back.depth_m, t.depth_m);
     EXPECT_EQ(back.p1az_deg, t.p1az_deg);
 }
+
+TEST(ColumnTextReaderTest, NamesLineIsSkippedAndRadiiOnlyRowsGetSynthesisedDepth) {
+    const std::string named = "DEPTH R1 R2 R3 R4 R5 R6 P1AZ DEVI HAZI\r\n1.0 4 4 4 4 4 4 0 0 0\r\n";
+    EXPECT_EQ(parseColumnText(named, "n.txt", ColumnTextOptions{}).rowCount(), 1u);
+
+    const std::string radii = "\xEF\xBB\xBF" "1 2 3 4 5 6 7 8\n2 3 4 5 6 7 8 9\n";
+    ColumnTextOptions options;
+    options.radiusUnit = LengthUnit::Millimetre;
+    options.rowStep_m = 0.5;
+    Diagnostics d;
+    const SectionTable t = parseColumnText(radii, "r.txt", options, &d);
+    EXPECT_EQ(t.armCount, 8);
+    EXPECT_EQ(t.depth_m, (std::vector<double>{0.0, 0.5}));
+    EXPECT_DOUBLE_EQ(t.radii(1)[7], 9.0);
+    EXPECT_EQ(d.warningCount, 1u);
+
+    options.allowRadiiOnly = false;
+    EXPECT_THROW(parseColumnText(radii, "r.txt", options), ParseError);
+}
