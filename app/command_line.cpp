@@ -14,10 +14,12 @@ const char kUsage[] =
     "  (no verb)                         GUI on the bundled example well; with no display,\n"
     "                                    renders it to out/example.png and out/example.iv\n"
     "  view FILE...                      GUI on these wells\n"
+    "  info FILE...                      format, curves and their roles, units, depth range, warnings\n"
     "  export FILE... -o OUT.iv          scene out as Open Inventor (--binary, --gzip)\n"
     "  render FILE... -o OUT.png         picture (--width W --height H --view iso|north|east|top)\n"
     "  synth -o OUT [--length M --step M --profile NAME]   synthetic log with known features\n"
     "common: --arms N --depth-unit m|ft --radius-unit in|mm|cm --bit-size VALUE[in|mm]\n"
+    "        --radii MNEM,... --diameters MNEM,... --nulls declared|common --row-step METRES\n"
     "        --points M --segment-length METRES --exaggerate F\n"
     "Run 'caliper3d VERB --help' for a verb's options.\n";
 }  // namespace
@@ -28,6 +30,7 @@ int runCommandLine(int argc, char** argv) {
     if (args.isEmpty()) return runDefault(argc, argv);
     const QString verb = args.takeFirst();
     if (verb == "export") return runExport(args);
+    if (verb == "info") return runInfo(args);
     if (verb == "render") return runRender(args);
     if (verb == "synth") return runSynth(args);
     if (verb == "view") return runView(argc, argv, args);

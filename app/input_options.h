@@ -5,7 +5,7 @@
 
 #include <QCommandLineParser>
 
-#include "io/column_text_reader.h"
+#include "io/log_reader.h"
 #include "io/diagnostics.h"
 #include "io/section_table.h"
 #include "reconstruction/well_geometry.h"
@@ -14,8 +14,7 @@ namespace caliper3d::app {
 
 // Options shared by every verb that reads a log (design section 8, "common").
 struct InputOptions {
-    io::ColumnTextOptions columnText;
-    std::optional<double> bitSize_mm;
+    io::ReadOptions read;
     int splinePoints = 48;
     double segmentLength_m = 10.0;
     double radialExaggeration = 1.0;
@@ -32,7 +31,7 @@ InputOptions inputOptionsFrom(const QCommandLineParser& parser);
 
 reconstruction::GeometryOptions geometryOptions(const InputOptions& options);
 
-// Reads a caliper log in any supported format; applies --bit-size. Throws
+// Reads a caliper log in any supported format (io::readCaliperLog). Throws
 // io::ParseError (file, line, what was expected) on bad input.
 io::SectionTable readWellFile(const std::string& path, const InputOptions& options,
                               io::Diagnostics* diagnostics);

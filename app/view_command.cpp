@@ -41,7 +41,7 @@ int showWindow(int argc, char** argv, const std::vector<std::string>& files,
 
 InputOptions exampleOptions() {
     InputOptions options;
-    options.bitSize_mm = 215.9;  // the example is drilled with an 8.5 in bit
+    options.read.bitSize_mm = 215.9;  // the example is drilled with an 8.5 in bit
     return options;
 }
 

@@ -46,7 +46,7 @@ TEST(CommandLineTest, SynthThenExportWritesAnInventorFile) {
 
 TEST(CommandLineTest, BadInputExitsOneNamingFileAndLine) {
     const auto bad = caliper3d::test::scratch("cli_bad.txt");
-    { std::ofstream(bad) << "1 2 3 4 5 6 7 8 9 10\n2 2 3 4 5 6 7 8 9\n"; }
+    { std::ofstream(bad) << "1 2 3 4 5 6 7 8 9 10\n2 2 3 4 5 6 7 8 9\n3 2 3 4 5 6 7 8 9 10\n"; }
     CommandRun r =
         run("export " + bad.string() + " -o " + caliper3d::test::scratch("cli_bad.iv").string());
     EXPECT_EQ(r.status, 1) << r.output;

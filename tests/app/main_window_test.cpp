@@ -61,7 +61,7 @@ TEST_F(MainWindowTest, OpensTheExampleAndRendersTheWell) {
     window.resize(640, 480);
     window.show();
     app::InputOptions options;
-    options.bitSize_mm = 215.9;
+    options.read.bitSize_mm = 215.9;
     window.openWell(QString::fromStdString(log.string()), options);
     ASSERT_TRUE(waitFor(window, &app::MainWindow::wellLoaded, 60000)) << "the well did not load";
     EXPECT_FALSE(window.loading());
@@ -81,13 +81,13 @@ TEST_F(MainWindowTest, OpensTheExampleAndRendersTheWell) {
 
 TEST_F(MainWindowTest, BadFileReportsFailureWithFileAndLine) {
     const auto bad = test::scratch("window_bad.txt");
-    { std::ofstream(bad) << "1 2 3\n"; }
+    { std::ofstream(bad) << "1 2 3 4 5 6 7 8 9 10\n2 2 3\n3 2 3 4 5 6 7 8 9 10\n"; }
     app::MainWindow window;
     QString message;
     QObject::connect(&window, &app::MainWindow::wellFailed, [&](const QString& m) { message = m; });
     window.openWell(QString::fromStdString(bad.string()), app::InputOptions{});
     ASSERT_TRUE(waitFor(window, &app::MainWindow::wellFailed, 30000));
-    EXPECT_TRUE(message.contains(QString::fromStdString(bad.string() + ":1")))
+    EXPECT_TRUE(message.contains(QString::fromStdString(bad.string() + ":2")))
         << message.toStdString();
 }
 

@@ -1,0 +1,32 @@
+#include <cstdio>
+
+#include "app/commands.h"
+#include "app/input_options.h"
+#include "app/verb_parser.h"
+#include "io/log_reader.h"
+
+namespace caliper3d::app {
+
+int runInfo(const QStringList& args) {
+    return guardedVerb("info", [&]() -> int {
+        VerbParser verb("info", "FILE...",
+                        "Describe caliper logs: format, depth range, curves and their roles, nulls, warnings.");
+        addInputOptions(verb.parser());
+        if (!verb.parse(args, 1)) return kExitOk;
+        const InputOptions options = inputOptionsFrom(verb.parser());
+        int failures = 0;
+        for (const std::string& file : verb.positional()) {
+            try {
+                const io::LogInfo info = io::describeLog(file, options.read);
+                std::fputs(io::formatLogInfo(info).c_str(), stdout);
+            } catch (const std::exception& e) {
+                ++failures;
+                std::fprintf(stderr, "caliper3d info: %s\n", e.what());
+            }
+            std::fputs("\n", stdout);
+        }
+        return failures > 0 ? kExitBadInput : kExitOk;
+    });
+}
+
+}  // namespace caliper3d::app
