@@ -17,10 +17,13 @@ const char kUsage[] =
     "  info FILE...                      format, curves and their roles, units, depth range, warnings\n"
     "  export FILE... -o OUT.iv          scene out as Open Inventor (--binary, --gzip)\n"
     "  render FILE... -o OUT.png         picture (--width W --height H --view iso|north|east|top)\n"
+    "  report FILE -o OUT.csv            per-section analysis (--step M, --zones Z.csv,\n"
+    "                                    --las OUT.las, --casing-od L, --excess F, --rule N=V)\n"
     "  synth -o OUT [--length M --step M --profile NAME]   synthetic log with known features\n"
     "common: --arms N --depth-unit m|ft --radius-unit in|mm|cm --bit-size VALUE[in|mm]\n"
     "        --radii MNEM,... --diameters MNEM,... --nulls declared|common --row-step METRES\n"
-    "        --points M --segment-length METRES --exaggerate F\n"
+    "        --survey FILE --wellhead E,N,ELEV (once per FILE) --steep-inclination DEG\n"
+    "        --tool-reach LENGTH --points M --segment-length METRES --exaggerate F\n"
     "Run 'caliper3d VERB --help' for a verb's options.\n";
 }  // namespace
 
@@ -32,6 +35,7 @@ int runCommandLine(int argc, char** argv) {
     if (verb == "export") return runExport(args);
     if (verb == "info") return runInfo(args);
     if (verb == "render") return runRender(args);
+    if (verb == "report") return runReport(args);
     if (verb == "synth") return runSynth(args);
     if (verb == "view") return runView(argc, argv, args);
     if (verb == "-h" || verb == "--help" || verb == "help") {

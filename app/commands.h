@@ -12,6 +12,7 @@ enum ExitStatus { kExitOk = 0, kExitBadInput = 1, kExitUsage = 2 };
 int runExport(const QStringList& args);
 int runInfo(const QStringList& args);
 int runRender(const QStringList& args);
+int runReport(const QStringList& args);
 int runSynth(const QStringList& args);
 int runView(int argc, char** argv, const QStringList& args);
 // No verb: the GUI on the bundled example, or with no display, the example

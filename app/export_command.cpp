@@ -19,6 +19,7 @@ int runExport(const QStringList& args) {
         p.addOption({"binary", "Write binary Open Inventor (smaller, faster to read)."});
         p.addOption({"gzip", "Compress the output with gzip."});
         addInputOptions(p);
+        addWellSourceOptions(p);
         if (!verb.parse(args, 1)) return kExitOk;
         if (!verb.isSet("output")) throw UsageError("caliper3d export: -o OUT.iv is required");
         const std::string out = verb.value("output");
@@ -29,7 +30,7 @@ int runExport(const QStringList& args) {
 
         scenegraph::initCoin();
         const auto start = std::chrono::steady_clock::now();
-        AssembledScene scene = assembleScene(verb.positional(), options);
+        AssembledScene scene = assembleScene(wellSourcesFrom(p, verb.positional()), options);
         if (scene.wells == 0) return kExitBadInput;
         scenegraph::IvExportOptions ivOptions;
         ivOptions.binary = verb.isSet("binary");

@@ -1,9 +1,12 @@
 #include "app/input_options.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "io/number_parsing.h"
+#include "io/survey_reader.h"
 #include "io/units.h"
+#include "reconstruction/survey_interpolation.h"
 
 namespace caliper3d::app {
 
@@ -27,6 +30,14 @@ void addInputOptions(QCommandLineParser& parser) {
          "METRES", "10"},
         {"exaggerate", "Draw radii F times larger around the true path (display only; default 1).",
          "F", "1"},
+        {"steep-inclination",
+         "Above this inclination (degrees) arm 1 is placed from RB when the log has it "
+         "(default 15).",
+         "DEG", "15"},
+        {"tool-reach",
+         "Arm readings beyond this radius (e.g. 10in, 254mm) are stuck or spurious and are "
+         "interpolated from the neighbouring arms (default: no limit).",
+         "LENGTH"},
     };
     parser.addOptions(options);
 }
@@ -82,23 +93,87 @@ InputOptions inputOptionsFrom(const QCommandLineParser& parser) {
     o.radialExaggeration = number(parser, "exaggerate");
     if (!(o.radialExaggeration >= 1.0 && o.radialExaggeration <= 1000.0))
         throw UsageError("--exaggerate: expected a factor from 1 to 1000");
-    if (parser.isSet("bit-size")) {
-        std::string text = parser.value("bit-size").toStdString();
-        double scale = 25.4;
-        for (const char* suffix : {"mm", "in", "cm"}) {
-            const std::string s(suffix);
-            if (text.size() > s.size() && text.compare(text.size() - s.size(), s.size(), s) == 0) {
-                scale = io::toMillimetres(*io::parseLengthUnit(s));
-                text.resize(text.size() - s.size());
-                break;
-            }
-        }
-        double v = 0.0;
-        if (!io::parseNumber(text, v) || !(v > 0.0))
-            throw UsageError("--bit-size: expected a positive size such as 8.5in or 215.9mm");
-        o.read.bitSize_mm = v * scale;
-    }
+    const double steep = number(parser, "steep-inclination");
+    if (!(steep >= 0.0 && steep <= 90.0))
+        throw UsageError("--steep-inclination: expected an angle from 0 to 90 degrees");
+    o.steepInclination_deg = steep;
+    if (parser.isSet("tool-reach"))
+        o.toolReach_mm = parseLength_mm(parser.value("tool-reach").toStdString(), "--tool-reach");
+    if (parser.isSet("bit-size"))
+        o.read.bitSize_mm = parseLength_mm(parser.value("bit-size").toStdString(), "--bit-size");
     return o;
+}
+
+double parseLength_mm(const std::string& value, const std::string& option) {
+    std::string text = value;
+    double scale = 25.4;
+    for (const char* suffix : {"mm", "in", "cm"}) {
+        const std::string s(suffix);
+        if (text.size() > s.size() && text.compare(text.size() - s.size(), s.size(), s) == 0) {
+            scale = io::toMillimetres(*io::parseLengthUnit(s));
+            text.resize(text.size() - s.size());
+            break;
+        }
+    }
+    double v = 0.0;
+    if (!io::parseNumber(text, v) || !(v > 0.0) || !std::isfinite(v))
+        throw UsageError(option + ": expected a positive length such as 8.5in or 215.9mm, found '" +
+                         value + "'");
+    return v * scale;
+}
+
+void addWellSourceOptions(QCommandLineParser& parser) {
+    parser.addOption({"survey",
+                      "Deviation survey (MD, inclination, azimuth) for the well path instead of the "
+                      "log's DEVI/HAZI; once per FILE, in order.",
+                      "FILE"});
+    parser.addOption({"wellhead",
+                      "Wellhead easting, northing and elevation of the depth reference in metres "
+                      "(e.g. 512300,6801200,25.5); once per FILE, in order. The first well's "
+                      "wellhead is the scene origin.",
+                      "E,N,ELEV"});
+}
+
+reconstruction::Wellhead parseWellhead(const std::string& text) {
+    // Commas separate the three numbers, so a decimal comma cannot be used here.
+    double v[3] = {0.0, 0.0, 0.0};
+    std::size_t start = 0;
+    for (int k = 0; k < 3; ++k) {
+        const std::size_t comma = text.find(',', start);
+        const bool last = k == 2;
+        if (last != (comma == std::string::npos) ||
+            !io::parseNumber(text.substr(start, comma == std::string::npos ? std::string::npos
+                                                                           : comma - start),
+                             v[k]) ||
+            !std::isfinite(v[k]))
+            throw UsageError("--wellhead: expected easting,northing,elevation in metres (three "
+                             "numbers with a decimal point), found '" +
+                             text + "'");
+        start = comma + 1;
+    }
+    return {v[0], v[1], v[2]};
+}
+
+std::vector<WellSource> wellSourcesFrom(const QCommandLineParser& parser,
+                                        const std::vector<std::string>& files) {
+    const QStringList surveys = parser.isSet("survey") ? parser.values("survey") : QStringList();
+    const QStringList heads = parser.isSet("wellhead") ? parser.values("wellhead") : QStringList();
+    const auto count = static_cast<int>(files.size());
+    if (!surveys.isEmpty() && surveys.size() != count)
+        throw UsageError("--survey: given " + std::to_string(surveys.size()) + " times for " +
+                         std::to_string(count) + " file(s); give it once per file, in order");
+    if (!heads.isEmpty() && heads.size() != count)
+        throw UsageError("--wellhead: given " + std::to_string(heads.size()) + " times for " +
+                         std::to_string(count) + " file(s); give it once per file, in order");
+    std::vector<WellSource> out;
+    for (int i = 0; i < count; ++i) {
+        WellSource w;
+        w.path = files[static_cast<std::size_t>(i)];
+        if (!surveys.isEmpty()) w.surveyPath = surveys[i].toStdString();
+        if (!heads.isEmpty()) w.wellhead = parseWellhead(heads[i].toStdString());
+        out.push_back(std::move(w));
+    }
+    return out;
 }
 
 reconstruction::GeometryOptions geometryOptions(const InputOptions& options) {
@@ -106,7 +181,35 @@ reconstruction::GeometryOptions geometryOptions(const InputOptions& options) {
     g.splinePoints = options.splinePoints;
     g.segmentLength_m = options.segmentLength_m;
     g.radialExaggeration = options.radialExaggeration;
+    g.steepInclination_deg = options.steepInclination_deg;
+    g.maxArmRadius_mm = options.toolReach_mm;
     return g;
+}
+
+reconstruction::GeometryOptions geometryOptions(const InputOptions& options,
+                                                const WellSource& well,
+                                                const reconstruction::Wellhead& origin) {
+    reconstruction::GeometryOptions g = geometryOptions(options);
+    if (!well.surveyPath.empty()) {
+        io::SurveyReadOptions survey;
+        if (options.read.depthUnit) survey.depthUnit = options.read.depthUnit;
+        g.survey = reconstruction::surveyStations(io::readSurvey(well.surveyPath, survey));
+    }
+    if (well.wellhead) g.wellheadOffset = reconstruction::wellheadOffset(*well.wellhead, origin);
+    return g;
+}
+
+reconstruction::Wellhead sceneOrigin(const std::vector<WellSource>& wells) {
+    return !wells.empty() && wells.front().wellhead ? *wells.front().wellhead
+                                                    : reconstruction::Wellhead{};
+}
+
+void printWarnings(const io::Diagnostics& diagnostics) {
+    for (const io::Warning& w : diagnostics.warnings)
+        std::fprintf(stderr, "%s:%zu: warning: %s\n", w.file.c_str(), w.line, w.message.c_str());
+    if (diagnostics.warningCount > diagnostics.warnings.size())
+        std::fprintf(stderr, "... and %zu more warnings\n",
+                     diagnostics.warningCount - diagnostics.warnings.size());
 }
 
 io::SectionTable readWellFile(const std::string& path, const InputOptions& options,

@@ -76,26 +76,47 @@ bool MainWindow::loading() const {
 }
 
 void MainWindow::openWell(const QString& path, const InputOptions& options) {
+    openWell(WellSource{path.toStdString(), {}, {}}, options);
+}
+
+void MainWindow::openWell(const WellSource& source, const InputOptions& options) {
     m_wells.clear();
     m_sceneRoot->removeAllChildren();
     m_viewedAll = false;
-    addWell(path, options);
+    m_origin = sceneOrigin({source});
+    addWell(source, options);
 }
 
 void MainWindow::addWell(const QString& path, const InputOptions& options) {
+    addWell(WellSource{path.toStdString(), {}, {}}, options);
+}
+
+void MainWindow::addWell(const WellSource& source, const InputOptions& options) {
     auto well = std::make_unique<Well>();
     Well& w = *well;
-    w.path = path;
+    w.source = source;
     w.options = options;
     w.scene = std::make_unique<scenegraph::WellScene>();
     m_sceneRoot->addChild(w.scene->root());
     m_wells.push_back(std::move(well));
     m_lastOptions = options;
 
-    const std::string file = path.toStdString();
+    const std::string file = source.path;
+    const QString name = QFileInfo(QString::fromStdString(file)).fileName();
+    // The survey is small: read here, and a bad one fails this well like a bad log.
+    reconstruction::GeometryOptions geometry;
+    std::string surveyError;
+    try {
+        geometry = geometryOptions(options, source, m_origin);
+    } catch (const std::exception& e) {
+        surveyError = e.what();
+    }
     w.pipeline = std::make_unique<reconstruction::WellLoadPipeline>(
-        [file, options] { return readWellFile(file, options, nullptr); }, geometryOptions(options));
-    const QString name = QFileInfo(path).fileName();
+        [file, options, surveyError] {
+            if (!surveyError.empty()) throw std::runtime_error(surveyError);
+            return readWellFile(file, options, nullptr);
+        },
+        geometry);
     m_status->setText("Loading " + name + "...");
     setWindowTitle(m_wells.size() == 1 ? "caliper3d - " + name
                                        : QString("caliper3d - %1 wells").arg(m_wells.size()));
@@ -169,14 +190,14 @@ void MainWindow::exportDialog() {
 }
 
 void MainWindow::setExaggeration(double factor) {
-    std::vector<std::pair<QString, InputOptions>> shown;
-    for (const auto& well : m_wells) shown.emplace_back(well->path, well->options);
+    std::vector<std::pair<WellSource, InputOptions>> shown;
+    for (const auto& well : m_wells) shown.emplace_back(well->source, well->options);
     if (shown.empty()) return;
     m_wells.clear();
     m_sceneRoot->removeAllChildren();
-    for (auto& [path, options] : shown) {
+    for (auto& [source, options] : shown) {
         options.radialExaggeration = factor;
-        addWell(path, options);
+        addWell(source, options);
     }
 }
 

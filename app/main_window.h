@@ -33,9 +33,12 @@ public:
     explicit MainWindow(QWidget* parent = nullptr);
     ~MainWindow() override;
 
-    // Replaces the wells shown by this one.
+    // Replaces the wells shown by this one; its wellhead (if any) becomes the
+    // scene origin.
+    void openWell(const WellSource& well, const InputOptions& options);
     void openWell(const QString& path, const InputOptions& options);
     // Adds a well to those shown; each loads on its own worker.
+    void addWell(const WellSource& well, const InputOptions& options);
     void addWell(const QString& path, const InputOptions& options);
     std::size_t wellCount() const { return m_wells.size(); }
     SoQtExaminerViewer* viewer() const { return m_viewer; }
@@ -57,10 +60,11 @@ private:
     SoSeparator* m_sceneRoot = nullptr;
     QLabel* m_status = nullptr;
     InputOptions m_lastOptions;
+    reconstruction::Wellhead m_origin;  // the first well's wellhead
     // One well being shown: its nodes, and while it loads its worker and feeder.
     // Members are destroyed feeder first, then the worker, then the nodes.
     struct Well {
-        QString path;
+        WellSource source;
         InputOptions options;
         std::unique_ptr<scenegraph::WellScene> scene;
         std::unique_ptr<reconstruction::WellLoadPipeline> pipeline;

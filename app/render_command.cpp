@@ -28,6 +28,7 @@ int runRender(const QStringList& args) {
              "With --view hole: measured depth of the eye in metres (default: top of the log).",
              "MD"});
         addInputOptions(p);
+        addWellSourceOptions(p);
         if (!verb.parse(args, 1)) return kExitOk;
         if (!verb.isSet("output")) throw UsageError("caliper3d render: -o OUT.png is required");
         bool okW = false, okH = false;
@@ -45,7 +46,7 @@ int runRender(const QStringList& args) {
         const InputOptions options = inputOptionsFrom(p);
 
         scenegraph::initCoin();
-        AssembledScene scene = assembleScene(verb.positional(), options);
+        AssembledScene scene = assembleScene(wellSourcesFrom(p, verb.positional()), options);
         if (scene.wells == 0) return kExitBadInput;
         const std::string out = verb.value("output");
         if (downHole) {

@@ -14,16 +14,26 @@
 namespace caliper3d::app {
 
 AssembledScene assembleScene(const std::vector<std::string>& files, const InputOptions& options) {
+    std::vector<WellSource> wells;
+    for (const std::string& file : files) wells.push_back({file, {}, {}});
+    return assembleScene(wells, options);
+}
+
+AssembledScene assembleScene(const std::vector<WellSource>& wells, const InputOptions& options) {
     AssembledScene out;
     out.root = scenegraph::NodeRef<SoSeparator>(new SoSeparator);
     out.root->setName("caliper3d_scene");
-    for (const std::string& file : files) {
+    const reconstruction::Wellhead origin = sceneOrigin(wells);
+    for (const WellSource& well : wells) {
+        const std::string& file = well.path;
         try {
             io::Diagnostics diagnostics;
+            const reconstruction::GeometryOptions geometryOpts =
+                geometryOptions(options, well, origin);
             auto table =
                 std::make_shared<const io::SectionTable>(readWellFile(file, options, &diagnostics));
-            auto geometry = std::make_shared<const reconstruction::WellGeometry>(
-                table, geometryOptions(options));
+            auto geometry =
+                std::make_shared<const reconstruction::WellGeometry>(table, geometryOpts);
             scenegraph::WellScene scene;
             scene.buildAll(*geometry);
             out.geometries.push_back(geometry);
@@ -33,9 +43,7 @@ AssembledScene assembleScene(const std::vector<std::string>& files, const InputO
                 "%s: %zu sections, %zu segments, %zu triangles at full detail, %zu warnings\n",
                 file.c_str(), table->rowCount(), scene.segmentCount(), scene.fullDetailTriangles(),
                 diagnostics.warningCount);
-            for (const io::Warning& w : diagnostics.warnings)
-                std::fprintf(stderr, "%s:%zu: warning: %s\n", w.file.c_str(), w.line,
-                             w.message.c_str());
+            printWarnings(diagnostics);
         } catch (const std::exception& e) {
             ++out.failures;
             std::fprintf(stderr, "caliper3d: %s\n", e.what());

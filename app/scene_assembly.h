@@ -23,6 +23,9 @@ struct AssembledScene {
     int failures = 0;
     std::vector<std::shared_ptr<const reconstruction::WellGeometry>> geometries;
 };
+// The first well's wellhead is the scene origin; each well's survey, if
+// given, replaces its log's DEVI/HAZI for the path.
+AssembledScene assembleScene(const std::vector<WellSource>& wells, const InputOptions& options);
 AssembledScene assembleScene(const std::vector<std::string>& files, const InputOptions& options);
 
 // The fly-through view: a camera on the first well's axis at measured depth

@@ -1,10 +1,12 @@
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 
 #include "app/commands.h"
 #include "app/input_options.h"
 #include "app/verb_parser.h"
 #include "io/column_text_writer.h"
+#include "io/las_writer.h"
 #include "io/number_parsing.h"
 #include "reconstruction/synthetic_well.h"
 
@@ -15,11 +17,20 @@ int runSynth(const QStringList& args) {
         VerbParser verb("synth", "-o OUT", "Write a synthetic caliper log with known features.");
         QCommandLineParser& p = verb.parser();
         p.addOption(
-            {{"o", "output"}, "Output log (column text: depth R1..R6 P1AZ DEVI HAZI).", "OUT"});
+            {{"o", "output"},
+             "Output log: LAS 2.0 when the name ends in .las, otherwise column text (depth "
+             "R1..RN P1AZ DEVI HAZI).",
+             "OUT"});
         p.addOption({"length", "Well length in metres (default 300).", "M", "300"});
         p.addOption({"step", "Sampling step in metres (default 0.05).", "M", "0.05"});
-        p.addOption(
-            {"profile", "Profile: example or circle (default example).", "NAME", "example"});
+        std::string names;
+        for (const std::string& n : reconstruction::syntheticProfileNames())
+            names += (names.empty() ? "" : ", ") + n;
+        p.addOption({"profile",
+                     QString::fromStdString("Profile, one of " + names +
+                                            " (default example; their exact answers are listed "
+                                            "in docs/analysis.md)."),
+                     "NAME", "example"});
         if (!verb.parse(args, 0)) return kExitOk;
         if (!verb.isSet("output")) throw UsageError("caliper3d synth: -o OUT is required");
         double length = 0, step = 0;
@@ -38,7 +49,11 @@ int runSynth(const QStringList& args) {
         }
         const io::SectionTable table = reconstruction::makeSyntheticWell(spec);
         const std::string out = verb.value("output");
-        io::writeColumnTextFile(out, table);
+        const std::string ext = std::filesystem::path(out).extension().string();
+        if (ext == ".las" || ext == ".LAS")
+            io::writeLasFile(out, table);
+        else
+            io::writeColumnTextFile(out, table);
         std::printf("wrote %s (%zu sections, %.1f m, profile %s)\n", out.c_str(), table.rowCount(),
                     length, verb.value("profile").c_str());
         return kExitOk;

@@ -19,7 +19,7 @@ namespace caliper3d::app {
 
 namespace {
 
-int showWindow(int argc, char** argv, const std::vector<std::string>& files,
+int showWindow(int argc, char** argv, const std::vector<WellSource>& wells,
                const InputOptions& options) {
     QApplication application(argc, argv);
     initGui();
@@ -30,9 +30,8 @@ int showWindow(int argc, char** argv, const std::vector<std::string>& files,
         std::fprintf(stderr, "caliper3d: %s\n", message.toLocal8Bit().constData());
         status = kExitBadInput;
     });
-    window.openWell(QString::fromStdString(files.front()), options);
-    for (std::size_t i = 1; i < files.size(); ++i)
-        window.addWell(QString::fromStdString(files[i]), options);
+    window.openWell(wells.front(), options);
+    for (std::size_t i = 1; i < wells.size(); ++i) window.addWell(wells[i], options);
     // The first frame can stay black until something changes: redraw once shown.
     QTimer::singleShot(100, &window, [&window] { window.update(); });
     const int rc = application.exec();
@@ -51,15 +50,17 @@ int runView(int argc, char** argv, const QStringList& args) {
     return guardedVerb("view", [&]() -> int {
         VerbParser verb("view", "FILE...", "Open wells in the 3D viewer.");
         addInputOptions(verb.parser());
+        addWellSourceOptions(verb.parser());
         if (!verb.parse(args, 1)) return kExitOk;
         const InputOptions options = inputOptionsFrom(verb.parser());
+        const std::vector<WellSource> wells = wellSourcesFrom(verb.parser(), verb.positional());
         if (!haveDisplay()) {
             std::fprintf(
                 stderr,
                 "caliper3d view: no display; use 'caliper3d render' or 'caliper3d export'\n");
             return kExitUsage;
         }
-        return showWindow(argc, argv, verb.positional(), options);
+        return showWindow(argc, argv, wells, options);
     });
 }
 
@@ -72,7 +73,7 @@ int runDefault(int argc, char** argv) {
                      example.c_str());
         return kExitBadInput;
     }
-    if (haveDisplay()) return showWindow(argc, argv, {example}, exampleOptions());
+    if (haveDisplay()) return showWindow(argc, argv, {WellSource{example, {}, {}}}, exampleOptions());
     try {
         scenegraph::initCoin();
         std::filesystem::create_directories("out");

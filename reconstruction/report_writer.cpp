@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "io/las_writer.h"
+
 namespace caliper3d::reconstruction {
 
 namespace {
@@ -19,7 +21,11 @@ void number(std::string& line, double v, int decimals) {
     line += buf;
 }
 
-std::vector<std::size_t> reportedRows(const std::vector<SectionResult>& s, double step) {
+}  // namespace
+
+std::vector<std::size_t> reportedSections(const WellAnalysis& a, const ReportOptions& options) {
+    const std::vector<SectionResult>& s = a.sections;
+    const double step = options.step_m;
     std::vector<std::size_t> rows;
     if (s.empty()) return rows;
     if (!(step > 0.0)) {
@@ -38,14 +44,13 @@ std::vector<std::size_t> reportedRows(const std::vector<SectionResult>& s, doubl
     return rows;
 }
 
-}  // namespace
-
 void writeSectionReport(std::ostream& out, const WellAnalysis& a, const ReportOptions& options) {
     out << "md_m,tvd_m,north_m,east_m,inc_deg,azi_deg,dmin_mm,dmax_mm,ellipticity,major_azimuth_deg,"
            "area_mm2,centre_offset_mm,class,dls_deg_per_30m,bit_mm,equivalent_diameter_mm,"
-           "major_from_high_side_deg,centre_offset_azimuth_deg,repaired_arms\n";
+           "major_from_high_side_deg,centre_offset_azimuth_deg,repaired_arms"
+        << (options.wellhead ? ",easting_m,northing_m,tvdss_m\n" : "\n");
     std::string line;
-    for (std::size_t i : reportedRows(a.sections, options.step_m)) {
+    for (std::size_t i : reportedSections(a, options)) {
         const SectionResult& r = a.sections[i];
         line.clear();
         const double fields[] = {r.md_m, r.tvd_m, r.north_m, r.east_m, r.inc_deg, r.azi_deg,
@@ -66,6 +71,13 @@ void writeSectionReport(std::ostream& out, const WellAnalysis& a, const ReportOp
         }
         line += ',';
         line += std::to_string(r.repairedArms);
+        if (const auto& w = options.wellhead) {
+            const double map[] = {w->easting_m + r.east_m, w->northing_m + r.north_m, r.tvd_m - w->elevation_m};
+            for (double v : map) {
+                line += ',';
+                number(line, v, 4);
+            }
+        }
         line += '\n';
         out << line;
     }
@@ -127,6 +139,70 @@ void writeSectionReport(const std::string& path, const WellAnalysis& a, const Re
     std::ofstream out(path, std::ios::binary);
     if (!out) throw std::runtime_error(path + ": cannot open for writing");
     writeSectionReport(out, a, options);
+    if (!out) throw std::runtime_error(path + ": write failed");
+}
+
+void writeAnalysisLas(std::ostream& out, const WellAnalysis& a, const ReportOptions& options,
+                      const std::string& wellName) {
+    const std::vector<std::size_t> rows = reportedSections(a, options);
+    struct Curve {
+        const char* mnemonic;
+        const char* unit;
+        const char* description;
+        int decimals;  // as the CSV report prints them
+        double (*value)(const SectionResult&);
+    };
+    static const Curve kCurves[] = {
+        {"DEPT", "M", "measured depth", 4, [](const SectionResult& r) { return r.md_m; }},
+        {"TVD", "M", "true vertical depth below the wellhead", 4, [](const SectionResult& r) { return r.tvd_m; }},
+        {"NORTH", "M", "north of the wellhead", 4, [](const SectionResult& r) { return r.north_m; }},
+        {"EAST", "M", "east of the wellhead", 4, [](const SectionResult& r) { return r.east_m; }},
+        {"INC", "DEG", "hole inclination", 3, [](const SectionResult& r) { return r.inc_deg; }},
+        {"AZI", "DEG", "hole azimuth", 3, [](const SectionResult& r) { return r.azi_deg; }},
+        {"DLS", "DEG/30M", "dogleg severity", 3, [](const SectionResult& r) { return r.dls_degPer30m; }},
+        {"BS", "MM", "bit size used as gauge", 2, [](const SectionResult& r) { return r.bit_mm; }},
+        {"DMIN", "MM", "minor axis of the fitted ellipse", 2, [](const SectionResult& r) { return r.dmin_mm; }},
+        {"DMAX", "MM", "major axis of the fitted ellipse", 2, [](const SectionResult& r) { return r.dmax_mm; }},
+        {"ELLIP", "", "ellipticity dmax/dmin", 4, [](const SectionResult& r) { return r.ellipticity; }},
+        {"MAJAZ", "DEG", "azimuth of the major axis, 0-180", 2,
+         [](const SectionResult& r) { return r.majorAzimuth_deg; }},
+        {"MAJHS", "DEG", "major axis clockwise from the high side, 0-180", 2,
+         [](const SectionResult& r) { return r.majorFromHighSide_deg; }},
+        {"AREA", "MM2", "section area", 1, [](const SectionResult& r) { return r.area_mm2; }},
+        {"DEQ", "MM", "diameter of the circle of equal area", 2,
+         [](const SectionResult& r) { return r.equivalentDiameter_mm; }},
+        {"CENOFF", "MM", "tool axis to hole centre", 2, [](const SectionResult& r) { return r.centreOffset_mm; }},
+        {"CENAZ", "DEG", "azimuth from tool axis to hole centre", 2,
+         [](const SectionResult& r) { return r.centreOffsetAzimuth_deg; }},
+        {"CLASS", "", "0 in_gauge 1 undergauge 2 washout 3 breakout 4 keyseat", 0,
+         [](const SectionResult& r) { return static_cast<double>(r.cls); }},
+        {"REPAIRED", "", "arms interpolated on this section", 0,
+         [](const SectionResult& r) { return static_cast<double>(r.repairedArms); }},
+    };
+    // The report's rows may be a subset (--step): gather each curve once.
+    std::vector<std::vector<double>> values;
+    std::vector<io::LasColumn> columns;
+    values.reserve(std::size(kCurves));
+    for (const Curve& c : kCurves) {
+        std::vector<double>& v = values.emplace_back();
+        v.reserve(rows.size());
+        for (std::size_t i : rows) v.push_back(c.value(a.sections[i]));
+        columns.push_back({c.mnemonic, c.unit, c.description, v.data(), 1, c.decimals});
+    }
+    io::LasWriteOptions las;
+    las.wellName = wellName;
+    std::string other = "Computed by caliper3d from the caliper log. CLASS codes:";
+    for (int k = 0; k <= static_cast<int>(BoreholeClass::Keyseat); ++k)
+        other += " " + std::to_string(k) + " " + std::string(className(static_cast<BoreholeClass>(k)));
+    las.other = other + "\n" + formatAnalysisSummary(a);
+    io::writeLasColumns(out, rows.size(), columns, las);
+}
+
+void writeAnalysisLas(const std::string& path, const WellAnalysis& a, const ReportOptions& options,
+                      const std::string& wellName) {
+    std::ofstream out(path, std::ios::binary);
+    if (!out) throw std::runtime_error(path + ": cannot open for writing");
+    writeAnalysisLas(out, a, options, wellName);
     if (!out) throw std::runtime_error(path + ": write failed");
 }
 

@@ -1,32 +1,13 @@
-#include <array>
-#include <cstdio>
 #include <fstream>
 #include <string>
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-
+#include "cli_run.h"
 #include "test_support.h"
 
 namespace {
-
-struct CommandRun {
-    int status = -1;
-    std::string output;  // stdout and stderr together
-};
-
-CommandRun run(const std::string& arguments) {
-    CommandRun r;
-    const std::string command = std::string(CALIPER3D_BINARY) + " " + arguments + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) return r;
-    std::array<char, 4096> buffer{};
-    while (std::fgets(buffer.data(), buffer.size(), pipe)) r.output += buffer.data();
-    const int raw = pclose(pipe);
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    return r;
-}
-
+using caliper3d::test::CommandRun;
+CommandRun run(const std::string& arguments) { return caliper3d::test::runCaliper3d(arguments); }
 }  // namespace
 
 TEST(CommandLineTest, SynthThenExportWritesAnInventorFile) {

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "io/las_reader.h"
 #include "io/log_reader.h"
 
 using namespace caliper3d::io;
@@ -40,7 +41,9 @@ void expectSame(const std::vector<double>& a, const std::vector<double>& b, cons
 TEST(LasWriterTest, ReaderReadsBackExactlyWhatWasWritten) {
     const SectionTable written = sample();
     std::ostringstream out;
-    writeLas(out, written, {"ROUND-TRIP", -999.25});
+    LasWriteOptions options;
+    options.wellName = "ROUND-TRIP";
+    writeLas(out, written, options);
     const LoadedLog read = loadCaliperText(out.str(), "rt.las", ReadOptions{});
     EXPECT_EQ(read.info.format, "LAS 2.0");
     EXPECT_EQ(read.info.wellName, "ROUND-TRIP");
@@ -70,4 +73,34 @@ TEST(LasWriterTest, OptionalCurvesAbsentFromTheTableAreNotWritten) {
     EXPECT_TRUE(read.table.p1az_deg.empty());
     EXPECT_TRUE(read.table.bitSize_mm.empty());
     EXPECT_EQ(read.table.radius_mm, t.radius_mm);
+}
+
+TEST(LasWriterTest, ColumnsWithStrideDecimalsParametersAndOtherReadBack) {
+    // Two rows of a row-major table of three values: a stride of 3 picks one column.
+    const std::vector<double> depth = {10.0, 10.5};
+    const std::vector<double> matrix = {1.23456, 2.0, 3.0, 4.5, 5.0, kNaN};
+    LasWriteOptions options;
+    options.wellName = "COLUMNS";
+    options.parameters.push_back({"BS", "MM", "215.9", "bit size"});
+    options.other = "free text about the curves";
+    std::ostringstream out;
+    writeLasColumns(out, 2,
+                    {{"DEPT", "M", "depth", depth.data(), 1, -1},
+                     {"A", "MM", "first of three", matrix.data(), 3, 2},
+                     {"C", "MM", "third of three", matrix.data() + 2, 3, -1}},
+                    options);
+    const std::string text = out.str();
+    EXPECT_NE(text.find("\n10 1.23 3\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("\n10.5 4.50 -999.25\n"), std::string::npos) << text;
+    Diagnostics diagnostics;
+    const LasLog log = readLas(text, "columns.las", {}, &diagnostics);
+    ASSERT_EQ(log.curves.size(), 3u);
+    EXPECT_EQ(log.curves[1].mnemonic, "A");
+    EXPECT_EQ(log.curves[1].values, (std::vector<double>{1.23, 4.5}));
+    EXPECT_EQ(log.curves[2].values[0], 3.0);
+    EXPECT_TRUE(std::isnan(log.curves[2].values[1]));
+    ASSERT_NE(log.header.parameter("BS"), nullptr);
+    EXPECT_EQ(log.header.parameter("BS")->value, "215.9");
+    EXPECT_NE(log.header.other.find("free text about the curves"), std::string::npos);
+    EXPECT_EQ(log.header.wellItem("WELL")->value, "COLUMNS");
 }

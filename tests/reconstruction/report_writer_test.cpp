@@ -2,10 +2,14 @@
 
 #include <memory>
 #include <sstream>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
 #include <string>
 
 #include <gtest/gtest.h>
 
+#include "io/las_reader.h"
 #include "reconstruction/synthetic_well.h"
 
 using namespace caliper3d;
@@ -40,7 +44,7 @@ TEST(ReportWriterTest, HeaderStartsWithTheExactColumns) {
 
 TEST(ReportWriterTest, StepKeepsOneSectionPerStep) {
     std::ostringstream out;
-    writeSectionReport(out, exampleAnalysis(), ReportOptions{10.0});
+    writeSectionReport(out, exampleAnalysis(), ReportOptions{10.0, {}});
     EXPECT_EQ(lines(out.str()), 1u + 31u);
     EXPECT_NE(out.str().find("\n10.0000,"), std::string::npos);
 }
@@ -59,4 +63,64 @@ TEST(ReportWriterTest, ZoneTableAndSummary) {
 
 TEST(ReportWriterTest, UnwritableFileIsAnError) {
     EXPECT_THROW(writeSectionReport("/nonexistent/dir/out.csv", exampleAnalysis()), std::runtime_error);
+}
+
+TEST(ReportWriterTest, AnalysisLasHoldsTheReportedSectionsCurveByCurve) {
+    const WellAnalysis a = exampleAnalysis();
+    const ReportOptions every10m{10.0, {}};
+    std::ostringstream out;
+    writeAnalysisLas(out, a, every10m, "EXAMPLE");
+    io::Diagnostics diagnostics;
+    const io::LasLog log = io::readLas(out.str(), "analysis.las", {}, &diagnostics);
+    EXPECT_EQ(diagnostics.warningCount, 0u);
+    EXPECT_EQ(log.header.wellItem("WELL")->value, "EXAMPLE");
+    const std::vector<std::size_t> rows = reportedSections(a, every10m);
+    ASSERT_EQ(rows.size(), 31u);
+    ASSERT_EQ(log.rowCount(), rows.size());
+    auto curve = [&](const std::string& name) -> const std::vector<double>& {
+        for (const io::LasCurve& c : log.curves)
+            if (c.mnemonic == name) return c.values;
+        ADD_FAILURE() << "no curve " << name;
+        static const std::vector<double> none;
+        return none;
+    };
+    const auto& depth = curve("DEPT");
+    const auto& tvd = curve("TVD");
+    const auto& dmax = curve("DMAX");
+    const auto& cls = curve("CLASS");
+    const auto& majaz = curve("MAJAZ");
+    ASSERT_EQ(depth.size(), rows.size());
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+        const SectionResult& r = a.sections[rows[k]];
+        EXPECT_NEAR(depth[k], r.md_m, 5e-5);
+        EXPECT_NEAR(tvd[k], r.tvd_m, 5e-5);
+        EXPECT_NEAR(dmax[k], r.dmax_mm, 5e-3);
+        EXPECT_EQ(cls[k], static_cast<double>(r.cls)) << r.md_m;
+        if (std::isnan(r.majorAzimuth_deg)) EXPECT_TRUE(std::isnan(majaz[k]));
+        else EXPECT_NEAR(majaz[k], r.majorAzimuth_deg, 5e-3);
+    }
+    // The example's breakout spans 60-80 m: the 70 m row carries the breakout code.
+    EXPECT_EQ(cls[7], static_cast<double>(BoreholeClass::Breakout));
+    EXPECT_NE(log.header.other.find("3 breakout"), std::string::npos);
+}
+
+TEST(ReportWriterTest, WellheadAddsMapCoordinatesAndDepthBelowDatum) {
+    const WellAnalysis a = exampleAnalysis();
+    ReportOptions options;
+    options.wellhead = Wellhead{500000.0, 6800000.0, 30.0};
+    std::ostringstream out;
+    writeSectionReport(out, a, options);
+    std::istringstream in(out.str());
+    std::string header, line;
+    std::getline(in, header);
+    EXPECT_NE(header.find(",repaired_arms,easting_m,northing_m,tvdss_m"), std::string::npos);
+    // The last row: the example builds towards azimuth 45 from 100 m.
+    std::string last;
+    while (std::getline(in, line)) last = line;
+    const SectionResult& r = a.sections.back();
+    char expected[128];
+    std::snprintf(expected, sizeof expected, ",%.4f,%.4f,%.4f", 500000.0 + r.east_m, 6800000.0 + r.north_m,
+                  r.tvd_m - 30.0);
+    ASSERT_GT(r.east_m, 1.0);
+    EXPECT_EQ(last.substr(last.size() - std::strlen(expected)), expected);
 }

@@ -1,0 +1,132 @@
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <thread>
+#include <tuple>
+
+#include "app/commands.h"
+#include "app/input_options.h"
+#include "app/verb_parser.h"
+#include "io/number_parsing.h"
+#include "reconstruction/report_writer.h"
+#include "reconstruction/rule_settings.h"
+#include "reconstruction/well_analysis.h"
+
+namespace caliper3d::app {
+
+namespace {
+
+double nonNegative(const VerbParser& verb, const char* name) {
+    double v = 0.0;
+    const std::string text = verb.value(name);
+    if (!io::parseNumber(text, v) || !std::isfinite(v) || v < 0.0)
+        throw UsageError(std::string("caliper3d report: --") + name +
+                         " takes a number >= 0, found '" + text + "'");
+    return v;
+}
+
+// "TOP,BOTTOM" in metres of measured depth.
+std::pair<double, double> interval(const std::string& text) {
+    const std::size_t comma = text.find(',');
+    double top = 0.0, bottom = 0.0;
+    if (comma == std::string::npos || !io::parseNumber(text.substr(0, comma), top) ||
+        !io::parseNumber(text.substr(comma + 1), bottom) || !(bottom > top))
+        throw UsageError("caliper3d report: --interval takes TOP,BOTTOM in metres with TOP < "
+                         "BOTTOM, found '" + text + "'");
+    return {top, bottom};
+}
+
+}  // namespace
+
+int runReport(const QStringList& args) {
+    return guardedVerb("report", [&]() -> int {
+        VerbParser verb("report", "FILE -o OUT.csv",
+                        "Analyse every section of a well: shape, class, zones, volumes.");
+        QCommandLineParser& p = verb.parser();
+        p.addOption({{"o", "output"}, "Per-section report (CSV; '-' for standard output).", "OUT"});
+        p.addOption({"step", "One row every this many metres (the nearest section; default: every section).",
+                     "METRES", "0"});
+        p.addOption({"zones", "Also write the zone table (CSV).", "ZONES"});
+        p.addOption({"las", "Also write the computed curves as LAS 2.0.", "OUT.las"});
+        p.addOption({"casing-od", "Casing outer diameter for the annular volumes (e.g. 7in).", "LENGTH"});
+        p.addOption({"excess", "Cement excess as a fraction (0.3 = 30 %; default 0).", "F", "0"});
+        p.addOption({"interval", "Depth interval of the volumes, TOP,BOTTOM in metres (default: the log).",
+                     "TOP,BOTTOM"});
+        p.addOption({"rule",
+                     "Set a classification threshold, NAME=VALUE (repeatable); 'list' prints them "
+                     "with their defaults.",
+                     "NAME=VALUE"});
+        p.addOption({"threads", "Analysis threads (default: the machine's cores).", "N"});
+        addInputOptions(p);
+        addWellSourceOptions(p);
+        if (!verb.parse(args, 0)) return kExitOk;
+
+        reconstruction::AnalysisOptions analysis;
+        for (const QString& rule : p.values("rule")) {
+            if (rule == "list") {
+                std::fputs(reconstruction::describeRules(analysis.rules).c_str(), stdout);
+                return kExitOk;
+            }
+            try {
+                reconstruction::applyRuleSetting(analysis.rules, rule.toStdString());
+            } catch (const std::invalid_argument& e) {
+                throw UsageError(std::string("caliper3d report: --rule: ") + e.what());
+            }
+        }
+        const std::vector<std::string> files = verb.positional();
+        if (files.size() != 1)
+            throw UsageError("caliper3d report: give exactly one FILE (found " +
+                             std::to_string(files.size()) + "); run it once per well");
+        if (!verb.isSet("output")) throw UsageError("caliper3d report: -o OUT.csv is required");
+        const InputOptions options = inputOptionsFrom(p);
+        const WellSource well = wellSourcesFrom(p, files).front();
+
+        reconstruction::ReportOptions report;
+        report.step_m = nonNegative(verb, "step");
+        report.wellhead = well.wellhead;
+        if (verb.isSet("casing-od"))
+            analysis.volume.casingOd_mm = parseLength_mm(verb.value("casing-od"), "--casing-od");
+        analysis.volume.excess = nonNegative(verb, "excess");
+        if (verb.isSet("interval"))
+            std::tie(analysis.volume.top_m, analysis.volume.bottom_m) = interval(verb.value("interval"));
+        if (verb.isSet("threads")) {
+            bool ok = false;
+            analysis.threads = p.value("threads").toInt(&ok);
+            if (!ok || analysis.threads < 1 || analysis.threads > 256)
+                throw UsageError("caliper3d report: --threads takes a whole number from 1 to 256");
+        } else {
+            analysis.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+        }
+
+        io::Diagnostics diagnostics;
+        auto table = std::make_shared<const io::SectionTable>(readWellFile(well.path, options, &diagnostics));
+        const reconstruction::WellGeometry geometry(table, geometryOptions(options, well, sceneOrigin({well})));
+        const reconstruction::WellAnalysis result = reconstruction::analyseWell(geometry, analysis);
+
+        const std::string out = verb.value("output");
+        const bool toStdout = out == "-";
+        if (toStdout)
+            reconstruction::writeSectionReport(std::cout, result, report);
+        else
+            reconstruction::writeSectionReport(out, result, report);
+        if (verb.isSet("zones")) reconstruction::writeZoneReport(verb.value("zones"), result);
+        if (verb.isSet("las"))
+            reconstruction::writeAnalysisLas(verb.value("las"), result, report,
+                                             std::filesystem::path(well.path).stem().string());
+
+        // With the report on standard output, everything else goes to standard error.
+        FILE* info = toStdout ? stderr : stdout;
+        std::fprintf(info, "%s: %zu sections, %zu reported, %zu zones%s\n", well.path.c_str(),
+                     result.sections.size(), reconstruction::reportedSections(result, report).size(),
+                     result.zones.size(), well.surveyPath.empty() ? "" : (", path from " + well.surveyPath).c_str());
+        std::fputs(reconstruction::formatAnalysisSummary(result).c_str(), info);
+        printWarnings(diagnostics);
+        if (!toStdout) std::printf("wrote %s\n", out.c_str());
+        return kExitOk;
+    });
+}
+
+}  // namespace caliper3d::app

@@ -1,0 +1,213 @@
+// caliper3d report: the verb end to end on synthetic wells with known answers
+// (synth profiles, an analytic survey) and on the real FMI log.
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "cli_run.h"
+#include "test_support.h"
+
+using caliper3d::test::CommandRun;
+using caliper3d::test::runCaliper3d;
+using caliper3d::test::scratch;
+
+namespace {
+
+// A CSV file as rows of named fields.
+struct Csv {
+    std::vector<std::string> names;
+    std::vector<std::map<std::string, std::string>> rows;
+    double number(std::size_t row, const std::string& name) const {
+        const std::string& text = rows.at(row).at(name);
+        return text.empty() ? std::nan("") : std::stod(text);
+    }
+};
+
+std::vector<std::string> split(const std::string& line) {
+    std::vector<std::string> out;
+    std::stringstream in(line);
+    std::string field;
+    while (std::getline(in, field, ',')) out.push_back(field);
+    if (!line.empty() && line.back() == ',') out.emplace_back();
+    return out;
+}
+
+Csv parseCsv(std::istream& in) {
+    Csv csv;
+    std::string line;
+    if (!std::getline(in, line)) return csv;
+    csv.names = split(line);
+    while (std::getline(in, line)) {
+        const std::vector<std::string> fields = split(line);
+        EXPECT_EQ(fields.size(), csv.names.size()) << line;
+        std::map<std::string, std::string> row;
+        for (std::size_t k = 0; k < fields.size() && k < csv.names.size(); ++k) row[csv.names[k]] = fields[k];
+        csv.rows.push_back(std::move(row));
+    }
+    return csv;
+}
+
+Csv readCsv(const std::filesystem::path& path) {
+    std::ifstream in(path);
+    return parseCsv(in);
+}
+
+std::string synth(const std::string& profile, double length, double step) {
+    const std::string log = scratch("report_" + profile + ".txt").string();
+    const CommandRun r = runCaliper3d("synth -o " + log + " --profile " + profile + " --length " +
+                                      std::to_string(length) + " --step " + std::to_string(step));
+    EXPECT_EQ(r.status, 0) << r.output;
+    return log;
+}
+
+}  // namespace
+
+TEST(ReportCommandTest, KeyseatProfileIsClassedOnItsIntervalWithZones) {
+    // synth profile "keyseat" (reconstruction/synthetic_well.h): over 0.6-0.8 L
+    // an ellipse with its major axis on the high side of a build section.
+    const std::string log = synth("keyseat", 300.0, 0.25);
+    const auto csv = scratch("report_keyseat.csv");
+    const auto zones = scratch("report_keyseat_zones.csv");
+    const CommandRun r = runCaliper3d("report " + log + " -o " + csv.string() + " --zones " +
+                                      zones.string() + " --bit-size 215.9mm");
+    ASSERT_EQ(r.status, 0) << r.output;
+    const Csv report = readCsv(csv);
+    const std::vector<std::string> required = {
+        "md_m",    "tvd_m",       "north_m",           "east_m",   "inc_deg",          "azi_deg", "dmin_mm",
+        "dmax_mm", "ellipticity", "major_azimuth_deg", "area_mm2", "centre_offset_mm", "class"};
+    ASSERT_GE(report.names.size(), required.size());
+    for (std::size_t k = 0; k < required.size(); ++k) EXPECT_EQ(report.names[k], required[k]);
+    ASSERT_EQ(report.rows.size(), 1201u);
+    std::size_t keyseats = 0;
+    for (std::size_t i = 0; i < report.rows.size(); ++i) {
+        const double md = report.number(i, "md_m");
+        const std::string& cls = report.rows[i].at("class");
+        if (md > 181.0 && md < 239.0) {
+            EXPECT_EQ(cls, "keyseat") << md;
+        } else if (md < 179.0 || md > 241.0) {
+            EXPECT_EQ(cls, "in_gauge") << md;
+        }
+        keyseats += cls == "keyseat";
+        const double azimuth = report.number(i, "major_azimuth_deg");
+        if (!std::isnan(azimuth)) {
+            EXPECT_GE(azimuth, 0.0);
+            EXPECT_LT(azimuth, 180.0);
+        }
+    }
+    EXPECT_GT(keyseats, 230u);
+    const Csv zoneTable = readCsv(zones);
+    ASSERT_EQ(zoneTable.rows.size(), 1u);
+    EXPECT_EQ(zoneTable.rows[0].at("kind"), "keyseat");
+    EXPECT_NEAR(zoneTable.number(0, "top_m"), 180.0, 0.5);
+    EXPECT_NEAR(zoneTable.number(0, "bottom_m"), 240.0, 0.5);
+    EXPECT_NE(r.output.find("wrote " + csv.string()), std::string::npos) << r.output;
+}
+
+TEST(ReportCommandTest, SurveyReplacesTheLogsPathAndMatchesTheExactArc) {
+    // A vertical log, and a survey that builds at 3 deg/30 m towards east from
+    // the surface: the path is a circular arc of radius R = 30 / (3 deg in
+    // radians) = 572.958 m; at 100 m the hole is 10 deg over, TVD = R sin 10,
+    // east = R (1 - cos 10).
+    const std::string log = synth("circle", 100.0, 0.5);
+    const auto survey = scratch("report_build_survey.csv");
+    {
+        std::ofstream out(survey);
+        out << "MD,Inc,Azi\n";
+        for (int md = 0; md <= 100; md += 10) out << md << "," << md * 0.1 << ",90\n";
+    }
+    const auto csv = scratch("report_survey.csv");
+    const CommandRun r = runCaliper3d("report " + log + " -o " + csv.string() + " --survey " + survey.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("path from " + survey.string()), std::string::npos) << r.output;
+    const Csv report = readCsv(csv);
+    ASSERT_EQ(report.rows.size(), 201u);
+    const std::size_t last = report.rows.size() - 1;
+    const double radius = 30.0 / (3.0 * M_PI / 180.0);
+    const double theta = 10.0 * M_PI / 180.0;
+    EXPECT_NEAR(report.number(last, "md_m"), 100.0, 1e-9);
+    EXPECT_NEAR(report.number(last, "tvd_m"), radius * std::sin(theta), 1e-3);
+    EXPECT_NEAR(report.number(last, "east_m"), radius * (1.0 - std::cos(theta)), 1e-3);
+    EXPECT_NEAR(report.number(last, "north_m"), 0.0, 1e-3);
+    EXPECT_NEAR(report.number(last, "inc_deg"), 10.0, 1e-3);
+    EXPECT_NEAR(report.number(last, "dls_deg_per_30m"), 3.0, 1e-3);
+    // Half way between stations too (interpolated along the arc).
+    EXPECT_NEAR(report.number(10, "inc_deg"), 0.5, 1e-3);  // 5 m
+}
+
+TEST(ReportCommandTest, WellheadLasAndStandardOutput) {
+    const std::string log = synth("example", 100.0, 0.5);
+    const auto las = scratch("report_example.las");
+    std::filesystem::remove(las);
+    const CommandRun r = runCaliper3d("report " + log + " -o - --step 10 --las " + las.string() +
+                                          " --wellhead 512300.5,6801200.25,25 --bit-size 8.5in",
+                                      false);
+    ASSERT_EQ(r.status, 0) << r.output;
+    std::istringstream in(r.output);
+    const Csv report = parseCsv(in);
+    ASSERT_EQ(report.rows.size(), 11u) << r.output;
+    EXPECT_EQ(report.names.back(), "tvdss_m");
+    EXPECT_NEAR(report.number(0, "easting_m"), 512300.5, 1e-9);
+    EXPECT_NEAR(report.number(0, "northing_m"), 6801200.25, 1e-9);
+    EXPECT_NEAR(report.number(0, "tvdss_m"), -25.0, 1e-9);
+    std::ifstream lasIn(las);
+    std::string first;
+    std::getline(lasIn, first);
+    EXPECT_EQ(first, "~Version information");
+}
+
+TEST(ReportCommandTest, BadSurveyIsBadInputNamingItsFileAndLine) {
+    const std::string log = synth("circle", 20.0, 0.5);
+    const auto survey = scratch("report_bad_survey.csv");
+    { std::ofstream(survey) << "MD,Inc,Azi\n0,0,0\n10,abc,0\n20,1,0\n"; }
+    const CommandRun r = runCaliper3d("report " + log + " -o " + scratch("report_bad.csv").string() +
+                                      " --survey " + survey.string());
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find(survey.string() + ":3"), std::string::npos) << r.output;
+}
+
+TEST(ReportCommandTest, BadUsageExitsTwo) {
+    const std::string log = synth("circle", 20.0, 0.5);
+    const std::string out = " -o " + scratch("report_usage.csv").string();
+    EXPECT_EQ(runCaliper3d("report " + log).status, 2);                              // no -o
+    EXPECT_EQ(runCaliper3d("report " + log + " " + log + out).status, 2);            // two wells
+    EXPECT_EQ(runCaliper3d("report " + log + out + " --rule washout=3").status, 2);  // unknown rule
+    EXPECT_EQ(runCaliper3d("report " + log + out + " --step -1").status, 2);
+    EXPECT_EQ(runCaliper3d("report " + log + out + " --interval 30,10").status, 2);
+    EXPECT_EQ(runCaliper3d("report " + log + out + " --wellhead 1,2").status, 2);
+    EXPECT_EQ(runCaliper3d("report " + log + out + " --casing-od seven").status, 2);
+    EXPECT_EQ(runCaliper3d("export " + log + " -o x.iv --survey a.csv --survey b.csv").status, 2);
+    const CommandRun rules = runCaliper3d("report --rule list");
+    EXPECT_EQ(rules.status, 0);
+    EXPECT_NE(rules.output.find("washout_mm=12.7"), std::string::npos) << rules.output;
+}
+
+TEST(ReportCommandTest, RuleChangesTheClassification) {
+    // The washout profile: a 255.9 mm circle in a 215.9 mm hole (+40 mm). With
+    // the washout threshold raised past 40 mm it is no longer a washout.
+    const std::string log = synth("washout", 100.0, 0.5);
+    const auto csv = scratch("report_rule.csv");
+    const CommandRun normal = runCaliper3d("report " + log + " -o " + csv.string());
+    ASSERT_EQ(normal.status, 0) << normal.output;
+    EXPECT_EQ(readCsv(csv).rows[100].at("class"), "washout");  // 50 m
+    const CommandRun raised = runCaliper3d("report " + log + " -o " + csv.string() + " --rule washout_mm=45");
+    ASSERT_EQ(raised.status, 0) << raised.output;
+    EXPECT_EQ(readCsv(csv).rows[100].at("class"), "in_gauge");
+}
+
+TEST(ReportCommandTest, RealFmiLogReportsPadAzimuthOffsetNearZero) {
+    const auto fmi = caliper3d::test::sharedData() / "real" / "1AA063409108W400_FMI_SONIC_MAIN.las";
+    CALIPER3D_REQUIRE_DATA(fmi);
+    const auto csv = scratch("report_fmi.csv");
+    const CommandRun r = runCaliper3d("report " + fmi.string() + " -o " + csv.string() + " --step 1");
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_GT(readCsv(csv).rows.size(), 100u);
+    const std::string key = "P1AZ - (HAZI+RB): mean ";
+    const std::size_t at = r.output.find(key);
+    ASSERT_NE(at, std::string::npos) << r.output;
+    EXPECT_LT(std::abs(std::stod(r.output.substr(at + key.size()))), 1.5) << r.output;
+}

@@ -1,0 +1,44 @@
+#include "app/scene_assembly.h"
+
+#include <gtest/gtest.h>
+
+#include "io/column_text_writer.h"
+#include "reconstruction/synthetic_well.h"
+#include "scenegraph/main_thread.h"
+#include "test_support.h"
+
+using namespace caliper3d;
+
+TEST(SceneAssemblyTest, WellheadsPlaceWellsRelativeToTheFirst) {
+    scenegraph::initCoin();
+    const auto log = test::scratch("assembly_circle.txt");
+    io::writeColumnTextFile(log.string(), reconstruction::makeSyntheticWell(
+                                              reconstruction::syntheticProfile("circle", 20.0, 0.5)));
+    app::WellSource first{log.string(), {}, reconstruction::Wellhead{1000.0, 2000.0, 50.0}};
+    app::WellSource second{log.string(), {}, reconstruction::Wellhead{1100.0, 1950.0, 40.0}};
+    const app::AssembledScene scene = app::assembleScene({first, second}, app::InputOptions{});
+    ASSERT_EQ(scene.wells, 2);
+    ASSERT_EQ(scene.failures, 0);
+    // Analysis frame (north, east, down) of the top section of each well: the
+    // second is 50 m south, 100 m east and, 10 m lower, 10 m further down.
+    const reconstruction::Ned a = scene.geometries[0]->centre(0);
+    const reconstruction::Ned b = scene.geometries[1]->centre(0);
+    EXPECT_DOUBLE_EQ(a.x, 0.0);
+    EXPECT_DOUBLE_EQ(a.y, 0.0);
+    EXPECT_DOUBLE_EQ(a.z, 0.0);
+    EXPECT_DOUBLE_EQ(b.x, -50.0);
+    EXPECT_DOUBLE_EQ(b.y, 100.0);
+    EXPECT_DOUBLE_EQ(b.z, 10.0);
+}
+
+TEST(SceneAssemblyTest, AMissingSurveyFailsThatWellOnly) {
+    scenegraph::initCoin();
+    const auto log = test::scratch("assembly_circle2.txt");
+    io::writeColumnTextFile(log.string(), reconstruction::makeSyntheticWell(
+                                              reconstruction::syntheticProfile("circle", 20.0, 0.5)));
+    app::WellSource good{log.string(), {}, {}};
+    app::WellSource bad{log.string(), test::scratch("no_such_survey.csv").string(), {}};
+    const app::AssembledScene scene = app::assembleScene({bad, good}, app::InputOptions{});
+    EXPECT_EQ(scene.wells, 1);
+    EXPECT_EQ(scene.failures, 1);
+}
