@@ -68,21 +68,27 @@ InputOptions inputOptionsFrom(const QCommandLineParser& parser) {
     if (parser.isSet("radius-unit")) o.read.radiusUnit = unit(parser, "radius-unit");
     auto list = [&](const char* name) {
         std::vector<std::string> out;
-        for (const QString& s : parser.value(name).split(',', Qt::SkipEmptyParts)) out.push_back(s.trimmed().toStdString());
+        for (const QString& s : parser.value(name).split(',', Qt::SkipEmptyParts))
+            out.push_back(s.trimmed().toStdString());
         return out;
     };
     if (parser.isSet("radii")) o.read.roles.radii = list("radii");
     if (parser.isSet("diameters")) o.read.roles.diameters = list("diameters");
     if (o.read.roles.radii.size() == 1 || o.read.roles.radii.size() > 256)
         throw UsageError("--radii: expected 3 to 256 curve names separated by commas");
-    if (!o.read.roles.diameters.empty() && (o.read.roles.diameters.size() < 2 || o.read.roles.diameters.size() > 4))
+    if (!o.read.roles.diameters.empty() &&
+        (o.read.roles.diameters.size() < 2 || o.read.roles.diameters.size() > 4))
         throw UsageError("--diameters: expected 2 to 4 curve names separated by commas");
     o.read.rowStep_m = number(parser, "row-step");
-    if (!(o.read.rowStep_m > 0.0)) throw UsageError("--row-step: expected a positive number of metres");
+    if (!(o.read.rowStep_m > 0.0))
+        throw UsageError("--row-step: expected a positive number of metres");
     const std::string nulls = parser.value("nulls").toStdString();
-    if (nulls == "declared") o.read.nullPolicy = io::NullPolicy::Declared;
-    else if (nulls == "common") o.read.nullPolicy = io::NullPolicy::Common;
-    else throw UsageError("--nulls: expected 'declared' or 'common', found '" + nulls + "'");
+    if (nulls == "declared")
+        o.read.nullPolicy = io::NullPolicy::Declared;
+    else if (nulls == "common")
+        o.read.nullPolicy = io::NullPolicy::Common;
+    else
+        throw UsageError("--nulls: expected 'declared' or 'common', found '" + nulls + "'");
     const double points = number(parser, "points");
     if (points < 3 || points > 1024 || points != std::floor(points))
         throw UsageError("--points: expected a whole number from 3 to 1024");
@@ -123,10 +129,11 @@ double parseLength_mm(const std::string& value, const std::string& option) {
 }
 
 void addWellSourceOptions(QCommandLineParser& parser) {
-    parser.addOption({"survey",
-                      "Deviation survey (MD, inclination, azimuth) for the well path instead of the "
-                      "log's DEVI/HAZI; once per FILE, in order.",
-                      "FILE"});
+    parser.addOption(
+        {"survey",
+         "Deviation survey (MD, inclination, azimuth) for the well path instead of the "
+         "log's DEVI/HAZI; once per FILE, in order.",
+         "FILE"});
     parser.addOption({"wellhead",
                       "Wellhead easting, northing and elevation of the depth reference in metres "
                       "(e.g. 512300,6801200,25.5); once per FILE, in order. The first well's "
@@ -142,13 +149,14 @@ reconstruction::Wellhead parseWellhead(const std::string& text) {
         const std::size_t comma = text.find(',', start);
         const bool last = k == 2;
         if (last != (comma == std::string::npos) ||
-            !io::parseNumber(text.substr(start, comma == std::string::npos ? std::string::npos
-                                                                           : comma - start),
-                             v[k]) ||
+            !io::parseNumber(
+                text.substr(start, comma == std::string::npos ? std::string::npos : comma - start),
+                v[k]) ||
             !std::isfinite(v[k]))
-            throw UsageError("--wellhead: expected easting,northing,elevation in metres (three "
-                             "numbers with a decimal point), found '" +
-                             text + "'");
+            throw UsageError(
+                "--wellhead: expected easting,northing,elevation in metres (three "
+                "numbers with a decimal point), found '" +
+                text + "'");
         start = comma + 1;
     }
     return {v[0], v[1], v[2]};
@@ -186,8 +194,7 @@ reconstruction::GeometryOptions geometryOptions(const InputOptions& options) {
     return g;
 }
 
-reconstruction::GeometryOptions geometryOptions(const InputOptions& options,
-                                                const WellSource& well,
+reconstruction::GeometryOptions geometryOptions(const InputOptions& options, const WellSource& well,
                                                 const reconstruction::Wellhead& origin) {
     reconstruction::GeometryOptions g = geometryOptions(options);
     if (!well.surveyPath.empty()) {

@@ -7,8 +7,8 @@
 
 #include <QCommandLineParser>
 
-#include "io/log_reader.h"
 #include "io/diagnostics.h"
+#include "io/log_reader.h"
 #include "io/section_table.h"
 #include "reconstruction/well_geometry.h"
 #include "reconstruction/wellhead.h"
@@ -61,8 +61,7 @@ reconstruction::GeometryOptions geometryOptions(const InputOptions& options);
 // Geometry options of one well of a scene whose origin is the wellhead
 // `origin`: reads the well's survey (throws io::ParseError naming the survey
 // file and line) and offsets it by its wellhead.
-reconstruction::GeometryOptions geometryOptions(const InputOptions& options,
-                                                const WellSource& well,
+reconstruction::GeometryOptions geometryOptions(const InputOptions& options, const WellSource& well,
                                                 const reconstruction::Wellhead& origin);
 // The scene origin: the first well's wellhead (zero when none is given).
 reconstruction::Wellhead sceneOrigin(const std::vector<WellSource>& wells);

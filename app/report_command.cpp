@@ -34,8 +34,10 @@ std::pair<double, double> interval(const std::string& text) {
     double top = 0.0, bottom = 0.0;
     if (comma == std::string::npos || !io::parseNumber(text.substr(0, comma), top) ||
         !io::parseNumber(text.substr(comma + 1), bottom) || !(bottom > top))
-        throw UsageError("caliper3d report: --interval takes TOP,BOTTOM in metres with TOP < "
-                         "BOTTOM, found '" + text + "'");
+        throw UsageError(
+            "caliper3d report: --interval takes TOP,BOTTOM in metres with TOP < "
+            "BOTTOM, found '" +
+            text + "'");
     return {top, bottom};
 }
 
@@ -47,13 +49,17 @@ int runReport(const QStringList& args) {
                         "Analyse every section of a well: shape, class, zones, volumes.");
         QCommandLineParser& p = verb.parser();
         p.addOption({{"o", "output"}, "Per-section report (CSV; '-' for standard output).", "OUT"});
-        p.addOption({"step", "One row every this many metres (the nearest section; default: every section).",
-                     "METRES", "0"});
+        p.addOption(
+            {"step",
+             "One row every this many metres (the nearest section; default: every section).",
+             "METRES", "0"});
         p.addOption({"zones", "Also write the zone table (CSV).", "ZONES"});
         p.addOption({"las", "Also write the computed curves as LAS 2.0.", "OUT.las"});
-        p.addOption({"casing-od", "Casing outer diameter for the annular volumes (e.g. 7in).", "LENGTH"});
+        p.addOption(
+            {"casing-od", "Casing outer diameter for the annular volumes (e.g. 7in).", "LENGTH"});
         p.addOption({"excess", "Cement excess as a fraction (0.3 = 30 %; default 0).", "F", "0"});
-        p.addOption({"interval", "Depth interval of the volumes, TOP,BOTTOM in metres (default: the log).",
+        p.addOption({"interval",
+                     "Depth interval of the volumes, TOP,BOTTOM in metres (default: the log).",
                      "TOP,BOTTOM"});
         p.addOption({"rule",
                      "Set a classification threshold, NAME=VALUE (repeatable); 'list' prints them "
@@ -91,7 +97,8 @@ int runReport(const QStringList& args) {
             analysis.volume.casingOd_mm = parseLength_mm(verb.value("casing-od"), "--casing-od");
         analysis.volume.excess = nonNegative(verb, "excess");
         if (verb.isSet("interval"))
-            std::tie(analysis.volume.top_m, analysis.volume.bottom_m) = interval(verb.value("interval"));
+            std::tie(analysis.volume.top_m, analysis.volume.bottom_m) =
+                interval(verb.value("interval"));
         if (verb.isSet("threads")) {
             bool ok = false;
             analysis.threads = p.value("threads").toInt(&ok);
@@ -102,8 +109,10 @@ int runReport(const QStringList& args) {
         }
 
         io::Diagnostics diagnostics;
-        auto table = std::make_shared<const io::SectionTable>(readWellFile(well.path, options, &diagnostics));
-        const reconstruction::WellGeometry geometry(table, geometryOptions(options, well, sceneOrigin({well})));
+        auto table = std::make_shared<const io::SectionTable>(
+            readWellFile(well.path, options, &diagnostics));
+        const reconstruction::WellGeometry geometry(
+            table, geometryOptions(options, well, sceneOrigin({well})));
         const reconstruction::WellAnalysis result = reconstruction::analyseWell(geometry, analysis);
 
         const std::string out = verb.value("output");
@@ -120,8 +129,9 @@ int runReport(const QStringList& args) {
         // With the report on standard output, everything else goes to standard error.
         FILE* info = toStdout ? stderr : stdout;
         std::fprintf(info, "%s: %zu sections, %zu reported, %zu zones%s\n", well.path.c_str(),
-                     result.sections.size(), reconstruction::reportedSections(result, report).size(),
-                     result.zones.size(), well.surveyPath.empty() ? "" : (", path from " + well.surveyPath).c_str());
+                     result.sections.size(),
+                     reconstruction::reportedSections(result, report).size(), result.zones.size(),
+                     well.surveyPath.empty() ? "" : (", path from " + well.surveyPath).c_str());
         std::fputs(reconstruction::formatAnalysisSummary(result).c_str(), info);
         printWarnings(diagnostics);
         if (!toStdout) std::printf("wrote %s\n", out.c_str());

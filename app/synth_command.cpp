@@ -16,11 +16,10 @@ int runSynth(const QStringList& args) {
     return guardedVerb("synth", [&]() -> int {
         VerbParser verb("synth", "-o OUT", "Write a synthetic caliper log with known features.");
         QCommandLineParser& p = verb.parser();
-        p.addOption(
-            {{"o", "output"},
-             "Output log: LAS 2.0 when the name ends in .las, otherwise column text (depth "
-             "R1..RN P1AZ DEVI HAZI).",
-             "OUT"});
+        p.addOption({{"o", "output"},
+                     "Output log: LAS 2.0 when the name ends in .las, otherwise column text (depth "
+                     "R1..RN P1AZ DEVI HAZI).",
+                     "OUT"});
         p.addOption({"length", "Well length in metres (default 300).", "M", "300"});
         p.addOption({"step", "Sampling step in metres (default 0.05).", "M", "0.05"});
         std::string names;

@@ -73,7 +73,8 @@ int runDefault(int argc, char** argv) {
                      example.c_str());
         return kExitBadInput;
     }
-    if (haveDisplay()) return showWindow(argc, argv, {WellSource{example, {}, {}}}, exampleOptions());
+    if (haveDisplay())
+        return showWindow(argc, argv, {WellSource{example, {}, {}}}, exampleOptions());
     try {
         scenegraph::initCoin();
         std::filesystem::create_directories("out");
