@@ -11,6 +11,8 @@ HoleVolume holeVolume(const std::vector<double>& md, const std::vector<double>& 
                       const std::vector<double>& bit, const VolumeOptions& o) {
     constexpr double kPi = boost::math::constants::pi<double>();
     HoleVolume v;
+    v.casingOd_mm = o.casingOd_mm;
+    v.excess = o.excess;
     if (md.empty()) return v;
     v.top_m = std::max(o.top_m, md.front());
     v.bottom_m = std::min(o.bottom_m, md.back());

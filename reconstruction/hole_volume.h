@@ -21,6 +21,8 @@ struct HoleVolume {
     double gaugeAnnulus_m3 = 0.0;   // bit-size hole minus casing
     double cement_m3 = 0.0;         // annulus * (1 + excess)
     double gaugeCement_m3 = 0.0;    // gaugeAnnulus * (1 + excess)
+    double casingOd_mm = 0.0;       // as asked for
+    double excess = 0.0;
 };
 
 // md ascending; area_mm2 and bit_mm one per section (bit NaN: the section

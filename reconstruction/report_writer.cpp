@@ -104,18 +104,30 @@ std::string formatAnalysisSummary(const WellAnalysis& a) {
     char buf[512];
     std::string s;
     const BreakoutSummary& b = a.breakouts;
-    std::snprintf(buf, sizeof buf,
-                  "breakouts: %d zones, %.2f m, mean azimuth %.1f deg, circular SD %.1f deg, "
-                  "SHmax %.1f deg, WSM quality %c\n",
-                  b.zoneCount, b.combinedLength_m, b.meanAzimuth_deg, b.circularSd_deg, b.shmaxAzimuth_deg, b.quality);
-    s += buf;
+    if (b.zoneCount == 0) {
+        s += "breakouts: none, WSM quality E\n";
+    } else {
+        std::snprintf(buf, sizeof buf,
+                      "breakouts: %d zone%s, %.2f m, mean azimuth %.1f deg, circular SD %.1f deg, "
+                      "SHmax %.1f deg, WSM quality %c\n",
+                      b.zoneCount, b.zoneCount == 1 ? "" : "s", b.combinedLength_m, b.meanAzimuth_deg,
+                      b.circularSd_deg, b.shmaxAzimuth_deg, b.quality);
+        s += buf;
+    }
     const HoleVolume& v = a.volume;
-    std::snprintf(buf, sizeof buf,
-                  "volume %.2f-%.2f m: hole %.4f m3 (bit size %.4f m3), annulus %.4f m3 (bit size %.4f m3), "
-                  "cement with excess %.4f m3 (bit size %.4f m3)\n",
-                  v.top_m, v.bottom_m, v.hole_m3, v.gaugeHole_m3, v.annulus_m3, v.gaugeAnnulus_m3, v.cement_m3,
-                  v.gaugeCement_m3);
+    const double excessPercent =
+        v.gaugeHole_m3 > 0.0 ? 100.0 * (v.hole_m3 - v.gaugeHole_m3) / v.gaugeHole_m3 : 0.0;
+    std::snprintf(buf, sizeof buf, "hole volume %.2f-%.2f m: %.4f m3 (bit size %.4f m3, %+.1f %%)\n", v.top_m,
+                  v.bottom_m, v.hole_m3, v.gaugeHole_m3, excessPercent);
     s += buf;
+    if (v.casingOd_mm > 0.0 || v.excess > 0.0) {
+        std::snprintf(buf, sizeof buf,
+                      "annulus outside %.1f mm casing %.4f m3 (bit size %.4f m3), cement with %.0f %% excess "
+                      "%.4f m3 (bit size %.4f m3)\n",
+                      v.casingOd_mm, v.annulus_m3, v.gaugeAnnulus_m3, 100.0 * v.excess, v.cement_m3,
+                      v.gaugeCement_m3);
+        s += buf;
+    }
     if (a.padAzimuthOffset.samples > 0) {
         std::snprintf(buf, sizeof buf, "P1AZ - (HAZI+RB): mean %.2f deg, circular SD %.2f deg over %zu sections\n",
                       a.padAzimuthOffset.mean_deg, a.padAzimuthOffset.sd_deg, a.padAzimuthOffset.samples);
