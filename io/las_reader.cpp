@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <limits>
+#include <unordered_map>
 
 #include "io/number_parsing.h"
 #include "io/parse_error.h"
@@ -61,10 +63,14 @@ void splitArrayName(LasCurve& curve) {
     const std::size_t open = curve.mnemonic.find('[');
     const std::size_t close = curve.mnemonic.find(']', open == std::string::npos ? 0 : open);
     if (open == std::string::npos || close == std::string::npos || close <= open + 1) return;
-    double index = 0;
-    if (!parseNumber(std::string_view(curve.mnemonic).substr(open + 1, close - open - 1), index)) return;
+    // A whole number that fits an int, nothing else ("NMR[4e21]" is a name, not an element).
+    const char* first = curve.mnemonic.data() + open + 1;
+    const char* last = curve.mnemonic.data() + close;
+    int index = 0;
+    const auto [end, ec] = std::from_chars(first, last, index);
+    if (ec != std::errc() || end != last || index < 1) return;
     curve.arrayName = curve.mnemonic.substr(0, open);
-    curve.arrayIndex = static_cast<int>(index);
+    curve.arrayIndex = index;
 }
 
 }  // namespace
@@ -84,16 +90,14 @@ std::vector<ColumnSpec> lasColumns(const LasHeader& h, Diagnostics* diagnostics)
     for (const LasItem& item : h.curves)
         columns.push_back({item.mnemonic, item.unit, item.description,
                            item.description.find("{S}") != std::string::npos, item.line});
-    for (std::size_t i = 0; i < columns.size(); ++i) {
-        int copies = 1;
-        for (std::size_t j = i + 1; j < columns.size(); ++j) {
-            if (upper(columns[j].mnemonic) == upper(columns[i].mnemonic) &&
-                columns[j].mnemonic.find(':') == std::string::npos) {
-                warn(columns[j].line, "curve '" + columns[j].mnemonic + "' is declared again; read as '" +
-                                          columns[j].mnemonic + ":" + std::to_string(copies + 1) + "'");
-                columns[j].mnemonic += ":" + std::to_string(++copies);
-            }
-        }
+    // One pass with a map: a header may declare thousands of curves.
+    std::unordered_map<std::string, int> declaredTimes;
+    for (ColumnSpec& c : columns) {
+        const int times = ++declaredTimes[upper(c.mnemonic)];
+        if (times == 1) continue;
+        warn(c.line, "curve '" + c.mnemonic + "' is declared again; read as '" + c.mnemonic + ":" +
+                         std::to_string(times) + "'");
+        c.mnemonic += ":" + std::to_string(times);
     }
     for (const ColumnSpec& c : columns)
         if (c.text) warn(c.line, "curve '" + c.mnemonic + "' holds text; skipped");

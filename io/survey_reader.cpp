@@ -225,15 +225,21 @@ SurveyTable parseSurvey(const std::string& text, const std::string& name,
     };
 
     const int needed = std::max({columns[kMd], columns[kInc], columns[kAzi]}) + 1;
+    // Free text after the last station is a footer; found once, from the end,
+    // so that a long footer costs one pass, not one pass per line.
+    std::size_t lastData = i;
+    for (std::size_t j = lines.size(); j > i; --j)
+        if (!isComment(lines[j - 1]) && isDataLine(lines[j - 1])) {
+            lastData = j - 1;
+            break;
+        }
     for (; i < lines.size(); ++i) {
         if (isComment(lines[i])) continue;
         const std::size_t lineNumber = i + 1;
         const std::vector<Field> fields = split(lines[i], delimiter);
         if (!isDataLine(lines[i])) {
             // Free text after the table ends it; before more stations it is an error.
-            const bool moreData = std::any_of(lines.begin() + static_cast<std::ptrdiff_t>(i) + 1, lines.end(),
-                                              [&](std::string_view l) { return !isComment(l) && isDataLine(l); });
-            if (!moreData && table.stationCount() > 0) break;
+            if (i > lastData && table.stationCount() > 0) break;
             const std::size_t col = static_cast<int>(fields.size()) > columns[kMd]
                                         ? fields[static_cast<std::size_t>(columns[kMd])].column
                                         : 1;
