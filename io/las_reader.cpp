@@ -121,6 +121,7 @@ LasLog readLas(std::string_view text, const std::string& file, const LasReadOpti
         if (diagnostics) diagnostics->warn(file, line, std::move(message));
     };
     if (h.curves.empty()) throw ParseError(file, 0, 0, "expected a ~C (curve information) section, found none");
+    const NullPolicy nullPolicy = h.onlyDeclaredNull ? NullPolicy::Declared : options.nullPolicy;
     if (!h.hasData) throw ParseError(file, 0, 0, "expected a ~A (data) section, found none");
 
     for (const ColumnSpec& spec : lasColumns(h, diagnostics)) {
@@ -151,13 +152,13 @@ LasLog readLas(std::string_view text, const std::string& file, const LasReadOpti
         double v = 0.0;
         if (parseNumber(token, v)) {
             if (curve > 0 && ((h.hasNull && v == h.null) ||
-                              (options.nullPolicy == NullPolicy::Common && isCommonNullNumber(v)))) {
+                              (nullPolicy == NullPolicy::Common && isCommonNullNumber(v)))) {
                 ++target.nulls;
                 return kNull;
             }
             return v;
         }
-        if (curve > 0 && isNullToken(token, options.nullPolicy)) {
+        if (curve > 0 && isNullToken(token, nullPolicy)) {
             ++target.nulls;
             return kNull;
         }

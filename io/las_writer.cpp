@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <stdexcept>
 #include <vector>
@@ -33,6 +34,26 @@ void item(std::ostream& out, const std::string& mnemonic, const std::string& uni
     out << left << middle << " : " << description << "\n";
 }
 
+double valueOf(const Column& c, const SectionTable& t, std::size_t row) {
+    return c.values ? (*c.values)[row] : t.radii(row)[c.arm - 1];
+}
+
+// A NULL value that no true value equals, so that no reading turns into a null.
+double nullAbsentFrom(const std::vector<Column>& columns, const SectionTable& t, double preferred) {
+    std::vector<double> candidates;
+    if (std::isfinite(preferred)) candidates.push_back(preferred);
+    for (double power = 1e3; power <= 1e12; power *= 10.0) candidates.push_back(-(power - 0.75));  // -999.25, -9999.25, ...
+    std::vector<char> taken(candidates.size(), 0);
+    for (std::size_t c = 1; c < columns.size(); ++c)  // the index is never read as null
+        for (std::size_t r = 0; r < t.rowCount(); ++r) {
+            const double v = valueOf(columns[c], t, r);
+            for (std::size_t k = 0; k < candidates.size(); ++k) taken[k] |= v == candidates[k];
+        }
+    for (std::size_t k = 0; k < candidates.size(); ++k)
+        if (!taken[k]) return candidates[k];
+    throw std::invalid_argument("writeLas: every candidate NULL value occurs in the data");
+}
+
 }  // namespace
 
 void writeLas(std::ostream& out, const SectionTable& t, const LasWriteOptions& options) {
@@ -54,23 +75,39 @@ void writeLas(std::ostream& out, const SectionTable& t, const LasWriteOptions& o
     for (const ExtraCurve& e : t.extraCurves)
         if (e.values.size() == rows) columns.push_back({e.mnemonic, e.unit, e.description, &e.values, 0});
 
+    for (std::size_t r = 0; r < rows; ++r)
+        if (!std::isfinite(t.depth_m[r]))
+            throw std::invalid_argument("writeLas: depth of row " + std::to_string(r) + " is not finite");
+    const double null = nullAbsentFrom(columns, t, options.null);
     std::string text;
     auto number = [&](double v) {
         text.clear();
-        put(text, v, options.null);
+        put(text, v, null);
         return text;
     };
+    double step = 0.0;
+    if (rows > 1) {
+        // Regular within a part in a thousand (decimal steps do not add up exactly in binary).
+        const double nominal = (t.depth_m.back() - t.depth_m.front()) / static_cast<double>(rows - 1);
+        step = nominal;
+        for (std::size_t r = 1; r < rows && step != 0.0; ++r)
+            if (std::abs(t.depth_m[r] - t.depth_m[r - 1] - nominal) > 1e-3 * std::abs(nominal)) step = 0.0;
+    }
     out << "~Version information\n";
     item(out, "VERS", "", "2.0", "CWLS log ASCII standard - version 2.0");
     item(out, "WRAP", "", "NO", "one line per depth step");
     out << "~Well information\n";
     item(out, "STRT", "M", rows ? number(t.depth_m.front()) : "0", "start depth");
     item(out, "STOP", "M", rows ? number(t.depth_m.back()) : "0", "stop depth");
-    item(out, "STEP", "M", rows > 1 ? number(t.depth_m[1] - t.depth_m[0]) : "0", "step");
-    item(out, "NULL", "", number(options.null), "null value");
+    char stepText[32];
+    std::snprintf(stepText, sizeof stepText, "%.10g", step);  // nominal: 0.0025, not 0.0024999999999988864
+    item(out, "STEP", "M", stepText, "step (0: irregular)");
+    item(out, "NULL", "", number(null), "null value");
     item(out, "WELL", "", options.wellName, "well");
     out << "~Curve information\n";
     for (const Column& c : columns) item(out, c.mnemonic, c.unit, "", c.description);
+    out << "~Parameter information\n";
+    item(out, "NULLS", "", "DECLARED", "only NULL marks a missing value");
     out << "~ASCII\n";
     std::string line;
     for (std::size_t r = 0; r < rows; ++r) {
@@ -78,7 +115,7 @@ void writeLas(std::ostream& out, const SectionTable& t, const LasWriteOptions& o
         for (std::size_t c = 0; c < columns.size(); ++c) {
             if (c) line.push_back(' ');
             const Column& col = columns[c];
-            put(line, col.values ? (*col.values)[r] : t.radii(r)[col.arm - 1], options.null);
+            put(line, valueOf(col, t, r), null);
         }
         line.push_back('\n');
         out.write(line.data(), static_cast<std::streamsize>(line.size()));

@@ -459,7 +459,7 @@ private:
         m_format.tokens = m_columns.size();  // settled on the first data line
         m_format.hasNull = h.hasNull;
         m_format.null = h.null;
-        m_format.nullPolicy = m_options.nullPolicy;
+        m_format.nullPolicy = h.onlyDeclaredNull ? NullPolicy::Declared : m_options.nullPolicy;
         m_format.depthColumn = m_plan.depthColumn;
         for (const ColumnSpec& c : m_columns) {
             m_format.textColumn.push_back(c.text);

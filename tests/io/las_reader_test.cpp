@@ -114,3 +114,14 @@ TEST(LasReaderTest, ArrayIndexOutsideIntRangeIsAPlainName) {
     EXPECT_EQ(log.curves[4].arrayIndex, 0);
     EXPECT_DOUBLE_EQ(log.curves[1].values[0], 2.0);
 }
+
+TEST(LasReaderTest, AFileThatDeclaresItsNullOnlyKeepsCommonNullNumbers) {
+    const std::string text = std::string(kHeader) + "~P\n NULLS.  DECLARED : only NULL marks a missing value\n" +
+                             "~A\n100.0 9999 -999.25\n100.5 -9999 8.5\n";
+    const LasLog log = readLas(text, "d.las", {}, nullptr);  // the reader's policy: common
+    EXPECT_TRUE(log.header.onlyDeclaredNull);
+    EXPECT_DOUBLE_EQ(log.curves[1].values[0], 9999.0);
+    EXPECT_DOUBLE_EQ(log.curves[1].values[1], -9999.0);
+    EXPECT_TRUE(std::isnan(log.curves[2].values[0]));  // the declared NULL
+    EXPECT_EQ(log.curves[1].nulls, 0u);
+}

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "io/log_reader.h"
+#include "test_support.h"
 
 using namespace caliper3d::io;
 
@@ -70,4 +71,95 @@ TEST(LasWriterTest, OptionalCurvesAbsentFromTheTableAreNotWritten) {
     EXPECT_TRUE(read.table.p1az_deg.empty());
     EXPECT_TRUE(read.table.bitSize_mm.empty());
     EXPECT_EQ(read.table.radius_mm, t.radius_mm);
+}
+
+TEST(LasWriterTest, TrueValuesEqualToNullMarkersReadBackAsValues) {
+    SectionTable t = sample();
+    t.radius_mm[3] = -999.25;               // the preferred NULL: another is chosen
+    t.extraCurves[0].values[1] = 9999.0;    // common nulls, kept because the file declares its NULL only
+    t.extraCurves[0].values[2] = -9999.0;
+    t.extraCurves[0].values[3] = 999.25;
+    std::ostringstream out;
+    writeLas(out, t);
+    EXPECT_NE(out.str().find("NULL.") , std::string::npos);
+    EXPECT_NE(out.str().find(" -9999.25"), std::string::npos) << "NULL not moved off -999.25";
+    const LoadedLog read = loadCaliperText(out.str(), "nulls.las", ReadOptions{});  // default: common nulls
+    expectSame(t.radius_mm, read.table.radius_mm, "radii");
+    expectSame(t.extraCurves[0].values, read.table.extraCurves[0].values, "GR");
+    EXPECT_EQ(read.table.radius_mm[3], -999.25);
+    EXPECT_EQ(read.table.extraCurves[0].values[1], 9999.0);
+    EXPECT_TRUE(std::isnan(read.table.extraCurves[0].values[0]));  // a true null stays null
+}
+
+TEST(LasWriterTest, StepIsNominalWhenRegularAndZeroWhenNot) {
+    SectionTable t = sample();  // 0.0025 m steps
+    auto stepOf = [](const SectionTable& table) {
+        std::ostringstream out;
+        writeLas(out, table);
+        const std::string text = out.str();
+        const std::size_t at = text.find(" STEP.M");
+        std::istringstream line(text.substr(at + 7, text.find('\n', at) - at - 7));
+        std::string value;
+        line >> value;
+        return value;
+    };
+    EXPECT_EQ(stepOf(t), "0.0025");
+    t.depth_m[10] += 0.001;
+    EXPECT_EQ(stepOf(t), "0");
+}
+
+TEST(LasWriterTest, ADepthThatIsNotFiniteIsRefused) {
+    SectionTable t = sample();
+    t.depth_m[5] = kNaN;
+    std::ostringstream out;
+    EXPECT_THROW(writeLas(out, t), std::invalid_argument);
+}
+
+TEST(LasWriterTest, ALargeTableReadBackOnTwoThreadsInSmallBlocksIsExact) {
+    SectionTable t;
+    t.armCount = 8;
+    for (int r = 0; r < 20000; ++r) {
+        t.depth_m.push_back(250.0 + 0.0025 * r);
+        for (int k = 0; k < 8; ++k) t.radius_mm.push_back(100.0 + std::sin(0.001 * r + k) * 7.0 + 1e-9 * r);
+        t.rb_deg.push_back(std::fmod(0.37 * r, 360.0));
+    }
+    const auto path = caliper3d::test::scratch("round_trip_large.las");
+    writeLasFile(path.string(), t);
+    StreamOptions stream;
+    stream.blockBytes = 64u << 10;
+    stream.chunkRows = 100;
+    const LoadedLog read = loadCaliperLog(path.string(), ReadOptions{}, stream);
+    expectSame(t.depth_m, read.table.depth_m, "depth");
+    expectSame(t.radius_mm, read.table.radius_mm, "radii");
+    expectSame(t.rb_deg, read.table.rb_deg, "rb");
+    EXPECT_TRUE(read.table.p1az_deg.empty());
+}
+
+// Each real log, read, written and read again, is the same table.
+TEST(LasWriterTest, RealLogsRoundTripExactly) {
+    const auto dir = caliper3d::test::sharedData() / "real";
+    CALIPER3D_REQUIRE_DATA(dir);
+    for (const char* name : {"1AA072209208W400_WL_0477502_STAR_FIELD.las", "1AA063409108W400_FMI_SONIC_MAIN.las",
+                             "multifinger40_data.txt"}) {
+        SCOPED_TRACE(name);
+        const LoadedLog first = loadCaliperLog((dir / name).string(), ReadOptions{});
+        std::ostringstream out;
+        writeLas(out, first.table);
+        const LoadedLog second = loadCaliperText(out.str(), "again.las", ReadOptions{});
+        ASSERT_EQ(second.table.armCount, first.table.armCount);
+        expectSame(first.table.depth_m, second.table.depth_m, "depth");
+        expectSame(first.table.radius_mm, second.table.radius_mm, "radii");
+        expectSame(first.table.p1az_deg, second.table.p1az_deg, "p1az");
+        expectSame(first.table.devi_deg, second.table.devi_deg, "devi");
+        expectSame(first.table.hazi_deg, second.table.hazi_deg, "hazi");
+        expectSame(first.table.rb_deg, second.table.rb_deg, "rb");
+        expectSame(first.table.bitSize_mm, second.table.bitSize_mm, "bit size");
+        ASSERT_EQ(second.table.extraCurves.size(), first.table.extraCurves.size());
+        for (std::size_t e = 0; e < first.table.extraCurves.size(); ++e) {
+            EXPECT_EQ(second.table.extraCurves[e].mnemonic, first.table.extraCurves[e].mnemonic);
+            EXPECT_EQ(second.table.extraCurves[e].unit, first.table.extraCurves[e].unit);
+            expectSame(first.table.extraCurves[e].values, second.table.extraCurves[e].values,
+                       first.table.extraCurves[e].mnemonic.c_str());
+        }
+    }
 }
