@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "io/las_reader.h"
 #include "io/log_reader.h"
 #include "test_support.h"
 
@@ -29,6 +30,16 @@ SectionTable sample() {
     return t;
 }
 
+// The value of the header line that starts with `start` (" NULL.").
+std::string itemValue(const std::string& text, const std::string& start) {
+    const std::size_t at = text.find("\n" + start);
+    if (at == std::string::npos) return "(absent)";
+    std::istringstream line(text.substr(at + 1 + start.size(), text.find('\n', at + 1) - at - 1 - start.size()));
+    std::string value;
+    line >> value;
+    return value;
+}
+
 void expectSame(const std::vector<double>& a, const std::vector<double>& b, const char* what) {
     ASSERT_EQ(a.size(), b.size()) << what;
     for (std::size_t i = 0; i < a.size(); ++i) {
@@ -41,7 +52,9 @@ void expectSame(const std::vector<double>& a, const std::vector<double>& b, cons
 TEST(LasWriterTest, ReaderReadsBackExactlyWhatWasWritten) {
     const SectionTable written = sample();
     std::ostringstream out;
-    writeLas(out, written, {"ROUND-TRIP", -999.25});
+    LasWriteOptions options;
+    options.wellName = "ROUND-TRIP";
+    writeLas(out, written, options);
     const LoadedLog read = loadCaliperText(out.str(), "rt.las", ReadOptions{});
     EXPECT_EQ(read.info.format, "LAS 2.0");
     EXPECT_EQ(read.info.wellName, "ROUND-TRIP");
@@ -73,6 +86,36 @@ TEST(LasWriterTest, OptionalCurvesAbsentFromTheTableAreNotWritten) {
     EXPECT_EQ(read.table.radius_mm, t.radius_mm);
 }
 
+TEST(LasWriterTest, ColumnsWithStrideDecimalsParametersAndOtherReadBack) {
+    // Two rows of a row-major table of three values: a stride of 3 picks one column.
+    const std::vector<double> depth = {10.0, 10.5};
+    const std::vector<double> matrix = {1.23456, 2.0, 3.0, 4.5, 5.0, kNaN};
+    LasWriteOptions options;
+    options.wellName = "COLUMNS";
+    options.parameters.push_back({"BS", "MM", "215.9", "bit size"});
+    options.other = "free text about the curves";
+    std::ostringstream out;
+    writeLasColumns(out, 2,
+                    {{"DEPT", "M", "depth", depth.data(), 1, -1},
+                     {"A", "MM", "first of three", matrix.data(), 3, 2},
+                     {"C", "MM", "third of three", matrix.data() + 2, 3, -1}},
+                    options);
+    const std::string text = out.str();
+    EXPECT_NE(text.find("\n10 1.23 3\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("\n10.5 4.50 -999.25\n"), std::string::npos) << text;
+    Diagnostics diagnostics;
+    const LasLog log = readLas(text, "columns.las", {}, &diagnostics);
+    ASSERT_EQ(log.curves.size(), 3u);
+    EXPECT_EQ(log.curves[1].mnemonic, "A");
+    EXPECT_EQ(log.curves[1].values, (std::vector<double>{1.23, 4.5}));
+    EXPECT_EQ(log.curves[2].values[0], 3.0);
+    EXPECT_TRUE(std::isnan(log.curves[2].values[1]));
+    ASSERT_NE(log.header.parameter("BS"), nullptr);
+    EXPECT_EQ(log.header.parameter("BS")->value, "215.9");
+    EXPECT_NE(log.header.other.find("free text about the curves"), std::string::npos);
+    EXPECT_EQ(log.header.wellItem("WELL")->value, "COLUMNS");
+}
+
 TEST(LasWriterTest, TrueValuesEqualToNullMarkersReadBackAsValues) {
     SectionTable t = sample();
     t.radius_mm[3] = -999.25;               // the preferred NULL: another is chosen
@@ -81,8 +124,8 @@ TEST(LasWriterTest, TrueValuesEqualToNullMarkersReadBackAsValues) {
     t.extraCurves[0].values[3] = 999.25;
     std::ostringstream out;
     writeLas(out, t);
-    EXPECT_NE(out.str().find("NULL.") , std::string::npos);
-    EXPECT_NE(out.str().find(" -9999.25"), std::string::npos) << "NULL not moved off -999.25";
+    EXPECT_EQ(itemValue(out.str(), " NULL."), "-9999.25") << "NULL not moved off -999.25";
+    EXPECT_EQ(itemValue(out.str(), " NULLS."), "DECLARED");
     const LoadedLog read = loadCaliperText(out.str(), "nulls.las", ReadOptions{});  // default: common nulls
     expectSame(t.radius_mm, read.table.radius_mm, "radii");
     expectSame(t.extraCurves[0].values, read.table.extraCurves[0].values, "GR");
@@ -96,12 +139,7 @@ TEST(LasWriterTest, StepIsNominalWhenRegularAndZeroWhenNot) {
     auto stepOf = [](const SectionTable& table) {
         std::ostringstream out;
         writeLas(out, table);
-        const std::string text = out.str();
-        const std::size_t at = text.find(" STEP.M");
-        std::istringstream line(text.substr(at + 7, text.find('\n', at) - at - 7));
-        std::string value;
-        line >> value;
-        return value;
+        return itemValue(out.str(), " STEP.M");
     };
     EXPECT_EQ(stepOf(t), "0.0025");
     t.depth_m[10] += 0.001;
