@@ -19,6 +19,7 @@
 #include "io/las_reader.h"
 #include "io/number_parsing.h"
 #include "io/parse_error.h"
+#include "io/survey_reader.h"
 #include "io/text_encoding.h"
 
 namespace caliper3d::io {
@@ -376,6 +377,7 @@ public:
         if (run.substr(0, 3) == "\xEF\xBB\xBF") offset = 3;
         if (trim(run).empty() && m_reader->done())
             throw ParseError(m_name, 0, 0, "expected a caliper log (column text or LAS), found an empty file");
+        refuseWhatIsNotALog(run.substr(offset));
         if (looksLikeLas(run.substr(offset))) readLasHeader(run, offset);
         else prepareColumnText(run, offset);
         if (m_wrapped) return finishWrapped(run.substr(offset));
@@ -385,6 +387,30 @@ public:
     }
 
 private:
+    // Files that are text but not a caliper log would otherwise read as column
+    // text and fail late with a misleading message, or worse, a survey of 11
+    // numbers per line would read as an 11-arm log.
+    void refuseWhatIsNotALog(std::string_view start) const {
+        const std::string_view head = start.substr(0, 64u << 10);
+        if (const void* nul = std::memchr(head.data(), '\0', head.size())) {
+            const std::size_t at = static_cast<std::size_t>(static_cast<const char*>(nul) - head.data());
+            const std::size_t line = 1 + static_cast<std::size_t>(std::count(head.begin(), head.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
+            const std::size_t newline = at == 0 ? std::string_view::npos : head.rfind('\n', at - 1);
+            const std::size_t column = newline == std::string_view::npos ? at + 1 : at - newline;
+            throw ParseError(m_name, line, column,
+                             "expected text, found a NUL byte (a binary file, or UTF-16 without a byte-order mark)");
+        }
+        const std::size_t first = head.find_first_not_of(" \t\r\n");
+        if (first != std::string_view::npos && (head[first] == '{' || head[first] == '['))
+            throw ParseError(m_name, 1 + static_cast<std::size_t>(std::count(head.begin(), head.begin() + static_cast<std::ptrdiff_t>(first), '\n')), 0,
+                             "expected a caliper log (LAS or column text), found JSON");
+        if (!looksLikeLas(head) && looksLikeSurvey(head))
+            throw ParseError(m_name, 0, 0,
+                             "expected a caliper log, found a deviation survey (a line names measured depth, "
+                             "inclination and azimuth columns, and no caliper curves): give it with --survey, "
+                             "or see it with caliper3d info");
+    }
+
     static bool looksLikeLas(std::string_view text) {
         std::size_t i = 0;
         while (i < text.size()) {
@@ -685,6 +711,7 @@ private:
         const std::size_t n = t.rowCount();
         if (m_radiiOnly)
             for (std::size_t r = 0; r < n; ++r) t.depth_m[r] = static_cast<double>(m_rowIndex++) * m_options.rowStep_m;
+        if (!m_directionKnown) decideDirection(t);
         std::size_t runStart = 0;
         m_kept.clear();
         auto flush = [&](std::size_t end) {
@@ -735,6 +762,31 @@ private:
             return;
         }
         for (const auto& [a, b] : m_kept) appendRows(t, m_descending ? m_held : m_current, a, b);
+    }
+
+    // The trend over the rows read so far decides the direction, not the first
+    // pair of rows: a log recorded upwards that starts with one row out of order
+    // is sorted whole, not cut down to the rows after that pair. (A thread's
+    // share of a block holds thousands of rows, so the trend is clear.)
+    void decideDirection(const SectionTable& t) {
+        const std::size_t n = t.rowCount();
+        std::size_t first = 0;
+        while (!m_haveFirst && first < n) {
+            if (std::isfinite(t.depth_m[first])) {
+                m_first = t.depth_m[first];
+                m_haveFirst = true;
+            }
+            ++first;
+        }
+        std::size_t last = n;
+        while (last > 0 && !std::isfinite(t.depth_m[last - 1])) --last;
+        if (!m_haveFirst || last == 0 || t.depth_m[last - 1] == m_first) return;
+        m_directionKnown = true;
+        m_descending = t.depth_m[last - 1] < m_first;
+        if (m_descending) {
+            appendRows(m_current, m_held, 0, m_current.rowCount());
+            clearRows(m_current);
+        }
     }
 
     void deliver(const SectionTable& chunk) {
@@ -902,8 +954,8 @@ private:
     std::vector<std::pair<std::size_t, std::size_t>> m_kept;
     std::vector<std::size_t> m_nulls, m_depthDiffer;
     std::vector<double> m_steps;
-    bool m_haveLast = false, m_directionKnown = false, m_descending = false;
-    double m_last = 0.0;
+    bool m_haveLast = false, m_directionKnown = false, m_descending = false, m_haveFirst = false;
+    double m_last = 0.0, m_first = 0.0;
     double m_bitSizeMin = 1e300, m_bitSizeMax = -1e300;
     std::size_t m_nullDepths = 0, m_repeated = 0, m_backwards = 0;
     std::size_t m_firstNullDepthLine = 0, m_firstRepeatedLine = 0, m_firstBackwardsLine = 0;

@@ -1,10 +1,14 @@
 #include "io/log_reader.h"
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
 
 #include <gtest/gtest.h>
 
 #include "io/parse_error.h"
+#include "test_support.h"
 
 using namespace caliper3d::io;
 
@@ -90,7 +94,7 @@ TEST(LogReaderTest, InfoNamesFormatDepthRangeRolesAndNulls) {
     const LoadedLog log = loadCaliperText(kFeetInchesRadians, "u.las", ReadOptions{});
     const std::string out = formatLogInfo(log.info);
     for (const char* expected : {"LAS 2", "TEST-1", "rows:      2", "R1", "radius", "P1AZ", "pad-1 azimuth",
-                                 "1 nulls", "GR", "other", "bit size:  215.9 mm", "(file unit FT)"})
+                                 ", 1 null\n", "GR", "other", "bit size:  215.9 mm", "(file unit FT)"})
         EXPECT_NE(out.find(expected), std::string::npos) << expected << "\n" << out;
 }
 
@@ -107,4 +111,119 @@ TEST(LogReaderTest, ALogWithoutCaliperCurvesIsRefusedByReadCaliperLog) {
     } catch (const ParseError& e) {
         EXPECT_NE(std::string(e.what()).find("expected caliper curves"), std::string::npos) << e.what();
     }
+}
+
+namespace {
+// The message of the ParseError that `read` throws, or "(no error)".
+template <typename Read>
+std::string refusal(Read read) {
+    try {
+        read();
+    } catch (const ParseError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+std::string writeScratch(const std::string& name, const std::string& text) {
+    const auto path = caliper3d::test::scratch(name);
+    std::ofstream(path, std::ios::binary) << text;
+    return path.string();
+}
+}  // namespace
+
+TEST(LogReaderTest, ASurveyJsonOrBinaryFileIsRefusedAsACaliperLogWithWhatItIs) {
+    // Eleven numbers per line would otherwise read as an 11-arm radii-only log.
+    const std::string petrel =
+        "# WELL TRACE FROM PETREL\n MD X Y Z TVD DX DY AZIM_TN INCL DLS AZIM_GN\n"
+        "0 1 2 3 0 0 0 0 0 0 0\n10 1 2 3 10 0 0 5 1 0.1 4\n";
+    EXPECT_NE(refusal([&] { loadCaliperText(petrel, "trace.txt", ReadOptions{}); }).find("found a deviation survey"),
+              std::string::npos);
+    EXPECT_NE(refusal([&] { loadCaliperText("MD,INC,AZI\n0,0,0\n10,1,2\n", "s.csv", ReadOptions{}); })
+                  .find("s.csv: expected a caliper log, found a deviation survey"),
+              std::string::npos);
+    EXPECT_NE(refusal([&] { loadCaliperText("\n  {\"md\": [0, 10]}\n", "w.json", ReadOptions{}); })
+                  .find("w.json:2: expected a caliper log (LAS or column text), found JSON"),
+              std::string::npos);
+    const std::string binary = std::string("1.0 2 2 2 2 2 2 0 0 0\n2.0 2 2\0 2", 30);
+    EXPECT_NE(refusal([&] { loadCaliperText(binary, "b.bin", ReadOptions{}); })
+                  .find("b.bin:2:8: expected text, found a NUL byte"),
+              std::string::npos);
+    // A caliper text whose names line also names depth, deviation and azimuth is a log.
+    const LoadedLog log =
+        loadCaliperText("DEPTH R1 R2 R3 R4 R5 R6 P1AZ DEVI HAZI\n1.0 4 4 4 4 4 4 0 0 0\n", "c.txt", ReadOptions{});
+    EXPECT_EQ(log.table.rowCount(), 1u);
+}
+
+TEST(LogReaderTest, InfoDescribesASurveyWithItsStationsAndColumns) {
+    const std::string path = writeScratch(
+        "info_survey.csv", "Design Report\n\nMD,Inc,Azim.,TVD,N/S,E/W,DLS\n(ft),(Deg),(Deg),(ft),(ft),(ft),(dega/100ft)\n"
+                           "0,0,0,0,0,0,0\n100,1,10,99.99,0.86,0.15,1\n300,3,12,299.8,,,1\n\nEnd of report\n");
+    const LogInfo info = describeLog(path, ReadOptions{});
+    EXPECT_TRUE(info.survey);
+    EXPECT_EQ(info.format, "deviation survey (comma-separated, column names on line 3)");
+    EXPECT_EQ(info.rows, 3u);
+    EXPECT_DOUBLE_EQ(info.bottom_m, 300 * 0.3048);
+    EXPECT_NEAR(info.step_m, 200 * 0.3048, 1e-9);  // median of 100 and 200 ft steps: the upper middle
+    EXPECT_EQ(info.depthUnit, "ft");
+    ASSERT_EQ(info.curves.size(), 7u);
+    EXPECT_EQ(info.curves[0].role, "measured depth");
+    EXPECT_EQ(info.curves[1].role, "inclination");
+    EXPECT_EQ(info.curves[2].role, "azimuth");
+    EXPECT_EQ(info.curves[3].role, "TVD (read for checking)");
+    EXPECT_EQ(info.curves[4].role, "north (read for checking)");
+    EXPECT_EQ(info.curves[4].nulls, 1u);
+    EXPECT_EQ(info.curves[6].role, "not read");
+    EXPECT_TRUE(warned(info, "1 lines of text after the last station skipped"));
+    const std::string text = formatLogInfo(info);
+    EXPECT_NE(text.find("rows:      3 stations\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("MD:        0.0000 to 91.4400 m"), std::string::npos) << text;
+    EXPECT_EQ(text.find("bit size"), std::string::npos) << text;
+}
+
+// What `caliper3d info` does with every file of the reference data: describe
+// it, or refuse it with a precise message naming why.
+TEST(LogReaderTest, InfoDescribesEveryReferenceFileOrSaysWhyNot) {
+    const auto root = caliper3d::test::sharedData();
+    CALIPER3D_REQUIRE_DATA(root / "las_edge_cases");
+    const std::map<std::string, std::string> refused = {
+        {"missing_a_section.las", ":20: expected data rows after ~A, found none"},
+        {"missing_well_curves_ascii_section.las", ": expected a ~C (curve information) section, found none"},
+        {"clearance_iscwsa_well_data.json", ":1: expected a caliper log (LAS or column text), found JSON"},
+        {"error_mwdrev5_1_iscwsa_data.json", ":1: expected a caliper log (LAS or column text), found JSON"},
+    };
+    const std::map<std::string, std::string> formats = {
+        {"1AA072209208W400_WL_0477502_STAR_FIELD.las", "LAS 2.0"},
+        {"1AA063409108W400_FMI_SONIC_MAIN.las", "LAS 2.0"},
+        {"multifinger40_data.txt", "column text (40 radii per line, no depth)"},
+        {"sample_3.0.las", "LAS 3.0"},
+        {"sample_wrapped.las", "LAS 1.2, wrapped"},
+        {"100042209506W400.txt", "deviation survey (columns separated by spaces, column names on line 16)"},
+        {"iscwsa_clearance_wells_extracted.csv", "deviation survey (comma-separated, column names on line 2)"},
+        {"well9.csv", "deviation survey (comma-separated, column names on line 1)"},
+    };
+    int files = 0, surveys = 0;
+    for (const char* folder : {"las_edge_cases", "real", "surveys"}) {
+        for (const auto& entry : std::filesystem::directory_iterator(root / folder)) {
+            const std::string name = entry.path().filename().string();
+            SCOPED_TRACE(name);
+            ++files;
+            const auto refusedIt = refused.find(name);
+            if (refusedIt != refused.end()) {
+                EXPECT_NE(refusal([&] { describeLog(entry.path().string(), ReadOptions{}); })
+                              .find(entry.path().string() + refusedIt->second),
+                          std::string::npos);
+                continue;
+            }
+            const LogInfo info = describeLog(entry.path().string(), ReadOptions{});
+            EXPECT_GT(info.rows, 1u);
+            EXPECT_FALSE(info.curves.empty());
+            EXPECT_EQ(info.survey, std::string(folder) == "surveys");
+            surveys += info.survey;
+            if (formats.count(name)) EXPECT_EQ(info.format, formats.at(name));
+            EXPECT_FALSE(formatLogInfo(info).empty());
+        }
+    }
+    EXPECT_EQ(files, 22 + 3 + 10);
+    EXPECT_EQ(surveys, 8);
 }
