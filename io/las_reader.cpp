@@ -33,10 +33,18 @@ void tokenize(std::string_view line, char delimiter, std::vector<std::string_vie
     tokens.clear();
     columns.clear();
     auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
+    // A quoted string ("SAND, SHALY") is one token, delimiters and blanks inside it included.
+    auto quotedEnd = [&](std::size_t at) {
+        while (at < line.size() && blank(line[at])) ++at;
+        if (at >= line.size() || line[at] != '"') return std::string_view::npos;
+        const std::size_t close = line.find('"', at + 1);
+        return close == std::string_view::npos ? line.size() : close + 1;
+    };
     if (delimiter == ',') {
         std::size_t start = 0;
         while (start <= line.size()) {
-            std::size_t end = line.find(',', start);
+            const std::size_t quoted = quotedEnd(start);
+            std::size_t end = line.find(',', quoted == std::string_view::npos ? start : quoted);
             if (end == std::string_view::npos) end = line.size();
             std::size_t a = start, b = end;
             while (a < b && blank(line[a])) ++a;
@@ -51,8 +59,9 @@ void tokenize(std::string_view line, char delimiter, std::vector<std::string_vie
     while (i < line.size()) {
         while (i < line.size() && blank(line[i])) ++i;
         if (i == line.size()) break;
-        std::size_t j = i;
-        while (j < line.size() && !blank(line[j])) ++j;
+        std::size_t j = quotedEnd(i);
+        if (j == std::string_view::npos)
+            for (j = i; j < line.size() && !blank(line[j]);) ++j;
         tokens.push_back(line.substr(i, j - i));
         columns.push_back(i + 1);
         i = j;

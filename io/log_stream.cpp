@@ -279,9 +279,19 @@ void parseRows(const RowFormat& f, std::string_view text, std::size_t firstLine,
                     p = end;
                 } else {
                     const char* tokenEnd = p;
-                    while (tokenEnd < lineEnd && !isBlank(*tokenEnd) && !(commaDelimited && *tokenEnd == ',')) ++tokenEnd;
-                    if (commaDelimited && f.textColumn[c])  // text may hold blanks
-                        while (tokenEnd < lineEnd && *tokenEnd != ',') ++tokenEnd;
+                    if (f.textColumn[c] && p < lineEnd && *p == '"') {
+                        // LAS 3.0 quotes a string that holds the delimiter: "SAND, SHALY".
+                        const void* close = std::memchr(p + 1, '"', static_cast<std::size_t>(lineEnd - p - 1));
+                        if (!close)
+                            throw ParseError(f.file, lineNumber, column(p),
+                                             "expected a closing '\"' for the text of curve " + f.names[c] +
+                                                 ", found the end of the line");
+                        tokenEnd = static_cast<const char*>(close) + 1;
+                    } else {
+                        while (tokenEnd < lineEnd && !isBlank(*tokenEnd) && !(commaDelimited && *tokenEnd == ',')) ++tokenEnd;
+                        if (commaDelimited && f.textColumn[c])  // text may hold blanks
+                            while (tokenEnd < lineEnd && *tokenEnd != ',') ++tokenEnd;
+                    }
                     const std::string_view token(tokenBegin, static_cast<std::size_t>(tokenEnd - tokenBegin));
                     p = tokenEnd;
                     if (f.textColumn[c]) {

@@ -125,3 +125,15 @@ TEST(LasReaderTest, AFileThatDeclaresItsNullOnlyKeepsCommonNullNumbers) {
     EXPECT_TRUE(std::isnan(log.curves[2].values[0]));  // the declared NULL
     EXPECT_EQ(log.curves[1].nulls, 0u);
 }
+
+TEST(LasReaderTest, AQuotedStringHoldingTheDelimiterIsOneValue) {
+    const std::string text =
+        "~Version\n VERS. 3.0 : v\n WRAP. NO : w\n DLM. COMMA : d\n~Log_Definition\n DEPT.M : depth {F}\n"
+        " LITH. : lithology {S}\n GR.GAPI : gamma {F}\n~Log_Data | Log_Definition\n"
+        "1.0, \"SAND, SHALY\" ,45.5\n2.0,SAND,46.5\n";
+    const LasLog log = readLas(text, "q.las", {}, nullptr);
+    ASSERT_EQ(log.rowCount(), 2u);
+    EXPECT_DOUBLE_EQ(log.curves[2].values[0], 45.5);
+    EXPECT_DOUBLE_EQ(log.curves[2].values[1], 46.5);
+    EXPECT_TRUE(std::isnan(log.curves[1].values[0]));
+}

@@ -227,3 +227,57 @@ TEST(LogReaderTest, InfoDescribesEveryReferenceFileOrSaysWhyNot) {
     EXPECT_EQ(files, 22 + 3 + 10);
     EXPECT_EQ(surveys, 8);
 }
+
+namespace {
+// LAS 3.0, comma-delimited: an 8-finger caliper stored as one array channel,
+// a string column (blanks inside, and a quoted comma) and a gamma ray.
+std::string las3Array(const std::string& array) {
+    std::string text =
+        "~Version\n VERS. 3.0 : CWLS LAS 3.0\n WRAP. NO :\n DLM. COMMA : delimiter\n"
+        "~Well\n WELL. ARRAY-1 : well\n NULL. -999.25 :\n~Log_Parameter\n BS.MM 215.9 : bit size {F}\n"
+        "~Log_Definition\n DEPT.M : depth {F}\n";
+    for (int k = 1; k <= 8; ++k) text += " " + array + "[" + std::to_string(k) + "].IN : finger radius {AF}\n";
+    text += " LITH. : lithology {S}\n GR.GAPI : gamma ray {F}\n~Log_Data | Log_Definition\n";
+    for (int r = 0; r < 3; ++r) {
+        text += std::to_string(100.0 + 0.1 * r);
+        for (int k = 1; k <= 8; ++k) text += "," + std::to_string(4.0 + 0.125 * k + r);
+        text += r == 1 ? ", \"SAND, SHALY\" ,-999.25\n" : ",SAND WITH SHELLS,55.5\n";
+    }
+    return text;
+}
+}  // namespace
+
+TEST(LogReaderTest, Las3FingerArrayIsTheArmsAndStringColumnIsSkippedWithANote) {
+    const LoadedLog log = loadCaliperText(las3Array("FING"), "array.las", ReadOptions{});
+    ASSERT_EQ(log.table.armCount, 8);
+    ASSERT_EQ(log.table.rowCount(), 3u);
+    EXPECT_DOUBLE_EQ(log.table.radii(1)[0], (4.125 + 1) * 25.4);
+    EXPECT_DOUBLE_EQ(log.table.radii(2)[7], (5.0 + 2) * 25.4);
+    EXPECT_DOUBLE_EQ(log.table.bitSize_mm[0], 215.9);
+    ASSERT_EQ(log.table.extraCurves.size(), 1u);  // GR; LITH is text
+    EXPECT_DOUBLE_EQ(log.table.extraCurves[0].values[0], 55.5);
+    EXPECT_TRUE(std::isnan(log.table.extraCurves[0].values[1]));
+    EXPECT_TRUE(warned(log.info, "curve 'LITH' holds text; skipped"));
+    EXPECT_EQ(log.info.curves[1].role, "finger radius");
+    EXPECT_EQ(log.info.curves[9].role, "text (skipped)");
+}
+
+TEST(LogReaderTest, AnArrayWithAnUnknownNameIsNamedWithBrackets) {
+    const std::string text = las3Array("MFC");
+    EXPECT_EQ(loadCaliperText(text, "mfc.las", ReadOptions{}).table.armCount, 0);
+    ReadOptions options;
+    options.roles.radii = {"MFC[]"};
+    const LoadedLog log = loadCaliperText(text, "mfc.las", options);
+    ASSERT_EQ(log.table.armCount, 8);
+    EXPECT_DOUBLE_EQ(log.table.radii(0)[3], 4.5 * 25.4);
+}
+
+TEST(LogReaderTest, AnUnclosedQuoteInAStringColumnIsAnErrorAtItsColumn) {
+    std::string text = las3Array("FING");
+    text.replace(text.find("\"SAND, SHALY\""), 13, "\"SAND, SHALY");
+    const std::string message = refusal([&] { loadCaliperText(text, "q.las", ReadOptions{}); });
+    EXPECT_NE(message.find("q.las:24:85: "), std::string::npos) << message;  // the second data row, at the quote
+    EXPECT_NE(message.find("expected a closing '\"' for the text of curve LITH, found the end of the line"),
+              std::string::npos)
+        << message;
+}
