@@ -5,6 +5,10 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <mutex>
 #include <cmath>
 #include <cstring>
 #include <exception>
@@ -29,6 +33,84 @@ namespace {
 constexpr double kMaxPlausibleRadius_in = 30.0;
 constexpr std::size_t kStepSamples = 65536;
 constexpr std::size_t kMinSplitBytes = 256u << 10;
+constexpr std::size_t kMaxPieces = 16;
+
+// Shares the pieces of one block between the calling thread and one worker
+// thread that lives as long as the read. Pieces are claimed one at a time, so
+// when the other core is busy with another job the caller simply parses more
+// of them instead of waiting for a fixed half (which made two threads slower
+// than one on a loaded machine).
+class PieceSharing {
+public:
+    explicit PieceSharing(bool withWorker) {
+        if (withWorker) m_worker = std::thread([this] { work(); });
+    }
+    ~PieceSharing() {
+        {
+            std::lock_guard<std::mutex> lock(m_mutex);
+            m_stop = true;
+        }
+        m_wake.notify_all();
+        if (m_worker.joinable()) m_worker.join();
+    }
+    PieceSharing(const PieceSharing&) = delete;
+    PieceSharing& operator=(const PieceSharing&) = delete;
+
+    // Runs task(i) for every i below count and returns when all have run.
+    // The task must not throw (parseRows keeps its error).
+    void run(std::size_t count, const std::function<void(std::size_t)>& task) {
+        if (!m_worker.joinable()) {
+            for (std::size_t i = 0; i < count; ++i) task(i);
+            return;
+        }
+        {
+            std::lock_guard<std::mutex> lock(m_mutex);
+            m_task = &task;
+            m_count = count;
+            m_next = 0;
+            m_done = 0;
+            ++m_generation;
+        }
+        m_wake.notify_one();
+        std::unique_lock<std::mutex> lock(m_mutex);
+        while (m_next < m_count) {
+            const std::size_t i = m_next++;
+            lock.unlock();
+            task(i);
+            lock.lock();
+            ++m_done;
+        }
+        m_finished.wait(lock, [&] { return m_done == m_count; });
+        m_task = nullptr;
+    }
+
+private:
+    void work() {
+        std::unique_lock<std::mutex> lock(m_mutex);
+        std::uint64_t seen = 0;
+        for (;;) {
+            m_wake.wait(lock, [&] { return m_stop || m_generation != seen; });
+            if (m_stop) return;
+            seen = m_generation;
+            while (m_task && m_next < m_count) {
+                const std::size_t i = m_next++;
+                const std::function<void(std::size_t)>& task = *m_task;
+                lock.unlock();
+                task(i);
+                lock.lock();
+                if (++m_done == m_count) m_finished.notify_one();
+            }
+        }
+    }
+
+    std::thread m_worker;
+    std::mutex m_mutex;
+    std::condition_variable m_wake, m_finished;
+    const std::function<void(std::size_t)>* m_task = nullptr;
+    std::size_t m_count = 0, m_next = 0, m_done = 0;
+    std::uint64_t m_generation = 0;
+    bool m_stop = false;
+};
 
 // ---- where the text comes from ------------------------------------------------
 
@@ -646,7 +728,11 @@ private:
         m_held = m_plan.emptyTable(m_columns);
         m_nulls.assign(m_columns.size(), 0);
         m_depthDiffer.assign(m_plan.otherDepthColumns.size(), 0);
+        m_parts.resize(m_stream.threads > 1 ? kMaxPieces : 1);
         for (ParsedRows& part : m_parts) part.table = m_plan.emptyTable(m_columns);
+        // Joined when the data loop ends, however it ends, while the block it reads still exists.
+        PieceSharing sharing(m_stream.threads > 1);
+        m_sharing = &sharing;
         if (m_skipFirstLines) {
             // Skip the names line(s) of column text.
             for (std::size_t i = 0; i < m_skipFirstLines; ++i) {
@@ -678,37 +764,60 @@ private:
         return false;
     }
 
+    // Cuts a block into pieces of whole lines for the threads to share: about
+    // an eighth of a block each (1 MiB by default), at least two once the block
+    // is worth splitting.
+    std::size_t cutPieces(std::string_view run) {
+        std::size_t pieces = 1;
+        const std::size_t minSplit = std::min(kMinSplitBytes, m_stream.blockBytes / 2);
+        if (m_stream.threads > 1 && run.size() >= minSplit) {
+            const std::size_t pieceBytes = std::max<std::size_t>(m_stream.blockBytes / 8, 1024);
+            pieces = std::min(kMaxPieces, std::max<std::size_t>(2, run.size() / pieceBytes));
+        }
+        m_pieceBegin.assign(1, 0);
+        for (std::size_t i = 1; i < pieces; ++i) {
+            const std::size_t target = std::max(m_pieceBegin.back(), run.size() * i / pieces);
+            const std::size_t nl = target == 0 ? std::string_view::npos : run.find('\n', target - 1);
+            if (nl == std::string_view::npos || nl + 1 >= run.size()) break;
+            if (nl + 1 > m_pieceBegin.back()) m_pieceBegin.push_back(nl + 1);
+        }
+        m_pieceBegin.push_back(run.size());
+        return m_pieceBegin.size() - 1;
+    }
+
     void processRun(std::string_view run, bool finalRun, std::size_t& stop) {
-        std::size_t split = run.size();
-        if (m_stream.threads > 1 && run.size() >= kMinSplitBytes) {
-            const std::size_t nl = run.find('\n', run.size() / 2);
-            if (nl != std::string_view::npos && nl + 1 < run.size()) split = nl + 1;
-        }
-        ParsedRows* parts = m_parts;
-        const std::string_view first = run.substr(0, split);
-        if (split < run.size()) {
-            const std::string_view second = run.substr(split);
-            const std::size_t secondLine =
-                m_lineNumber + 1 + static_cast<std::size_t>(std::count(first.begin(), first.end(), '\n'));
-            std::thread worker(
-                [&]() { parseRows(m_format, second, secondLine, finalRun, m_columns, parts[1]); });
-            parseRows(m_format, first, m_lineNumber + 1, false, m_columns, parts[0]);
-            worker.join();
-        } else {
-            parseRows(m_format, first, m_lineNumber + 1, finalRun, m_columns, parts[0]);
-        }
-        const int count = split < run.size() ? 2 : 1;
-        for (int i = 0; i < count; ++i) {
-            ParsedRows& part = parts[i];
-            if (part.error) std::rethrow_exception(part.error);
+        const std::size_t pieces = cutPieces(run);
+        // Lines are counted from 1 within each piece; the piece's place in the
+        // file is added below, in order, so no thread has to count ahead.
+        const std::function<void(std::size_t)> parsePiece = [&](std::size_t i) {
+            const std::string_view text = run.substr(m_pieceBegin[i], m_pieceBegin[i + 1] - m_pieceBegin[i]);
+            parseRows(m_format, text, 1, finalRun && i + 1 == pieces, m_columns, m_parts[i]);
+        };
+        m_sharing->run(pieces, parsePiece);
+        for (std::size_t i = 0; i < pieces; ++i) {
+            ParsedRows& part = m_parts[i];
+            const std::size_t before = m_lineNumber;
+            if (part.error) rethrowAfter(part.error, before);
+            for (std::size_t& line : part.lines) line += before;
+            for (Warning& w : part.diagnostics.warnings) w.line += before;
             commit(part);
             m_lineNumber += part.linesConsumed;
             if (part.stopped) {
-                stop = (i == 0 ? 0 : split) + part.stopOffset;
+                stop = m_pieceBegin[i] + part.stopOffset;
                 break;
             }
         }
         deliverReady();
+    }
+
+    // A piece's error, with its line moved from the piece to the file.
+    static void rethrowAfter(const std::exception_ptr& error, std::size_t linesBefore) {
+        try {
+            std::rethrow_exception(error);
+        } catch (const ParseError& e) {
+            if (e.line() == 0) throw;
+            throw ParseError(e.file(), e.line() + linesBefore, e.column(), e.message());
+        }
     }
 
     void commit(ParsedRows& part) {
@@ -960,7 +1069,9 @@ private:
     RowFormat m_format;
 
     SectionTable m_current, m_held;
-    ParsedRows m_parts[2];
+    std::vector<ParsedRows> m_parts;      // one per piece of a block
+    std::vector<std::size_t> m_pieceBegin;
+    PieceSharing* m_sharing = nullptr;   // set while dataLoop runs
     std::vector<std::pair<std::size_t, std::size_t>> m_kept;
     std::vector<std::size_t> m_nulls, m_depthDiffer;
     std::vector<double> m_steps;
