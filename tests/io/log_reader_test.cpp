@@ -281,3 +281,29 @@ TEST(LogReaderTest, AnUnclosedQuoteInAStringColumnIsAnErrorAtItsColumn) {
               std::string::npos)
         << message;
 }
+
+namespace {
+std::string utf16(const std::string& ascii, bool bigEndian) {
+    std::string out = bigEndian ? std::string("\xFE\xFF", 2) : std::string("\xFF\xFE", 2);
+    for (char c : ascii) {
+        out.push_back(bigEndian ? '\0' : c);
+        out.push_back(bigEndian ? c : '\0');
+    }
+    return out;
+}
+}  // namespace
+
+TEST(LogReaderTest, Utf16WithAByteOrderMarkIsDecodedEitherWayAndABrokenOneRefusedAtItsLine) {
+    for (bool bigEndian : {false, true}) {
+        SCOPED_TRACE(bigEndian ? "big-endian" : "little-endian");
+        const LoadedLog log = loadCaliperText(utf16(kFeetInchesRadians, bigEndian), "u16.las", ReadOptions{});
+        EXPECT_EQ(log.table.rowCount(), 2u);
+        EXPECT_EQ(log.table.armCount, 4);
+        EXPECT_TRUE(warned(log.info, "text is UTF-16; decoded"));
+    }
+    std::string broken = utf16("~Version\n VERS. 2.0 :\n", false);
+    broken += std::string("\x00\xD8", 2);  // a high surrogate with no low one, on line 3
+    EXPECT_NE(refusal([&] { loadCaliperText(broken, "bad16.las", ReadOptions{}); })
+                  .find("bad16.las:3: expected UTF-16 text, found an unpaired surrogate"),
+              std::string::npos);
+}
