@@ -1,13 +1,15 @@
 # Thin wrapper over CMake + Ninja. The README's two commands:
 #   make run    build Release and open the GUI on the bundled example
 #               (with no display: write out/example.iv and out/example.png)
-#   make test   build with AddressSanitizer + UBSan and run every test under xvfb-run
+#   make test   build with AddressSanitizer + UBSan and run every test under xvfb-run, then
+#               build the io libFuzzer targets with clang and run each for FUZZ_SECONDS
 BUILD_RELEASE ?= build/release
 BUILD_ASAN    ?= build/asan
 BUILD_TSAN    ?= build/tsan
 CMAKE_FLAGS   ?=
+FUZZ_SECONDS  ?= 60
 
-.PHONY: all run test deps release asan tsan tsan-test bench clean
+.PHONY: all run test deps release asan tsan tsan-test fuzz bench clean
 
 all: release
 
@@ -27,6 +29,11 @@ asan: deps
 
 test: asan
 	scripts/run-tests.sh $(BUILD_ASAN)
+	scripts/run-fuzzers.sh $(FUZZ_SECONDS)
+
+# The fuzz half of `make test` alone.
+fuzz: deps
+	scripts/run-fuzzers.sh $(FUZZ_SECONDS)
 
 tsan: deps
 	cmake -S . -B $(BUILD_TSAN) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCALIPER3D_TSAN=ON -DCALIPER3D_BENCH=OFF $(CMAKE_FLAGS)

@@ -2,7 +2,8 @@
 // sampling (1.6 M rows), as column text and as LAS 2.0, against a plain
 // single-thread std::from_chars loop over the same file (the practical limit).
 //
-//   io_read_bench [--length M] [--step M] [--dir DIR] [--threads N] [--keep 1]
+//   io_read_bench [--length M] [--step M] [--dir DIR] [--threads N] [--repeat N] [--keep 1]
+//                 [--reuse 1]   (read the files a kept run wrote instead of writing them again)
 //   io_read_bench --read FILE [--threads N]      (one measurement, used by the above)
 //   io_read_bench --plain FILE
 //
@@ -11,6 +12,7 @@
 // figures are from the page cache.
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cstdio>
@@ -30,6 +32,15 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
+
+// User plus system time of this process: unlike wall time, hardly moved by
+// other jobs on a shared machine.
+double cpuSeconds() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+           static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec) / 1e6;
+}
 
 double peakMiB() {
     rusage usage{};
@@ -53,8 +64,8 @@ int readOne(const std::string& path, int threads) {
     const double s = seconds(start, Clock::now());
     const double mb = static_cast<double>(std::filesystem::file_size(path)) / 1e6;
     const double arrays = static_cast<double>(tableBytes(log.table)) / (1024.0 * 1024.0);
-    std::printf("RESULT reader %.4f s %.1f MB/s rows %zu arrays %.1f MiB peak %.1f MiB ratio %.2f\n", s, mb / s,
-                log.table.rowCount(), arrays, peakMiB(), peakMiB() / arrays);
+    std::printf("RESULT reader %.4f s %.1f MB/s rows %zu arrays %.1f MiB peak %.1f MiB ratio %.2f cpu %.3f s\n", s,
+                mb / s, log.table.rowCount(), arrays, peakMiB(), peakMiB() / arrays, cpuSeconds());
     return 0;
 }
 
@@ -104,8 +115,8 @@ int plainLoop(const std::string& path) {
     std::fclose(f);
     const double s = seconds(start, Clock::now());
     const double mb = static_cast<double>(std::filesystem::file_size(path)) / 1e6;
-    std::printf("RESULT plain %.4f s %.1f MB/s numbers %zu (sum %.3g) peak %.1f MiB\n", s, mb / s, numbers, sum,
-                peakMiB());
+    std::printf("RESULT plain %.4f s %.1f MB/s numbers %zu (sum %.3g) peak %.1f MiB cpu %.3f s\n", s, mb / s, numbers,
+                sum, peakMiB(), cpuSeconds());
     return 0;
 }
 
@@ -119,12 +130,56 @@ std::string runChild(const std::string& self, const std::string& args) {
     return out;
 }
 
+struct Run {
+    double rate = 0, cpu = 0, peak = 0, ratio = 0;
+};
+
+// Fields of a RESULT line: "... s RATE MB/s ... peak P MiB [ratio R] cpu C s".
+Run parseRun(const std::string& line) {
+    Run r;
+    auto after = [&](const char* key, double& value) {
+        const std::size_t at = line.find(key);
+        if (at != std::string::npos) std::sscanf(line.c_str() + at + std::strlen(key), "%lf", &value);
+    };
+    after(" s ", r.rate);
+    after("peak ", r.peak);
+    after("ratio ", r.ratio);
+    after("cpu ", r.cpu);
+    return r;
+}
+
+struct Summary {
+    double best = 0, median = 0, worst = 0, cpu = 0, peak = 0;
+    std::string ratioText;
+};
+
+Summary summarise(std::vector<Run> runs) {
+    Summary s;
+    if (runs.empty()) return s;
+    std::sort(runs.begin(), runs.end(), [](const Run& a, const Run& b) { return a.rate > b.rate; });
+    s.best = runs.front().rate;
+    s.median = runs[runs.size() / 2].rate;
+    s.worst = runs.back().rate;
+    s.peak = 0;
+    double ratio = 0;
+    for (const Run& r : runs) {
+        s.peak = std::max(s.peak, r.peak);
+        ratio = std::max(ratio, r.ratio);
+    }
+    char text[64];
+    std::snprintf(text, sizeof text, "%.2f x parsed arrays", ratio);
+    s.ratioText = text;
+    s.cpu = std::min_element(runs.begin(), runs.end(), [](const Run& a, const Run& b) { return a.cpu < b.cpu; })->cpu;
+    return s;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     double length = 4000.0, step = 0.0025;
     int threads = 2;
-    bool keep = false;
+    int repeat = 5;
+    bool keep = false, reuse = false;
     std::string dir = (std::filesystem::temp_directory_path() / "caliper3d_io_bench").string();
     std::string readPath, plainPath;
     for (int i = 1; i + 1 < argc; i += 2) {
@@ -136,13 +191,15 @@ int main(int argc, char** argv) {
         else if (a == "--read") readPath = argv[i + 1];
         else if (a == "--plain") plainPath = argv[i + 1];
         else if (a == "--keep") keep = std::atoi(argv[i + 1]) != 0;
+        else if (a == "--reuse") reuse = std::atoi(argv[i + 1]) != 0;
+        else if (a == "--repeat") repeat = std::max(1, std::atoi(argv[i + 1]));
     }
     if (!readPath.empty()) return readOne(readPath, threads);
     if (!plainPath.empty()) return plainLoop(plainPath);
 
     std::filesystem::create_directories(dir);
     const std::string text = dir + "/well.txt", las = dir + "/well.las";
-    {
+    if (!(reuse && std::filesystem::exists(text) && std::filesystem::exists(las))) {
         const auto start = Clock::now();
         const caliper3d::io::SectionTable well = caliper3d::reconstruction::makeSyntheticWell(
             caliper3d::reconstruction::syntheticProfile("example", length, step));
@@ -152,19 +209,29 @@ int main(int argc, char** argv) {
                     static_cast<double>(std::filesystem::file_size(text)) / 1e6, las.c_str(),
                     static_cast<double>(std::filesystem::file_size(las)) / 1e6, seconds(start, Clock::now()));
     }
+    // Each measurement `repeat` times, interleaved so that load from other jobs
+    // falls on all three alike; best and median reported.
     for (const std::string& file : {text, las}) {
         runChild(argv[0], "--plain " + file);  // warm the page cache
-        const std::string plain = runChild(argv[0], "--plain " + file);
-        const std::string ours = runChild(argv[0], "--read " + file + " --threads " + std::to_string(threads));
-        const std::string one = runChild(argv[0], "--read " + file + " --threads 1");
-        double plainRate = 0, ourRate = 0, oneRate = 0;
-        std::sscanf(std::strstr(plain.c_str(), "s ") ? std::strstr(plain.c_str(), "s ") + 2 : "", "%lf", &plainRate);
-        std::sscanf(std::strstr(ours.c_str(), "s ") ? std::strstr(ours.c_str(), "s ") + 2 : "", "%lf", &ourRate);
-        std::sscanf(std::strstr(one.c_str(), "s ") ? std::strstr(one.c_str(), "s ") + 2 : "", "%lf", &oneRate);
-        std::printf("%s\n  plain from_chars loop: %s  reader, %d threads:  %s  reader, 1 thread:   %s"
-                    "  reader / plain = %.2f (%d threads), %.2f (1 thread)\n",
-                    file.c_str(), plain.c_str(), threads, ours.c_str(), one.c_str(),
-                    plainRate > 0 ? ourRate / plainRate : 0.0, threads, plainRate > 0 ? oneRate / plainRate : 0.0);
+        const std::string commands[3] = {"--plain " + file, "--read " + file + " --threads " + std::to_string(threads),
+                                         "--read " + file + " --threads 1"};
+        const char* labels[3] = {"plain from_chars loop", "", "reader, 1 thread"};
+        std::vector<Run> runs[3];
+        for (int i = 0; i < repeat; ++i)
+            for (int k = 0; k < 3; ++k) runs[k].push_back(parseRun(runChild(argv[0], commands[k])));
+        std::printf("%s (%.1f MB), %d runs each\n", file.c_str(),
+                    static_cast<double>(std::filesystem::file_size(file)) / 1e6, repeat);
+        Summary summary[3];
+        for (int k = 0; k < 3; ++k) {
+            summary[k] = summarise(runs[k]);
+            const std::string label = k == 1 ? "reader, " + std::to_string(threads) + " threads" : labels[k];
+            std::printf("  %-22s best %6.1f MB/s  median %6.1f  worst %6.1f  cpu %.3f s  peak %.1f MiB%s\n",
+                        label.c_str(), summary[k].best, summary[k].median, summary[k].worst, summary[k].cpu,
+                        summary[k].peak, k == 0 ? "" : (" (" + summary[k].ratioText + ")").c_str());
+        }
+        std::printf("  reader / plain: best %.2f, median %.2f (%d threads); best %.2f, median %.2f (1 thread)\n",
+                    summary[1].best / summary[0].best, summary[1].median / summary[0].median, threads,
+                    summary[2].best / summary[0].best, summary[2].median / summary[0].median);
     }
     if (!keep) {
         std::filesystem::remove(text);

@@ -161,7 +161,8 @@ CurvePlan makeCurvePlan(const std::vector<ColumnSpec>& columns, const LasHeader*
 
     for (std::size_t c = 0; c < columns.size(); ++c) {
         const ColumnSpec& col = columns[c];
-        const CurveRole role = roles.roleOf(static_cast<int>(c));
+        CurveRole role = roles.roleOf(static_cast<int>(c));
+        if (role == CurveRole::Radius && guessRole(col.mnemonic).role == CurveRole::Finger) role = CurveRole::Finger;
         const bool secondDepth = std::find(plan.otherDepthColumns.begin(), plan.otherDepthColumns.end(),
                                            static_cast<int>(c)) != plan.otherDepthColumns.end();
         info.curves.push_back({col.mnemonic, col.unit,

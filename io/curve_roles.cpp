@@ -101,6 +101,24 @@ int indexOf(const std::vector<std::string>& mnemonics, const std::string& wanted
     throw std::invalid_argument("no curve named '" + wanted + "' in the log");
 }
 
+// One named curve, or for "NAME[]" every element NAME[1], NAME[2], ... of a
+// LAS 3.0 array channel, in index order (a 40-finger array in one word).
+std::vector<int> indicesOf(const std::vector<std::string>& mnemonics, const std::string& wanted) {
+    if (wanted.size() < 3 || wanted.compare(wanted.size() - 2, 2, "[]") != 0) return {indexOf(mnemonics, wanted)};
+    const std::string array = canonical(wanted.substr(0, wanted.size() - 2)) + "[";
+    std::vector<int> out;
+    for (int element = 1;; ++element) {
+        const std::string name = array + std::to_string(element) + "]";
+        auto it = std::find_if(mnemonics.begin(), mnemonics.end(), [&](const std::string& m) {
+            return m.find(':') == std::string::npos && canonical(m) == name;
+        });
+        if (it == mnemonics.end()) break;
+        out.push_back(static_cast<int>(it - mnemonics.begin()));
+    }
+    if (out.empty()) throw std::invalid_argument("no array '" + wanted + "' (elements " + array + "1], ...) in the log");
+    return out;
+}
+
 // Arm numbers 1..n without gaps, first curve per arm.
 std::vector<int> armSequence(const std::map<int, int>& byArm) {
     std::vector<int> out;
@@ -135,9 +153,11 @@ CurveRoles assignRoles(const std::vector<std::string>& mnemonics, const RoleOver
     if (roles.depth < 0 && !mnemonics.empty()) roles.depth = 0;  // LAS: the first curve is the index
 
     if (!overrides.radii.empty()) {
-        for (const std::string& name : overrides.radii) roles.radii.push_back(indexOf(mnemonics, name));
+        for (const std::string& name : overrides.radii)
+            for (int index : indicesOf(mnemonics, name)) roles.radii.push_back(index);
     } else if (!overrides.diameters.empty()) {
-        for (const std::string& name : overrides.diameters) roles.diameters.push_back(indexOf(mnemonics, name));
+        for (const std::string& name : overrides.diameters)
+            for (int index : indicesOf(mnemonics, name)) roles.diameters.push_back(index);
     } else {
         roles.radii = armSequence(radii);
         if (roles.radii.size() < 3) roles.radii = armSequence(fingers);

@@ -30,7 +30,8 @@ struct RoleGuess {
 RoleGuess guessRole(std::string_view mnemonic);
 
 // Explicit choices from the command line (--radii R1,R2,... --diameters C1,C2);
-// an empty field means "detect".
+// an empty field means "detect". "NAME[]" names every element NAME[1],
+// NAME[2], ... of a LAS 3.0 array channel, in index order.
 struct RoleOverrides {
     std::vector<std::string> radii;
     std::vector<std::string> diameters;

@@ -228,6 +228,7 @@ LasHeader parseLasHeader(std::string_view text, const std::string& file, Diagnos
         else if (d == "SPACE" || d.empty()) header.delimiter = ' ';
         else throw ParseError(file, dlm->line, 1, "expected DLM SPACE, TAB or COMMA, found '" + dlm->value + "'");
     }
+    if (const LasItem* nulls = header.parameter("NULLS")) header.onlyDeclaredNull = upper(nulls->value) == "DECLARED";
     if (const LasItem* null = header.wellItem("NULL")) {
         double v = 0.0;
         if (parseNumber(null->value, v)) {

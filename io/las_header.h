@@ -28,6 +28,10 @@ struct LasHeader {
     char delimiter = ' ';  // ' ' = runs of spaces or tabs; ',' for LAS 3.0 DLM COMMA; '\t' for TAB
     bool hasNull = false;
     double null = -999.25;
+    // ~P "NULLS. DECLARED": the file says that only its NULL value marks a
+    // missing reading (caliper3d's writer says so, for an exact round trip);
+    // read with NullPolicy::Declared whatever the reader's policy.
+    bool onlyDeclaredNull = false;
     std::vector<LasItem> versionItems;
     std::vector<LasItem> well;
     std::vector<LasItem> curves;      // ~C, or ~Log_Definition in LAS 3.0

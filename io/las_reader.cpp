@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <limits>
+#include <unordered_map>
 
 #include "io/number_parsing.h"
 #include "io/parse_error.h"
@@ -31,10 +33,18 @@ void tokenize(std::string_view line, char delimiter, std::vector<std::string_vie
     tokens.clear();
     columns.clear();
     auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
+    // A quoted string ("SAND, SHALY") is one token, delimiters and blanks inside it included.
+    auto quotedEnd = [&](std::size_t at) {
+        while (at < line.size() && blank(line[at])) ++at;
+        if (at >= line.size() || line[at] != '"') return std::string_view::npos;
+        const std::size_t close = line.find('"', at + 1);
+        return close == std::string_view::npos ? line.size() : close + 1;
+    };
     if (delimiter == ',') {
         std::size_t start = 0;
         while (start <= line.size()) {
-            std::size_t end = line.find(',', start);
+            const std::size_t quoted = quotedEnd(start);
+            std::size_t end = line.find(',', quoted == std::string_view::npos ? start : quoted);
             if (end == std::string_view::npos) end = line.size();
             std::size_t a = start, b = end;
             while (a < b && blank(line[a])) ++a;
@@ -49,8 +59,9 @@ void tokenize(std::string_view line, char delimiter, std::vector<std::string_vie
     while (i < line.size()) {
         while (i < line.size() && blank(line[i])) ++i;
         if (i == line.size()) break;
-        std::size_t j = i;
-        while (j < line.size() && !blank(line[j])) ++j;
+        std::size_t j = quotedEnd(i);
+        if (j == std::string_view::npos)
+            for (j = i; j < line.size() && !blank(line[j]);) ++j;
         tokens.push_back(line.substr(i, j - i));
         columns.push_back(i + 1);
         i = j;
@@ -61,10 +72,14 @@ void splitArrayName(LasCurve& curve) {
     const std::size_t open = curve.mnemonic.find('[');
     const std::size_t close = curve.mnemonic.find(']', open == std::string::npos ? 0 : open);
     if (open == std::string::npos || close == std::string::npos || close <= open + 1) return;
-    double index = 0;
-    if (!parseNumber(std::string_view(curve.mnemonic).substr(open + 1, close - open - 1), index)) return;
+    // A whole number that fits an int, nothing else ("NMR[4e21]" is a name, not an element).
+    const char* first = curve.mnemonic.data() + open + 1;
+    const char* last = curve.mnemonic.data() + close;
+    int index = 0;
+    const auto [end, ec] = std::from_chars(first, last, index);
+    if (ec != std::errc() || end != last || index < 1) return;
     curve.arrayName = curve.mnemonic.substr(0, open);
-    curve.arrayIndex = static_cast<int>(index);
+    curve.arrayIndex = index;
 }
 
 }  // namespace
@@ -84,16 +99,14 @@ std::vector<ColumnSpec> lasColumns(const LasHeader& h, Diagnostics* diagnostics)
     for (const LasItem& item : h.curves)
         columns.push_back({item.mnemonic, item.unit, item.description,
                            item.description.find("{S}") != std::string::npos, item.line});
-    for (std::size_t i = 0; i < columns.size(); ++i) {
-        int copies = 1;
-        for (std::size_t j = i + 1; j < columns.size(); ++j) {
-            if (upper(columns[j].mnemonic) == upper(columns[i].mnemonic) &&
-                columns[j].mnemonic.find(':') == std::string::npos) {
-                warn(columns[j].line, "curve '" + columns[j].mnemonic + "' is declared again; read as '" +
-                                          columns[j].mnemonic + ":" + std::to_string(copies + 1) + "'");
-                columns[j].mnemonic += ":" + std::to_string(++copies);
-            }
-        }
+    // One pass with a map: a header may declare thousands of curves.
+    std::unordered_map<std::string, int> declaredTimes;
+    for (ColumnSpec& c : columns) {
+        const int times = ++declaredTimes[upper(c.mnemonic)];
+        if (times == 1) continue;
+        warn(c.line, "curve '" + c.mnemonic + "' is declared again; read as '" + c.mnemonic + ":" +
+                         std::to_string(times) + "'");
+        c.mnemonic += ":" + std::to_string(times);
     }
     for (const ColumnSpec& c : columns)
         if (c.text) warn(c.line, "curve '" + c.mnemonic + "' holds text; skipped");
@@ -117,6 +130,7 @@ LasLog readLas(std::string_view text, const std::string& file, const LasReadOpti
         if (diagnostics) diagnostics->warn(file, line, std::move(message));
     };
     if (h.curves.empty()) throw ParseError(file, 0, 0, "expected a ~C (curve information) section, found none");
+    const NullPolicy nullPolicy = h.onlyDeclaredNull ? NullPolicy::Declared : options.nullPolicy;
     if (!h.hasData) throw ParseError(file, 0, 0, "expected a ~A (data) section, found none");
 
     for (const ColumnSpec& spec : lasColumns(h, diagnostics)) {
@@ -147,13 +161,13 @@ LasLog readLas(std::string_view text, const std::string& file, const LasReadOpti
         double v = 0.0;
         if (parseNumber(token, v)) {
             if (curve > 0 && ((h.hasNull && v == h.null) ||
-                              (options.nullPolicy == NullPolicy::Common && isCommonNullNumber(v)))) {
+                              (nullPolicy == NullPolicy::Common && isCommonNullNumber(v)))) {
                 ++target.nulls;
                 return kNull;
             }
             return v;
         }
-        if (curve > 0 && isNullToken(token, options.nullPolicy)) {
+        if (curve > 0 && isNullToken(token, nullPolicy)) {
             ++target.nulls;
             return kNull;
         }

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <stdexcept>
 
@@ -33,6 +34,22 @@ void item(std::ostream& out, const std::string& mnemonic, const std::string& uni
     out << left << middle << " : " << description << "\n";
 }
 
+// A NULL value that no true value equals, so that no reading turns into a null.
+double nullAbsentFrom(const std::vector<LasColumn>& columns, std::size_t rows, double preferred) {
+    std::vector<double> candidates;
+    if (std::isfinite(preferred)) candidates.push_back(preferred);
+    for (double power = 1e3; power <= 1e12; power *= 10.0) candidates.push_back(-(power - 0.75));  // -999.25, -9999.25, ...
+    std::vector<char> taken(candidates.size(), 0);
+    for (std::size_t c = 1; c < columns.size(); ++c)  // the index is never read as null
+        for (std::size_t r = 0; r < rows; ++r) {
+            const double v = columns[c].values[r * columns[c].stride];
+            for (std::size_t k = 0; k < candidates.size(); ++k) taken[k] |= v == candidates[k];
+        }
+    for (std::size_t k = 0; k < candidates.size(); ++k)
+        if (!taken[k]) return candidates[k];
+    throw std::invalid_argument("writeLas: every candidate NULL value occurs in the data");
+}
+
 }  // namespace
 
 void writeLasColumns(std::ostream& out, std::size_t rows, const std::vector<LasColumn>& columns,
@@ -52,7 +69,17 @@ void writeLasColumns(std::ostream& out, std::size_t rows, const std::vector<LasC
     out << "~Well information\n";
     item(out, "STRT", index.unit, rows ? number(depth(0)) : "0", "start depth");
     item(out, "STOP", index.unit, rows ? number(depth(rows - 1)) : "0", "stop depth");
-    item(out, "STEP", index.unit, rows > 1 ? number(depth(1) - depth(0)) : "0", "step");
+    double step = 0.0;
+    if (rows > 1) {
+        // Regular within a part in a thousand (decimal steps do not add up exactly in binary).
+        const double nominal = (depth(rows - 1) - depth(0)) / static_cast<double>(rows - 1);
+        step = nominal;
+        for (std::size_t r = 1; r < rows && step != 0.0; ++r)
+            if (!(std::abs(depth(r) - depth(r - 1) - nominal) <= 1e-3 * std::abs(nominal))) step = 0.0;
+    }
+    char stepText[32];
+    std::snprintf(stepText, sizeof stepText, "%.10g", step);  // nominal: 0.0025, not 0.0024999999999988864
+    item(out, "STEP", index.unit, stepText, "step (0: irregular)");
     item(out, "NULL", "", number(options.null), "null value");
     item(out, "WELL", "", options.wellName, "well");
     out << "~Curve information\n";
@@ -80,6 +107,9 @@ void writeLasColumns(std::ostream& out, std::size_t rows, const std::vector<LasC
 
 void writeLas(std::ostream& out, const SectionTable& t, const LasWriteOptions& options) {
     const std::size_t rows = t.rowCount();
+    for (std::size_t r = 0; r < rows; ++r)
+        if (!std::isfinite(t.depth_m[r]))
+            throw std::invalid_argument("writeLas: depth of row " + std::to_string(r) + " is not finite");
     std::vector<LasColumn> columns;
     columns.push_back({"DEPT", "M", "measured depth", t.depth_m.data(), 1});
     for (int k = 1; k <= t.armCount; ++k)
@@ -98,7 +128,10 @@ void writeLas(std::ostream& out, const SectionTable& t, const LasWriteOptions& o
             columns.push_back({o.mnemonic, o.unit, o.description, o.values->data(), 1});
     for (const ExtraCurve& e : t.extraCurves)
         if (e.values.size() == rows && rows > 0) columns.push_back({e.mnemonic, e.unit, e.description, e.values.data(), 1});
-    writeLasColumns(out, rows, columns, options);
+    LasWriteOptions exact = options;
+    exact.null = nullAbsentFrom(columns, rows, options.null);
+    exact.parameters.push_back({"NULLS", "", "DECLARED", "only NULL marks a missing value"});
+    writeLasColumns(out, rows, columns, exact);
 }
 
 void writeLasFile(const std::string& path, const SectionTable& table, const LasWriteOptions& options) {

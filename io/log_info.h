@@ -34,6 +34,7 @@ struct LogInfo {
     std::vector<CurveInfo> curves;
     Diagnostics diagnostics;
     bool cancelled = false;   // the read was stopped by its cancellation token
+    bool survey = false;      // a deviation survey, described by describeLog: rows are stations
 };
 
 }  // namespace caliper3d::io

@@ -36,7 +36,10 @@ SectionTable readCaliperLog(const std::string& path, const ReadOptions& options,
 LoadedLog loadCaliperText(std::string_view text, const std::string& name, const ReadOptions& options,
                           const StreamOptions& stream = {});
 
-// What `caliper3d info FILE` prints, read without keeping the rows.
+// What `caliper3d info FILE` prints, read without keeping the rows. A
+// deviation survey (io::looksLikeSurvey) is described too: its stations,
+// MD range and columns with the role each is read in. Throws ParseError for
+// what is neither (JSON, binary) or cannot be read.
 LogInfo describeLog(const std::string& path, const ReadOptions& options);
 std::string formatLogInfo(const LogInfo& info);
 

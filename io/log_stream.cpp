@@ -5,6 +5,10 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <mutex>
 #include <cmath>
 #include <cstring>
 #include <exception>
@@ -19,6 +23,7 @@
 #include "io/las_reader.h"
 #include "io/number_parsing.h"
 #include "io/parse_error.h"
+#include "io/survey_reader.h"
 #include "io/text_encoding.h"
 
 namespace caliper3d::io {
@@ -28,6 +33,84 @@ namespace {
 constexpr double kMaxPlausibleRadius_in = 30.0;
 constexpr std::size_t kStepSamples = 65536;
 constexpr std::size_t kMinSplitBytes = 256u << 10;
+constexpr std::size_t kMaxPieces = 16;
+
+// Shares the pieces of one block between the calling thread and one worker
+// thread that lives as long as the read. Pieces are claimed one at a time, so
+// when the other core is busy with another job the caller simply parses more
+// of them instead of waiting for a fixed half (which made two threads slower
+// than one on a loaded machine).
+class PieceSharing {
+public:
+    explicit PieceSharing(bool withWorker) {
+        if (withWorker) m_worker = std::thread([this] { work(); });
+    }
+    ~PieceSharing() {
+        {
+            std::lock_guard<std::mutex> lock(m_mutex);
+            m_stop = true;
+        }
+        m_wake.notify_all();
+        if (m_worker.joinable()) m_worker.join();
+    }
+    PieceSharing(const PieceSharing&) = delete;
+    PieceSharing& operator=(const PieceSharing&) = delete;
+
+    // Runs task(i) for every i below count and returns when all have run.
+    // The task must not throw (parseRows keeps its error).
+    void run(std::size_t count, const std::function<void(std::size_t)>& task) {
+        if (!m_worker.joinable()) {
+            for (std::size_t i = 0; i < count; ++i) task(i);
+            return;
+        }
+        {
+            std::lock_guard<std::mutex> lock(m_mutex);
+            m_task = &task;
+            m_count = count;
+            m_next = 0;
+            m_done = 0;
+            ++m_generation;
+        }
+        m_wake.notify_one();
+        std::unique_lock<std::mutex> lock(m_mutex);
+        while (m_next < m_count) {
+            const std::size_t i = m_next++;
+            lock.unlock();
+            task(i);
+            lock.lock();
+            ++m_done;
+        }
+        m_finished.wait(lock, [&] { return m_done == m_count; });
+        m_task = nullptr;
+    }
+
+private:
+    void work() {
+        std::unique_lock<std::mutex> lock(m_mutex);
+        std::uint64_t seen = 0;
+        for (;;) {
+            m_wake.wait(lock, [&] { return m_stop || m_generation != seen; });
+            if (m_stop) return;
+            seen = m_generation;
+            while (m_task && m_next < m_count) {
+                const std::size_t i = m_next++;
+                const std::function<void(std::size_t)>& task = *m_task;
+                lock.unlock();
+                task(i);
+                lock.lock();
+                if (++m_done == m_count) m_finished.notify_one();
+            }
+        }
+    }
+
+    std::thread m_worker;
+    std::mutex m_mutex;
+    std::condition_variable m_wake, m_finished;
+    const std::function<void(std::size_t)>* m_task = nullptr;
+    std::size_t m_count = 0, m_next = 0, m_done = 0;
+    std::uint64_t m_generation = 0;
+    bool m_stop = false;
+};
 
 // ---- where the text comes from ------------------------------------------------
 
@@ -278,9 +361,19 @@ void parseRows(const RowFormat& f, std::string_view text, std::size_t firstLine,
                     p = end;
                 } else {
                     const char* tokenEnd = p;
-                    while (tokenEnd < lineEnd && !isBlank(*tokenEnd) && !(commaDelimited && *tokenEnd == ',')) ++tokenEnd;
-                    if (commaDelimited && f.textColumn[c])  // text may hold blanks
-                        while (tokenEnd < lineEnd && *tokenEnd != ',') ++tokenEnd;
+                    if (f.textColumn[c] && p < lineEnd && *p == '"') {
+                        // LAS 3.0 quotes a string that holds the delimiter: "SAND, SHALY".
+                        const void* close = std::memchr(p + 1, '"', static_cast<std::size_t>(lineEnd - p - 1));
+                        if (!close)
+                            throw ParseError(f.file, lineNumber, column(p),
+                                             "expected a closing '\"' for the text of curve " + f.names[c] +
+                                                 ", found the end of the line");
+                        tokenEnd = static_cast<const char*>(close) + 1;
+                    } else {
+                        while (tokenEnd < lineEnd && !isBlank(*tokenEnd) && !(commaDelimited && *tokenEnd == ',')) ++tokenEnd;
+                        if (commaDelimited && f.textColumn[c])  // text may hold blanks
+                            while (tokenEnd < lineEnd && *tokenEnd != ',') ++tokenEnd;
+                    }
                     const std::string_view token(tokenBegin, static_cast<std::size_t>(tokenEnd - tokenBegin));
                     p = tokenEnd;
                     if (f.textColumn[c]) {
@@ -376,6 +469,7 @@ public:
         if (run.substr(0, 3) == "\xEF\xBB\xBF") offset = 3;
         if (trim(run).empty() && m_reader->done())
             throw ParseError(m_name, 0, 0, "expected a caliper log (column text or LAS), found an empty file");
+        refuseWhatIsNotALog(run.substr(offset));
         if (looksLikeLas(run.substr(offset))) readLasHeader(run, offset);
         else prepareColumnText(run, offset);
         if (m_wrapped) return finishWrapped(run.substr(offset));
@@ -385,6 +479,30 @@ public:
     }
 
 private:
+    // Files that are text but not a caliper log would otherwise read as column
+    // text and fail late with a misleading message, or worse, a survey of 11
+    // numbers per line would read as an 11-arm log.
+    void refuseWhatIsNotALog(std::string_view start) const {
+        const std::string_view head = start.substr(0, 64u << 10);
+        if (const void* nul = std::memchr(head.data(), '\0', head.size())) {
+            const std::size_t at = static_cast<std::size_t>(static_cast<const char*>(nul) - head.data());
+            const std::size_t line = 1 + static_cast<std::size_t>(std::count(head.begin(), head.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
+            const std::size_t newline = at == 0 ? std::string_view::npos : head.rfind('\n', at - 1);
+            const std::size_t column = newline == std::string_view::npos ? at + 1 : at - newline;
+            throw ParseError(m_name, line, column,
+                             "expected text, found a NUL byte (a binary file, or UTF-16 without a byte-order mark)");
+        }
+        const std::size_t first = head.find_first_not_of(" \t\r\n");
+        if (first != std::string_view::npos && (head[first] == '{' || head[first] == '['))
+            throw ParseError(m_name, 1 + static_cast<std::size_t>(std::count(head.begin(), head.begin() + static_cast<std::ptrdiff_t>(first), '\n')), 0,
+                             "expected a caliper log (LAS or column text), found JSON");
+        if (!looksLikeLas(head) && looksLikeSurvey(head))
+            throw ParseError(m_name, 0, 0,
+                             "expected a caliper log, found a deviation survey (a line names measured depth, "
+                             "inclination and azimuth columns, and no caliper curves): give it with --survey, "
+                             "or see it with caliper3d info");
+    }
+
     static bool looksLikeLas(std::string_view text) {
         std::size_t i = 0;
         while (i < text.size()) {
@@ -459,7 +577,7 @@ private:
         m_format.tokens = m_columns.size();  // settled on the first data line
         m_format.hasNull = h.hasNull;
         m_format.null = h.null;
-        m_format.nullPolicy = m_options.nullPolicy;
+        m_format.nullPolicy = h.onlyDeclaredNull ? NullPolicy::Declared : m_options.nullPolicy;
         m_format.depthColumn = m_plan.depthColumn;
         for (const ColumnSpec& c : m_columns) {
             m_format.textColumn.push_back(c.text);
@@ -610,7 +728,11 @@ private:
         m_held = m_plan.emptyTable(m_columns);
         m_nulls.assign(m_columns.size(), 0);
         m_depthDiffer.assign(m_plan.otherDepthColumns.size(), 0);
+        m_parts.resize(m_stream.threads > 1 ? kMaxPieces : 1);
         for (ParsedRows& part : m_parts) part.table = m_plan.emptyTable(m_columns);
+        // Joined when the data loop ends, however it ends, while the block it reads still exists.
+        PieceSharing sharing(m_stream.threads > 1);
+        m_sharing = &sharing;
         if (m_skipFirstLines) {
             // Skip the names line(s) of column text.
             for (std::size_t i = 0; i < m_skipFirstLines; ++i) {
@@ -642,37 +764,60 @@ private:
         return false;
     }
 
+    // Cuts a block into pieces of whole lines for the threads to share: about
+    // an eighth of a block each (1 MiB by default), at least two once the block
+    // is worth splitting.
+    std::size_t cutPieces(std::string_view run) {
+        std::size_t pieces = 1;
+        const std::size_t minSplit = std::min(kMinSplitBytes, m_stream.blockBytes / 2);
+        if (m_stream.threads > 1 && run.size() >= minSplit) {
+            const std::size_t pieceBytes = std::max<std::size_t>(m_stream.blockBytes / 8, 1024);
+            pieces = std::min(kMaxPieces, std::max<std::size_t>(2, run.size() / pieceBytes));
+        }
+        m_pieceBegin.assign(1, 0);
+        for (std::size_t i = 1; i < pieces; ++i) {
+            const std::size_t target = std::max(m_pieceBegin.back(), run.size() * i / pieces);
+            const std::size_t nl = target == 0 ? std::string_view::npos : run.find('\n', target - 1);
+            if (nl == std::string_view::npos || nl + 1 >= run.size()) break;
+            if (nl + 1 > m_pieceBegin.back()) m_pieceBegin.push_back(nl + 1);
+        }
+        m_pieceBegin.push_back(run.size());
+        return m_pieceBegin.size() - 1;
+    }
+
     void processRun(std::string_view run, bool finalRun, std::size_t& stop) {
-        std::size_t split = run.size();
-        if (m_stream.threads > 1 && run.size() >= kMinSplitBytes) {
-            const std::size_t nl = run.find('\n', run.size() / 2);
-            if (nl != std::string_view::npos && nl + 1 < run.size()) split = nl + 1;
-        }
-        ParsedRows* parts = m_parts;
-        const std::string_view first = run.substr(0, split);
-        if (split < run.size()) {
-            const std::string_view second = run.substr(split);
-            const std::size_t secondLine =
-                m_lineNumber + 1 + static_cast<std::size_t>(std::count(first.begin(), first.end(), '\n'));
-            std::thread worker(
-                [&]() { parseRows(m_format, second, secondLine, finalRun, m_columns, parts[1]); });
-            parseRows(m_format, first, m_lineNumber + 1, false, m_columns, parts[0]);
-            worker.join();
-        } else {
-            parseRows(m_format, first, m_lineNumber + 1, finalRun, m_columns, parts[0]);
-        }
-        const int count = split < run.size() ? 2 : 1;
-        for (int i = 0; i < count; ++i) {
-            ParsedRows& part = parts[i];
-            if (part.error) std::rethrow_exception(part.error);
+        const std::size_t pieces = cutPieces(run);
+        // Lines are counted from 1 within each piece; the piece's place in the
+        // file is added below, in order, so no thread has to count ahead.
+        const std::function<void(std::size_t)> parsePiece = [&](std::size_t i) {
+            const std::string_view text = run.substr(m_pieceBegin[i], m_pieceBegin[i + 1] - m_pieceBegin[i]);
+            parseRows(m_format, text, 1, finalRun && i + 1 == pieces, m_columns, m_parts[i]);
+        };
+        m_sharing->run(pieces, parsePiece);
+        for (std::size_t i = 0; i < pieces; ++i) {
+            ParsedRows& part = m_parts[i];
+            const std::size_t before = m_lineNumber;
+            if (part.error) rethrowAfter(part.error, before);
+            for (std::size_t& line : part.lines) line += before;
+            for (Warning& w : part.diagnostics.warnings) w.line += before;
             commit(part);
             m_lineNumber += part.linesConsumed;
             if (part.stopped) {
-                stop = (i == 0 ? 0 : split) + part.stopOffset;
+                stop = m_pieceBegin[i] + part.stopOffset;
                 break;
             }
         }
         deliverReady();
+    }
+
+    // A piece's error, with its line moved from the piece to the file.
+    static void rethrowAfter(const std::exception_ptr& error, std::size_t linesBefore) {
+        try {
+            std::rethrow_exception(error);
+        } catch (const ParseError& e) {
+            if (e.line() == 0) throw;
+            throw ParseError(e.file(), e.line() + linesBefore, e.column(), e.message());
+        }
     }
 
     void commit(ParsedRows& part) {
@@ -685,6 +830,7 @@ private:
         const std::size_t n = t.rowCount();
         if (m_radiiOnly)
             for (std::size_t r = 0; r < n; ++r) t.depth_m[r] = static_cast<double>(m_rowIndex++) * m_options.rowStep_m;
+        if (!m_directionKnown) decideDirection(t);
         std::size_t runStart = 0;
         m_kept.clear();
         auto flush = [&](std::size_t end) {
@@ -735,6 +881,31 @@ private:
             return;
         }
         for (const auto& [a, b] : m_kept) appendRows(t, m_descending ? m_held : m_current, a, b);
+    }
+
+    // The trend over the rows read so far decides the direction, not the first
+    // pair of rows: a log recorded upwards that starts with one row out of order
+    // is sorted whole, not cut down to the rows after that pair. (A thread's
+    // share of a block holds thousands of rows, so the trend is clear.)
+    void decideDirection(const SectionTable& t) {
+        const std::size_t n = t.rowCount();
+        std::size_t first = 0;
+        while (!m_haveFirst && first < n) {
+            if (std::isfinite(t.depth_m[first])) {
+                m_first = t.depth_m[first];
+                m_haveFirst = true;
+            }
+            ++first;
+        }
+        std::size_t last = n;
+        while (last > 0 && !std::isfinite(t.depth_m[last - 1])) --last;
+        if (!m_haveFirst || last == 0 || t.depth_m[last - 1] == m_first) return;
+        m_directionKnown = true;
+        m_descending = t.depth_m[last - 1] < m_first;
+        if (m_descending) {
+            appendRows(m_current, m_held, 0, m_current.rowCount());
+            clearRows(m_current);
+        }
     }
 
     void deliver(const SectionTable& chunk) {
@@ -898,12 +1069,14 @@ private:
     RowFormat m_format;
 
     SectionTable m_current, m_held;
-    ParsedRows m_parts[2];
+    std::vector<ParsedRows> m_parts;      // one per piece of a block
+    std::vector<std::size_t> m_pieceBegin;
+    PieceSharing* m_sharing = nullptr;   // set while dataLoop runs
     std::vector<std::pair<std::size_t, std::size_t>> m_kept;
     std::vector<std::size_t> m_nulls, m_depthDiffer;
     std::vector<double> m_steps;
-    bool m_haveLast = false, m_directionKnown = false, m_descending = false;
-    double m_last = 0.0;
+    bool m_haveLast = false, m_directionKnown = false, m_descending = false, m_haveFirst = false;
+    double m_last = 0.0, m_first = 0.0;
     double m_bitSizeMin = 1e300, m_bitSizeMax = -1e300;
     std::size_t m_nullDepths = 0, m_repeated = 0, m_backwards = 0;
     std::size_t m_firstNullDepthLine = 0, m_firstRepeatedLine = 0, m_firstBackwardsLine = 0;

@@ -16,10 +16,12 @@ namespace caliper3d::io {
 // How the streaming reader works through a file. Defaults suit a 2-core
 // machine; none changes what is read.
 struct StreamOptions {
-    std::size_t chunkRows = 65536;        // rows per delivered chunk (the last may hold fewer,
-                                          //   others a little more)
+    std::size_t chunkRows = 4096;         // rows per delivered chunk at least (the last may hold
+                                          //   fewer); an in-order piece of a block goes on whole,
+                                          //   without a copy, when it holds that many
     std::size_t blockBytes = 8u << 20;    // text read per step; the text is never held whole
-    int threads = 2;                      // 1 or 2 parsing threads (a block is split at a line end)
+    int threads = 2;                      // 1 or 2 parsing threads, sharing the pieces of each block
+                                          //   (about blockBytes / 8 each, cut at line ends)
     const std::atomic<bool>* cancel = nullptr;  // checked per block; set from any thread
     // Called once before the first chunk, with the curves and roles known
     // (info.rows still 0) and an estimate of the rows to come (for reserving).

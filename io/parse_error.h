@@ -14,11 +14,13 @@ public:
         : std::runtime_error(format(file, line, column, what)),
           m_file(std::move(file)),
           m_line(line),
-          m_column(column) {}
+          m_column(column),
+          m_message(what) {}
 
     const std::string& file() const { return m_file; }
     std::size_t line() const { return m_line; }
     std::size_t column() const { return m_column; }
+    const std::string& message() const { return m_message; }  // what() without file, line, column
 
 private:
     static std::string format(const std::string& file, std::size_t line, std::size_t column,
@@ -32,6 +34,7 @@ private:
     std::string m_file;
     std::size_t m_line;
     std::size_t m_column;
+    std::string m_message;
 };
 
 }  // namespace caliper3d::io

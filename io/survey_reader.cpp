@@ -4,10 +4,12 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <string_view>
 
+#include "io/curve_roles.h"
 #include "io/number_parsing.h"
 #include "io/parse_error.h"
 #include "io/section_table.h"
@@ -133,10 +135,19 @@ bool isNumber(std::string_view s) {
     return parseNumber(trim(s), v);
 }
 
+std::string formatNumber(double v) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.10g", v);
+    return buffer;
+}
+
 }  // namespace
 
-SurveyTable parseSurvey(const std::string& text, const std::string& name,
-                        const SurveyReadOptions& options) {
+SurveyTable parseSurvey(const std::string& text, const std::string& name, const SurveyReadOptions& options,
+                        Diagnostics* diagnostics) {
+    auto warn = [&](std::size_t line, std::string message) {
+        if (diagnostics) diagnostics->warn(name, line, std::move(message));
+    };
     // Lines, with a UTF-8 BOM and '\r' removed.
     std::vector<std::string_view> lines;
     {
@@ -172,10 +183,22 @@ SurveyTable parseSurvey(const std::string& text, const std::string& name,
     }
     if (i == lines.size())
         throw ParseError(name, 0, 0,
-                         "no survey header found: expected a line naming measured depth, "
-                         "inclination and azimuth columns (e.g. MD,INC,AZI)");
+                         "expected a survey header, a line naming measured depth, inclination and azimuth "
+                         "columns (e.g. MD,INC,AZI), found none in " + std::to_string(lines.size()) + " lines");
     table.headerLine = i + 1;
+    table.delimiter = delimiter;
     const std::vector<Field> header = split(lines[i], delimiter);
+    int wellColumn = -1;
+    for (std::size_t c = 0; c < header.size(); ++c) {
+        const std::string n = normalise(header[c].text);
+        if (wellColumn < 0 && (n == "well" || n == "wellname" || n == "wellbore")) wellColumn = static_cast<int>(c);
+    }
+    {
+        const std::string azimuthName = normalise(header[static_cast<std::size_t>(columns[kAzi])].text);
+        if (azimuthName == "azimuthgrid" || azimuthName == "azimgn" || azimuthName == "azimuthgn")
+            warn(table.headerLine, "azimuth read from the grid-north column '" + std::string(trim(header[static_cast<std::size_t>(columns[kAzi])].text)) +
+                                       "' (no true-north column): grid convergence is not applied");
+    }
     std::array<std::optional<LengthUnit>, kRoleCount> units;
     for (int role : {kMd, kTvd, kNorth, kEast})
         if (columns[static_cast<std::size_t>(role)] >= 0)
@@ -186,7 +209,8 @@ SurveyTable parseSurvey(const std::string& text, const std::string& name,
     while (i < lines.size() && isComment(lines[i])) ++i;
     if (i < lines.size()) {
         const std::vector<Field> fields = split(lines[i], delimiter);
-        if (!fields.empty() && !isNumber(fields[0].text)) {
+        const std::size_t mdAt = static_cast<std::size_t>(columns[kMd]);
+        if (fields.size() > mdAt && !isNumber(fields[mdAt].text)) {
             bool allUnits = true;
             for (const Field& f : fields) {
                 std::string_view t = trim(f.text);
@@ -210,12 +234,27 @@ SurveyTable parseSurvey(const std::string& text, const std::string& name,
                                  : units[kMd]      ? *units[kMd]
                                                    : options.defaultDepthUnit;
     table.depthUnit = depthUnit;
-    auto scaleOf = [&](int role) {
-        if (options.depthUnit) return toMetres(*options.depthUnit);
+    auto lengthUnitOf = [&](int role) {
+        if (options.depthUnit) return *options.depthUnit;
         const auto& u = units[static_cast<std::size_t>(role)];
-        return toMetres(u ? *u : depthUnit);
+        return u ? *u : depthUnit;
     };
+    auto scaleOf = [&](int role) { return toMetres(lengthUnitOf(role)); };
     const double mdScale = scaleOf(kMd);
+    {
+        const char* roleNames[kRoleCount] = {"measured depth", "inclination", "azimuth", "TVD (read for checking)",
+                                             "north (read for checking)", "east (read for checking)"};
+        for (std::size_t c = 0; c < header.size(); ++c) {
+            SurveyColumn column{std::string(trim(header[c].text)), "", ""};
+            for (int role = 0; role < kRoleCount; ++role)
+                if (columns[static_cast<std::size_t>(role)] == static_cast<int>(c)) {
+                    column.role = roleNames[role];
+                    column.unit = role == kInc || role == kAzi ? "deg" : std::string(unitName(lengthUnitOf(role)));
+                }
+            if (static_cast<int>(c) == wellColumn) column.role = "well name";
+            table.columns.push_back(std::move(column));
+        }
+    }
     const bool hasTvd = columns[kTvd] >= 0, hasNorth = columns[kNorth] >= 0, hasEast = columns[kEast] >= 0;
 
     // A data line is one whose MD field is a number.
@@ -225,19 +264,47 @@ SurveyTable parseSurvey(const std::string& text, const std::string& name,
     };
 
     const int needed = std::max({columns[kMd], columns[kInc], columns[kAzi]}) + 1;
+    // Free text after the last station is a footer; found once, from the end,
+    // so that a long footer costs one pass, not one pass per line.
+    std::size_t lastData = i;
+    for (std::size_t j = lines.size(); j > i; --j)
+        if (!isComment(lines[j - 1]) && isDataLine(lines[j - 1])) {
+            lastData = j - 1;
+            break;
+        }
+    std::vector<std::string> wells;  // names in the well column, in order of first appearance
+    std::size_t otherWellStations = 0;
     for (; i < lines.size(); ++i) {
         if (isComment(lines[i])) continue;
         const std::size_t lineNumber = i + 1;
         const std::vector<Field> fields = split(lines[i], delimiter);
         if (!isDataLine(lines[i])) {
             // Free text after the table ends it; before more stations it is an error.
-            const bool moreData = std::any_of(lines.begin() + static_cast<std::ptrdiff_t>(i) + 1, lines.end(),
-                                              [&](std::string_view l) { return !isComment(l) && isDataLine(l); });
-            if (!moreData && table.stationCount() > 0) break;
+            if (i > lastData && (table.stationCount() > 0 || otherWellStations > 0)) {
+                std::size_t footer = 0;
+                for (std::size_t j = i; j < lines.size(); ++j) footer += !isComment(lines[j]);
+                warn(lineNumber, std::to_string(footer) + " lines of text after the last station skipped");
+                break;
+            }
             const std::size_t col = static_cast<int>(fields.size()) > columns[kMd]
                                         ? fields[static_cast<std::size_t>(columns[kMd])].column
                                         : 1;
-            throw ParseError(name, lineNumber, col, "expected a number (measured depth)");
+            const std::string found = static_cast<int>(fields.size()) > columns[kMd]
+                                          ? std::string(trim(fields[static_cast<std::size_t>(columns[kMd])].text).substr(0, 40))
+                                          : std::string(trim(lines[i]).substr(0, 40));
+            throw ParseError(name, lineNumber, col, "expected a number (measured depth), found '" + found + "'");
+        }
+        if (wellColumn >= 0) {
+            // Several wells in one table: read one, the first or the one asked for.
+            const std::string well = static_cast<std::size_t>(wellColumn) < fields.size()
+                                         ? std::string(trim(fields[static_cast<std::size_t>(wellColumn)].text))
+                                         : std::string();
+            if (std::find(wells.begin(), wells.end(), well) == wells.end()) wells.push_back(well);
+            if (table.wellName.empty() && (options.well.empty() || well == options.well)) table.wellName = well;
+            if (well != table.wellName || table.wellName.empty()) {
+                ++otherWellStations;
+                continue;
+            }
         }
         if (static_cast<int>(fields.size()) < needed)
             throw ParseError(name, lineNumber, lines[i].size() + 1,
@@ -262,10 +329,13 @@ SurveyTable parseSurvey(const std::string& text, const std::string& name,
         const double azi = number(kAzi, "azimuth", true);
         if (inc < 0.0 || inc > 180.0)
             throw ParseError(name, lineNumber, fields[static_cast<std::size_t>(columns[kInc])].column,
-                             "inclination must be between 0 and 180 degrees");
+                             "expected an inclination between 0 and 180 degrees, found " +
+                                 std::string(trim(fields[static_cast<std::size_t>(columns[kInc])].text)));
         if (!table.md_m.empty() && md < table.md_m.back())
             throw ParseError(name, lineNumber, fields[static_cast<std::size_t>(columns[kMd])].column,
-                             "measured depths must not decrease");
+                             "expected measured depths that do not decrease (at least the " +
+                                 formatNumber(table.md_m.back() / mdScale) + " of the station before), found " +
+                                 std::string(trim(fields[static_cast<std::size_t>(columns[kMd])].text)));
         table.md_m.push_back(md);
         table.inc_deg.push_back(inc);
         table.azi_deg.push_back(azi);
@@ -273,18 +343,62 @@ SurveyTable parseSurvey(const std::string& text, const std::string& name,
         if (hasNorth) table.north_m.push_back(number(kNorth, "north", false) * scaleOf(kNorth));
         if (hasEast) table.east_m.push_back(number(kEast, "east", false) * scaleOf(kEast));
     }
+    if (wellColumn >= 0) {
+        table.wellCount = wells.size();
+        if (!options.well.empty() && table.wellName.empty()) {
+            std::string names;
+            for (const std::string& w : wells) names += (names.empty() ? "'" : ", '") + w + "'";
+            throw ParseError(name, table.headerLine, header[static_cast<std::size_t>(wellColumn)].column,
+                             "expected stations of well '" + options.well + "' in column '" +
+                                 std::string(trim(header[static_cast<std::size_t>(wellColumn)].text)) + "', found only " +
+                                 (names.empty() ? std::string("none") : names));
+        }
+        if (wells.size() > 1)
+            warn(table.headerLine, "the table holds " + std::to_string(wells.size()) + " wells in column '" +
+                                       std::string(trim(header[static_cast<std::size_t>(wellColumn)].text)) + "'; read '" +
+                                       table.wellName + "' (" + std::to_string(table.stationCount()) + " stations), " +
+                                       std::to_string(otherWellStations) + " stations of other wells skipped");
+    }
     if (table.stationCount() < 2)
-        throw ParseError(name, 0, 0, "a survey needs at least two stations, found " +
+        throw ParseError(name, 0, 0, "expected at least two stations, found " +
                                          std::to_string(table.stationCount()));
     return table;
 }
 
-SurveyTable readSurvey(const std::string& path, const SurveyReadOptions& options) {
+bool looksLikeSurvey(std::string_view head) {
+    std::size_t pos = head.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
+    for (int line = 0; line < 400 && pos < head.size(); ++line) {
+        std::size_t end = head.find('\n', pos);
+        if (end == std::string_view::npos) end = head.size();
+        const std::string_view text = trim(head.substr(pos, end - pos));
+        pos = end + 1;
+        if (text.empty() || text.front() == '#') continue;
+        if (text.front() == '~') return false;  // LAS
+        const char d = detectDelimiter(text);
+        const std::vector<Field> fields = split(text, d);
+        bool allNumbers = !fields.empty();
+        for (const Field& f : fields) allNumbers = allNumbers && isNumber(f.text);
+        if (allNumbers) return false;  // data before any survey header: not a survey
+        const auto found = matchHeader(fields);
+        if (found[kMd] < 0 || found[kInc] < 0 || found[kAzi] < 0) continue;
+        // "DEPTH R1 .. R6 P1AZ DEVI HAZI" names depth, deviation and azimuth too: a caliper log.
+        for (const Field& f : fields) {
+            const CurveRole role = guessRole(trim(f.text)).role;
+            if (role == CurveRole::Radius || role == CurveRole::Finger || role == CurveRole::Diameter ||
+                role == CurveRole::PadAzimuth)
+                return false;
+        }
+        return true;
+    }
+    return false;
+}
+
+SurveyTable readSurvey(const std::string& path, const SurveyReadOptions& options, Diagnostics* diagnostics) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw ParseError(path, 0, 0, "cannot open the survey file");
     std::ostringstream buffer;
     buffer << in.rdbuf();
-    return parseSurvey(buffer.str(), path, options);
+    return parseSurvey(buffer.str(), path, options, diagnostics);
 }
 
 }  // namespace caliper3d::io

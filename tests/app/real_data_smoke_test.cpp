@@ -1,5 +1,9 @@
+#include <sys/wait.h>
+
+#include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -34,4 +38,55 @@ TEST(RealDataSmokeTest, EveryRealLogReadsOrIsRefusedByName) {
         }
     }
     EXPECT_GE(files, 3);
+}
+
+namespace {
+struct InfoRun {
+    int status = -1;
+    std::string output;  // stdout and stderr together
+};
+
+InfoRun info(const std::string& path) {
+    InfoRun r;
+    FILE* pipe = popen((std::string(CALIPER3D_BINARY) + " info '" + path + "' 2>&1").c_str(), "r");
+    if (!pipe) return r;
+    char buffer[4096];
+    while (std::fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
+    const int raw = pclose(pipe);
+    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    return r;
+}
+}  // namespace
+
+// `caliper3d info` on every file of the reference data: exit 0 with a
+// description (logs of any kind, surveys), or exit 1 with one line saying
+// why, for what is neither a log nor a survey. Never a crash.
+TEST(RealDataSmokeTest, InfoDescribesEveryReferenceFile) {
+    const auto root = test::sharedData();
+    CALIPER3D_REQUIRE_DATA(root / "las_edge_cases");
+    int described = 0, refused = 0;
+    for (const char* folder : {"las_edge_cases", "real", "surveys"}) {
+        for (const auto& entry : std::filesystem::directory_iterator(root / folder)) {
+            const std::string path = entry.path().string();
+            SCOPED_TRACE(path);
+            const InfoRun r = info(path);
+            const std::string name = entry.path().filename().string();
+            if (name == "missing_a_section.las" || name == "missing_well_curves_ascii_section.las" ||
+                entry.path().extension() == ".json") {
+                EXPECT_EQ(r.status, 1) << r.output;
+                EXPECT_EQ(r.output.rfind("caliper3d info: " + path + ":", 0), 0u) << r.output;
+                EXPECT_NE(r.output.find(": expected "), std::string::npos) << r.output;
+                ++refused;
+                continue;
+            }
+            EXPECT_EQ(r.status, 0) << r.output;
+            EXPECT_EQ(r.output.rfind("file:      " + path + "\nformat:    ", 0), 0u) << r.output;
+            EXPECT_NE(r.output.find("\nwarnings:  "), std::string::npos) << r.output;
+            if (std::string(folder) == "surveys")
+                EXPECT_NE(r.output.find("format:    deviation survey"), std::string::npos) << r.output;
+            ++described;
+        }
+    }
+    EXPECT_EQ(described, 31);
+    EXPECT_EQ(refused, 4);
 }

@@ -78,3 +78,9 @@ TEST(CurveRolesTest, OverridesNameTheCurvesAndUnknownNamesAreRefused) {
     EXPECT_EQ(assignRoles({"MD", "R1", "R2", "R3"}, {}).depth, 0);
     EXPECT_EQ(assignRoles({"TIME", "MD", "R1", "R2", "R3"}, {}).depth, 1);
 }
+
+TEST(CurveRolesTest, AnArrayOverrideNamesEveryElementInIndexOrder) {
+    const CurveRoles r = assignRoles({"DEPT", "CAL[2]", "CAL[1]", "CAL[3]", "GR", "CAL[5]"}, {{"CAL[]"}, {}});
+    EXPECT_EQ(r.radii, (std::vector<int>{2, 1, 3}));  // CAL[5] is not after CAL[3]: the array stops at the gap
+    EXPECT_THROW(assignRoles({"DEPT", "CAL[1]"}, {{"MFC[]"}, {}}), std::invalid_argument);
+}

@@ -95,3 +95,45 @@ TEST(LasReaderTest, DuplicatedMnemonicsAreRenamedAndTextColumnsSkipped) {
     EXPECT_TRUE(std::isnan(log.curves[3].values[0]));
     EXPECT_EQ(d.warningCount, 2u);
 }
+
+// Found by fuzz_las_header: an array index too large for an int was cast
+// from a double (undefined behaviour). Such a name is kept whole, not taken
+// as an array element.
+TEST(LasReaderTest, ArrayIndexOutsideIntRangeIsAPlainName) {
+    const std::string text =
+        "~Version\n VERS. 3.0 : v\n WRAP. NO : w\n DLM. COMMA : d\n~Log_Definition\n DEPT.M : depth {F}\n"
+        " NMR[4000000000000000000000].MS : echo {AF}\n NMR[2].MS : echo {AF}\n NMR[1.5].MS : echo {AF}\n"
+        " NMR[0].MS : echo {AF}\n~Log_Data | Log_Definition\n1.0,2.0,3.0,4.0,5.0\n";
+    const LasLog log = readLas(text, "a.las", {}, nullptr);
+    ASSERT_EQ(log.curves.size(), 5u);
+    EXPECT_EQ(log.curves[1].arrayIndex, 0);
+    EXPECT_EQ(log.curves[1].arrayName, "");
+    EXPECT_EQ(log.curves[2].arrayName, "NMR");
+    EXPECT_EQ(log.curves[2].arrayIndex, 2);
+    EXPECT_EQ(log.curves[3].arrayIndex, 0);
+    EXPECT_EQ(log.curves[4].arrayIndex, 0);
+    EXPECT_DOUBLE_EQ(log.curves[1].values[0], 2.0);
+}
+
+TEST(LasReaderTest, AFileThatDeclaresItsNullOnlyKeepsCommonNullNumbers) {
+    const std::string text = std::string(kHeader) + "~P\n NULLS.  DECLARED : only NULL marks a missing value\n" +
+                             "~A\n100.0 9999 -999.25\n100.5 -9999 8.5\n";
+    const LasLog log = readLas(text, "d.las", {}, nullptr);  // the reader's policy: common
+    EXPECT_TRUE(log.header.onlyDeclaredNull);
+    EXPECT_DOUBLE_EQ(log.curves[1].values[0], 9999.0);
+    EXPECT_DOUBLE_EQ(log.curves[1].values[1], -9999.0);
+    EXPECT_TRUE(std::isnan(log.curves[2].values[0]));  // the declared NULL
+    EXPECT_EQ(log.curves[1].nulls, 0u);
+}
+
+TEST(LasReaderTest, AQuotedStringHoldingTheDelimiterIsOneValue) {
+    const std::string text =
+        "~Version\n VERS. 3.0 : v\n WRAP. NO : w\n DLM. COMMA : d\n~Log_Definition\n DEPT.M : depth {F}\n"
+        " LITH. : lithology {S}\n GR.GAPI : gamma {F}\n~Log_Data | Log_Definition\n"
+        "1.0, \"SAND, SHALY\" ,45.5\n2.0,SAND,46.5\n";
+    const LasLog log = readLas(text, "q.las", {}, nullptr);
+    ASSERT_EQ(log.rowCount(), 2u);
+    EXPECT_DOUBLE_EQ(log.curves[2].values[0], 45.5);
+    EXPECT_DOUBLE_EQ(log.curves[2].values[1], 46.5);
+    EXPECT_TRUE(std::isnan(log.curves[1].values[0]));
+}

@@ -7,6 +7,7 @@
 
 #include "io/las_reader.h"
 #include "io/log_reader.h"
+#include "test_support.h"
 
 using namespace caliper3d::io;
 
@@ -27,6 +28,16 @@ SectionTable sample() {
     t.extraCurves.push_back({"GR", "GAPI", "gamma ray", {}});
     for (int r = 0; r < 50; ++r) t.extraCurves[0].values.push_back(r % 5 == 0 ? kNaN : 40.0 + std::sqrt(r));
     return t;
+}
+
+// The value of the header line that starts with `start` (" NULL.").
+std::string itemValue(const std::string& text, const std::string& start) {
+    const std::size_t at = text.find("\n" + start);
+    if (at == std::string::npos) return "(absent)";
+    std::istringstream line(text.substr(at + 1 + start.size(), text.find('\n', at + 1) - at - 1 - start.size()));
+    std::string value;
+    line >> value;
+    return value;
 }
 
 void expectSame(const std::vector<double>& a, const std::vector<double>& b, const char* what) {
@@ -103,4 +114,90 @@ TEST(LasWriterTest, ColumnsWithStrideDecimalsParametersAndOtherReadBack) {
     EXPECT_EQ(log.header.parameter("BS")->value, "215.9");
     EXPECT_NE(log.header.other.find("free text about the curves"), std::string::npos);
     EXPECT_EQ(log.header.wellItem("WELL")->value, "COLUMNS");
+}
+
+TEST(LasWriterTest, TrueValuesEqualToNullMarkersReadBackAsValues) {
+    SectionTable t = sample();
+    t.radius_mm[3] = -999.25;               // the preferred NULL: another is chosen
+    t.extraCurves[0].values[1] = 9999.0;    // common nulls, kept because the file declares its NULL only
+    t.extraCurves[0].values[2] = -9999.0;
+    t.extraCurves[0].values[3] = 999.25;
+    std::ostringstream out;
+    writeLas(out, t);
+    EXPECT_EQ(itemValue(out.str(), " NULL."), "-9999.25") << "NULL not moved off -999.25";
+    EXPECT_EQ(itemValue(out.str(), " NULLS."), "DECLARED");
+    const LoadedLog read = loadCaliperText(out.str(), "nulls.las", ReadOptions{});  // default: common nulls
+    expectSame(t.radius_mm, read.table.radius_mm, "radii");
+    expectSame(t.extraCurves[0].values, read.table.extraCurves[0].values, "GR");
+    EXPECT_EQ(read.table.radius_mm[3], -999.25);
+    EXPECT_EQ(read.table.extraCurves[0].values[1], 9999.0);
+    EXPECT_TRUE(std::isnan(read.table.extraCurves[0].values[0]));  // a true null stays null
+}
+
+TEST(LasWriterTest, StepIsNominalWhenRegularAndZeroWhenNot) {
+    SectionTable t = sample();  // 0.0025 m steps
+    auto stepOf = [](const SectionTable& table) {
+        std::ostringstream out;
+        writeLas(out, table);
+        return itemValue(out.str(), " STEP.M");
+    };
+    EXPECT_EQ(stepOf(t), "0.0025");
+    t.depth_m[10] += 0.001;
+    EXPECT_EQ(stepOf(t), "0");
+}
+
+TEST(LasWriterTest, ADepthThatIsNotFiniteIsRefused) {
+    SectionTable t = sample();
+    t.depth_m[5] = kNaN;
+    std::ostringstream out;
+    EXPECT_THROW(writeLas(out, t), std::invalid_argument);
+}
+
+TEST(LasWriterTest, ALargeTableReadBackOnTwoThreadsInSmallBlocksIsExact) {
+    SectionTable t;
+    t.armCount = 8;
+    for (int r = 0; r < 20000; ++r) {
+        t.depth_m.push_back(250.0 + 0.0025 * r);
+        for (int k = 0; k < 8; ++k) t.radius_mm.push_back(100.0 + std::sin(0.001 * r + k) * 7.0 + 1e-9 * r);
+        t.rb_deg.push_back(std::fmod(0.37 * r, 360.0));
+    }
+    const auto path = caliper3d::test::scratch("round_trip_large.las");
+    writeLasFile(path.string(), t);
+    StreamOptions stream;
+    stream.blockBytes = 64u << 10;
+    stream.chunkRows = 100;
+    const LoadedLog read = loadCaliperLog(path.string(), ReadOptions{}, stream);
+    expectSame(t.depth_m, read.table.depth_m, "depth");
+    expectSame(t.radius_mm, read.table.radius_mm, "radii");
+    expectSame(t.rb_deg, read.table.rb_deg, "rb");
+    EXPECT_TRUE(read.table.p1az_deg.empty());
+}
+
+// Each real log, read, written and read again, is the same table.
+TEST(LasWriterTest, RealLogsRoundTripExactly) {
+    const auto dir = caliper3d::test::sharedData() / "real";
+    CALIPER3D_REQUIRE_DATA(dir);
+    for (const char* name : {"1AA072209208W400_WL_0477502_STAR_FIELD.las", "1AA063409108W400_FMI_SONIC_MAIN.las",
+                             "multifinger40_data.txt"}) {
+        SCOPED_TRACE(name);
+        const LoadedLog first = loadCaliperLog((dir / name).string(), ReadOptions{});
+        std::ostringstream out;
+        writeLas(out, first.table);
+        const LoadedLog second = loadCaliperText(out.str(), "again.las", ReadOptions{});
+        ASSERT_EQ(second.table.armCount, first.table.armCount);
+        expectSame(first.table.depth_m, second.table.depth_m, "depth");
+        expectSame(first.table.radius_mm, second.table.radius_mm, "radii");
+        expectSame(first.table.p1az_deg, second.table.p1az_deg, "p1az");
+        expectSame(first.table.devi_deg, second.table.devi_deg, "devi");
+        expectSame(first.table.hazi_deg, second.table.hazi_deg, "hazi");
+        expectSame(first.table.rb_deg, second.table.rb_deg, "rb");
+        expectSame(first.table.bitSize_mm, second.table.bitSize_mm, "bit size");
+        ASSERT_EQ(second.table.extraCurves.size(), first.table.extraCurves.size());
+        for (std::size_t e = 0; e < first.table.extraCurves.size(); ++e) {
+            EXPECT_EQ(second.table.extraCurves[e].mnemonic, first.table.extraCurves[e].mnemonic);
+            EXPECT_EQ(second.table.extraCurves[e].unit, first.table.extraCurves[e].unit);
+            expectSame(first.table.extraCurves[e].values, second.table.extraCurves[e].values,
+                       first.table.extraCurves[e].mnemonic.c_str());
+        }
+    }
 }

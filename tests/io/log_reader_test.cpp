@@ -1,10 +1,14 @@
 #include "io/log_reader.h"
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
 
 #include <gtest/gtest.h>
 
 #include "io/parse_error.h"
+#include "test_support.h"
 
 using namespace caliper3d::io;
 
@@ -90,7 +94,7 @@ TEST(LogReaderTest, InfoNamesFormatDepthRangeRolesAndNulls) {
     const LoadedLog log = loadCaliperText(kFeetInchesRadians, "u.las", ReadOptions{});
     const std::string out = formatLogInfo(log.info);
     for (const char* expected : {"LAS 2", "TEST-1", "rows:      2", "R1", "radius", "P1AZ", "pad-1 azimuth",
-                                 "1 nulls", "GR", "other", "bit size:  215.9 mm", "(file unit FT)"})
+                                 ", 1 null\n", "GR", "other", "bit size:  215.9 mm", "(file unit FT)"})
         EXPECT_NE(out.find(expected), std::string::npos) << expected << "\n" << out;
 }
 
@@ -107,4 +111,199 @@ TEST(LogReaderTest, ALogWithoutCaliperCurvesIsRefusedByReadCaliperLog) {
     } catch (const ParseError& e) {
         EXPECT_NE(std::string(e.what()).find("expected caliper curves"), std::string::npos) << e.what();
     }
+}
+
+namespace {
+// The message of the ParseError that `read` throws, or "(no error)".
+template <typename Read>
+std::string refusal(Read read) {
+    try {
+        read();
+    } catch (const ParseError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+std::string writeScratch(const std::string& name, const std::string& text) {
+    const auto path = caliper3d::test::scratch(name);
+    std::ofstream(path, std::ios::binary) << text;
+    return path.string();
+}
+}  // namespace
+
+TEST(LogReaderTest, ASurveyJsonOrBinaryFileIsRefusedAsACaliperLogWithWhatItIs) {
+    // Eleven numbers per line would otherwise read as an 11-arm radii-only log.
+    const std::string petrel =
+        "# WELL TRACE FROM PETREL\n MD X Y Z TVD DX DY AZIM_TN INCL DLS AZIM_GN\n"
+        "0 1 2 3 0 0 0 0 0 0 0\n10 1 2 3 10 0 0 5 1 0.1 4\n";
+    EXPECT_NE(refusal([&] { loadCaliperText(petrel, "trace.txt", ReadOptions{}); }).find("found a deviation survey"),
+              std::string::npos);
+    EXPECT_NE(refusal([&] { loadCaliperText("MD,INC,AZI\n0,0,0\n10,1,2\n", "s.csv", ReadOptions{}); })
+                  .find("s.csv: expected a caliper log, found a deviation survey"),
+              std::string::npos);
+    EXPECT_NE(refusal([&] { loadCaliperText("\n  {\"md\": [0, 10]}\n", "w.json", ReadOptions{}); })
+                  .find("w.json:2: expected a caliper log (LAS or column text), found JSON"),
+              std::string::npos);
+    const std::string binary = std::string("1.0 2 2 2 2 2 2 0 0 0\n2.0 2 2\0 2", 30);
+    EXPECT_NE(refusal([&] { loadCaliperText(binary, "b.bin", ReadOptions{}); })
+                  .find("b.bin:2:8: expected text, found a NUL byte"),
+              std::string::npos);
+    // A caliper text whose names line also names depth, deviation and azimuth is a log.
+    const LoadedLog log =
+        loadCaliperText("DEPTH R1 R2 R3 R4 R5 R6 P1AZ DEVI HAZI\n1.0 4 4 4 4 4 4 0 0 0\n", "c.txt", ReadOptions{});
+    EXPECT_EQ(log.table.rowCount(), 1u);
+}
+
+TEST(LogReaderTest, InfoDescribesASurveyWithItsStationsAndColumns) {
+    const std::string path = writeScratch(
+        "info_survey.csv", "Design Report\n\nMD,Inc,Azim.,TVD,N/S,E/W,DLS\n(ft),(Deg),(Deg),(ft),(ft),(ft),(dega/100ft)\n"
+                           "0,0,0,0,0,0,0\n100,1,10,99.99,0.86,0.15,1\n300,3,12,299.8,,,1\n\nEnd of report\n");
+    const LogInfo info = describeLog(path, ReadOptions{});
+    EXPECT_TRUE(info.survey);
+    EXPECT_EQ(info.format, "deviation survey (comma-separated, column names on line 3)");
+    EXPECT_EQ(info.rows, 3u);
+    EXPECT_DOUBLE_EQ(info.bottom_m, 300 * 0.3048);
+    EXPECT_NEAR(info.step_m, 200 * 0.3048, 1e-9);  // median of 100 and 200 ft steps: the upper middle
+    EXPECT_EQ(info.depthUnit, "ft");
+    ASSERT_EQ(info.curves.size(), 7u);
+    EXPECT_EQ(info.curves[0].role, "measured depth");
+    EXPECT_EQ(info.curves[1].role, "inclination");
+    EXPECT_EQ(info.curves[2].role, "azimuth");
+    EXPECT_EQ(info.curves[3].role, "TVD (read for checking)");
+    EXPECT_EQ(info.curves[4].role, "north (read for checking)");
+    EXPECT_EQ(info.curves[4].nulls, 1u);
+    EXPECT_EQ(info.curves[6].role, "not read");
+    EXPECT_TRUE(warned(info, "1 lines of text after the last station skipped"));
+    const std::string text = formatLogInfo(info);
+    EXPECT_NE(text.find("rows:      3 stations\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("MD:        0.0000 to 91.4400 m"), std::string::npos) << text;
+    EXPECT_EQ(text.find("bit size"), std::string::npos) << text;
+}
+
+// What `caliper3d info` does with every file of the reference data: describe
+// it, or refuse it with a precise message naming why.
+TEST(LogReaderTest, InfoDescribesEveryReferenceFileOrSaysWhyNot) {
+    const auto root = caliper3d::test::sharedData();
+    CALIPER3D_REQUIRE_DATA(root / "las_edge_cases");
+    const std::map<std::string, std::string> refused = {
+        {"missing_a_section.las", ":20: expected data rows after ~A, found none"},
+        {"missing_well_curves_ascii_section.las", ": expected a ~C (curve information) section, found none"},
+        {"clearance_iscwsa_well_data.json", ":1: expected a caliper log (LAS or column text), found JSON"},
+        {"error_mwdrev5_1_iscwsa_data.json", ":1: expected a caliper log (LAS or column text), found JSON"},
+    };
+    const std::map<std::string, std::string> formats = {
+        {"1AA072209208W400_WL_0477502_STAR_FIELD.las", "LAS 2.0"},
+        {"1AA063409108W400_FMI_SONIC_MAIN.las", "LAS 2.0"},
+        {"multifinger40_data.txt", "column text (40 radii per line, no depth)"},
+        {"sample_3.0.las", "LAS 3.0"},
+        {"sample_wrapped.las", "LAS 1.2, wrapped"},
+        {"100042209506W400.txt", "deviation survey (columns separated by spaces, column names on line 16)"},
+        {"iscwsa_clearance_wells_extracted.csv", "deviation survey (comma-separated, column names on line 2)"},
+        {"well9.csv", "deviation survey (comma-separated, column names on line 1)"},
+    };
+    int files = 0, surveys = 0;
+    for (const char* folder : {"las_edge_cases", "real", "surveys"}) {
+        for (const auto& entry : std::filesystem::directory_iterator(root / folder)) {
+            const std::string name = entry.path().filename().string();
+            SCOPED_TRACE(name);
+            ++files;
+            const auto refusedIt = refused.find(name);
+            if (refusedIt != refused.end()) {
+                EXPECT_NE(refusal([&] { describeLog(entry.path().string(), ReadOptions{}); })
+                              .find(entry.path().string() + refusedIt->second),
+                          std::string::npos);
+                continue;
+            }
+            const LogInfo info = describeLog(entry.path().string(), ReadOptions{});
+            EXPECT_GT(info.rows, 1u);
+            EXPECT_FALSE(info.curves.empty());
+            EXPECT_EQ(info.survey, std::string(folder) == "surveys");
+            surveys += info.survey;
+            if (formats.count(name)) EXPECT_EQ(info.format, formats.at(name));
+            EXPECT_FALSE(formatLogInfo(info).empty());
+        }
+    }
+    EXPECT_EQ(files, 22 + 3 + 10);
+    EXPECT_EQ(surveys, 8);
+}
+
+namespace {
+// LAS 3.0, comma-delimited: an 8-finger caliper stored as one array channel,
+// a string column (blanks inside, and a quoted comma) and a gamma ray.
+std::string las3Array(const std::string& array) {
+    std::string text =
+        "~Version\n VERS. 3.0 : CWLS LAS 3.0\n WRAP. NO :\n DLM. COMMA : delimiter\n"
+        "~Well\n WELL. ARRAY-1 : well\n NULL. -999.25 :\n~Log_Parameter\n BS.MM 215.9 : bit size {F}\n"
+        "~Log_Definition\n DEPT.M : depth {F}\n";
+    for (int k = 1; k <= 8; ++k) text += " " + array + "[" + std::to_string(k) + "].IN : finger radius {AF}\n";
+    text += " LITH. : lithology {S}\n GR.GAPI : gamma ray {F}\n~Log_Data | Log_Definition\n";
+    for (int r = 0; r < 3; ++r) {
+        text += std::to_string(100.0 + 0.1 * r);
+        for (int k = 1; k <= 8; ++k) text += "," + std::to_string(4.0 + 0.125 * k + r);
+        text += r == 1 ? ", \"SAND, SHALY\" ,-999.25\n" : ",SAND WITH SHELLS,55.5\n";
+    }
+    return text;
+}
+}  // namespace
+
+TEST(LogReaderTest, Las3FingerArrayIsTheArmsAndStringColumnIsSkippedWithANote) {
+    const LoadedLog log = loadCaliperText(las3Array("FING"), "array.las", ReadOptions{});
+    ASSERT_EQ(log.table.armCount, 8);
+    ASSERT_EQ(log.table.rowCount(), 3u);
+    EXPECT_DOUBLE_EQ(log.table.radii(1)[0], (4.125 + 1) * 25.4);
+    EXPECT_DOUBLE_EQ(log.table.radii(2)[7], (5.0 + 2) * 25.4);
+    EXPECT_DOUBLE_EQ(log.table.bitSize_mm[0], 215.9);
+    ASSERT_EQ(log.table.extraCurves.size(), 1u);  // GR; LITH is text
+    EXPECT_DOUBLE_EQ(log.table.extraCurves[0].values[0], 55.5);
+    EXPECT_TRUE(std::isnan(log.table.extraCurves[0].values[1]));
+    EXPECT_TRUE(warned(log.info, "curve 'LITH' holds text; skipped"));
+    EXPECT_EQ(log.info.curves[1].role, "finger radius");
+    EXPECT_EQ(log.info.curves[9].role, "text (skipped)");
+}
+
+TEST(LogReaderTest, AnArrayWithAnUnknownNameIsNamedWithBrackets) {
+    const std::string text = las3Array("MFC");
+    EXPECT_EQ(loadCaliperText(text, "mfc.las", ReadOptions{}).table.armCount, 0);
+    ReadOptions options;
+    options.roles.radii = {"MFC[]"};
+    const LoadedLog log = loadCaliperText(text, "mfc.las", options);
+    ASSERT_EQ(log.table.armCount, 8);
+    EXPECT_DOUBLE_EQ(log.table.radii(0)[3], 4.5 * 25.4);
+}
+
+TEST(LogReaderTest, AnUnclosedQuoteInAStringColumnIsAnErrorAtItsColumn) {
+    std::string text = las3Array("FING");
+    text.replace(text.find("\"SAND, SHALY\""), 13, "\"SAND, SHALY");
+    const std::string message = refusal([&] { loadCaliperText(text, "q.las", ReadOptions{}); });
+    EXPECT_NE(message.find("q.las:24:85: "), std::string::npos) << message;  // the second data row, at the quote
+    EXPECT_NE(message.find("expected a closing '\"' for the text of curve LITH, found the end of the line"),
+              std::string::npos)
+        << message;
+}
+
+namespace {
+std::string utf16(const std::string& ascii, bool bigEndian) {
+    std::string out = bigEndian ? std::string("\xFE\xFF", 2) : std::string("\xFF\xFE", 2);
+    for (char c : ascii) {
+        out.push_back(bigEndian ? '\0' : c);
+        out.push_back(bigEndian ? c : '\0');
+    }
+    return out;
+}
+}  // namespace
+
+TEST(LogReaderTest, Utf16WithAByteOrderMarkIsDecodedEitherWayAndABrokenOneRefusedAtItsLine) {
+    for (bool bigEndian : {false, true}) {
+        SCOPED_TRACE(bigEndian ? "big-endian" : "little-endian");
+        const LoadedLog log = loadCaliperText(utf16(kFeetInchesRadians, bigEndian), "u16.las", ReadOptions{});
+        EXPECT_EQ(log.table.rowCount(), 2u);
+        EXPECT_EQ(log.table.armCount, 4);
+        EXPECT_TRUE(warned(log.info, "text is UTF-16; decoded"));
+    }
+    std::string broken = utf16("~Version\n VERS. 2.0 :\n", false);
+    broken += std::string("\x00\xD8", 2);  // a high surrogate with no low one, on line 3
+    EXPECT_NE(refusal([&] { loadCaliperText(broken, "bad16.las", ReadOptions{}); })
+                  .find("bad16.las:3: expected UTF-16 text, found an unpaired surrogate"),
+              std::string::npos);
 }

@@ -122,3 +122,18 @@ TEST(LogStreamTest, TruncatedLastLineIsCountedAndSkipped) {
     EXPECT_EQ(log.info.diagnostics.warningCount, 1u);
     EXPECT_EQ(log.info.diagnostics.warnings[0].line, 3u);
 }
+
+TEST(LogStreamTest, AnUpwardLogWhoseFirstTwoRowsGoDownIsStillSortedWhole) {
+    // The first pair increases (a glitch); the log as a whole was recorded upwards.
+    std::string text = "100.0 1 1 1 1 1 1 0 0 0\n100.5 1 1 1 1 1 1 0 0 0\n";
+    for (int r = 1; r <= 40; ++r) text += std::to_string(100.0 - 0.25 * r) + " 1 1 1 1 1 1 0 0 0\n";
+    const LoadedLog log = loadCaliperText(text, "up.txt", ReadOptions{});
+    ASSERT_EQ(log.table.rowCount(), 42u);
+    EXPECT_DOUBLE_EQ(log.table.depth_m.front(), 90.0);
+    EXPECT_DOUBLE_EQ(log.table.depth_m.back(), 100.5);
+    for (std::size_t i = 1; i < log.table.rowCount(); ++i) ASSERT_LT(log.table.depth_m[i - 1], log.table.depth_m[i]);
+    bool warned = false;
+    for (const Warning& w : log.info.diagnostics.warnings)
+        warned = warned || w.message.find("log recorded upwards with 1 rows out of order") != std::string::npos;
+    EXPECT_TRUE(warned);
+}

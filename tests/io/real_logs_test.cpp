@@ -1,6 +1,9 @@
 // The real oriented caliper logs in ../shared/data/real are detected with the
 // right roles, units and arm counts. Skips when the data are absent.
 #include <cmath>
+#include <fstream>
+#include <iterator>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -85,4 +88,26 @@ TEST(RealLogsTest, FortyFingerRadiiOnlyTextReadsAsFortyArms) {
     EXPECT_DOUBLE_EQ(log.table.radii(0)[0], 115.43);
     EXPECT_DOUBLE_EQ(log.table.depth_m[1], options.rowStep_m);
     EXPECT_GE(log.info.diagnostics.warningCount, 1u);
+}
+
+// docs/formats.md shows `caliper3d info` on the three real logs, run from
+// ../shared/data; it must be what the reader prints today.
+TEST(RealLogsTest, FormatsReferenceShowsTheInfoPrintedToday) {
+    const auto data = caliper3d::test::sharedData();
+    CALIPER3D_REQUIRE_DATA(data / "real");
+    std::string expected;
+    for (const char* name : {"1AA072209208W400_WL_0477502_STAR_FIELD.las", "1AA063409108W400_FMI_SONIC_MAIN.las",
+                             "multifinger40_data.txt"}) {
+        LogInfo info = describeLog((data / "real" / name).string(), ReadOptions{});
+        // As printed from ../shared/data: paths relative to it.
+        const std::string shown = std::string("real/") + name;
+        info.file = shown;
+        for (Warning& w : info.diagnostics.warnings) w.file = shown;
+        expected += (expected.empty() ? "" : "\n") + formatLogInfo(info);
+    }
+    std::ifstream in(std::string(CALIPER3D_SOURCE_DIR) + "/docs/formats.md");
+    ASSERT_TRUE(in) << "docs/formats.md not found";
+    const std::string doc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(doc.find("```\n" + expected + "```\n"), std::string::npos)
+        << "docs/formats.md is out of date; today's output:\n" << expected;
 }

@@ -121,3 +121,74 @@ TEST(SurveyReaderTest, ReadsEveryPublishedSurveyLayout) {
         EXPECT_EQ(!s.north_m.empty(), e.hasNorth);
     }
 }
+
+TEST(SurveyReaderTest, AWellColumnGivesOneWellTheFirstOrTheOneAskedFor) {
+    const std::string text =
+        "well,MD_m,INC_deg,AZI_deg\nA,0,0,0\nA,30,1,10\nB well,0,0,0\nB well,30,2,20\nB well,60,4,22\nA,60,2,12\n";
+    Diagnostics diagnostics;
+    const SurveyTable a = parseSurvey(text, "wells.csv", {}, &diagnostics);
+    EXPECT_EQ(a.wellName, "A");
+    EXPECT_EQ(a.wellCount, 2u);
+    EXPECT_EQ(a.md_m, (std::vector<double>{0, 30, 60}));
+    ASSERT_EQ(diagnostics.warningCount, 1u);
+    EXPECT_NE(diagnostics.warnings[0].message.find("holds 2 wells in column 'well'; read 'A' (3 stations), 3 stations"),
+              std::string::npos)
+        << diagnostics.warnings[0].message;
+    SurveyReadOptions options;
+    options.well = "B well";
+    const SurveyTable b = parseSurvey(text, "wells.csv", options);
+    EXPECT_EQ(b.inc_deg, (std::vector<double>{0, 2, 4}));
+    options.well = "C";
+    try {
+        parseSurvey(text, "wells.csv", options);
+        FAIL() << "an absent well must be refused";
+    } catch (const ParseError& e) {
+        EXPECT_EQ(e.line(), 1u);
+        EXPECT_EQ(e.column(), 1u);
+        EXPECT_NE(std::string(e.what()).find("expected stations of well 'C' in column 'well', found only 'A', 'B well'"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
+TEST(SurveyReaderTest, ColumnsAreListedWithTheirRolesAndAGridAzimuthIsWarnedAbout) {
+    Diagnostics diagnostics;
+    const SurveyTable s = parseSurvey("Measured Depth ( ft ),Inclination,Azimuth Grid ( deg ),DLS\n0,0,0,0\n10,1,2,3\n",
+                                      "grid.csv", {}, &diagnostics);
+    ASSERT_EQ(s.columns.size(), 4u);
+    EXPECT_EQ(s.columns[0].name, "Measured Depth ( ft )");
+    EXPECT_EQ(s.columns[0].role, "measured depth");
+    EXPECT_EQ(s.columns[0].unit, "ft");
+    EXPECT_EQ(s.columns[2].role, "azimuth");
+    EXPECT_EQ(s.columns[3].role, "");
+    ASSERT_EQ(diagnostics.warningCount, 1u);
+    EXPECT_NE(diagnostics.warnings[0].message.find("grid-north column 'Azimuth Grid ( deg )'"), std::string::npos);
+}
+
+TEST(SurveyReaderTest, ErrorsSayWhatWasExpectedAndWhatWasFound) {
+    auto message = [](const std::string& text) {
+        try {
+            parseSurvey(text, "e.csv");
+        } catch (const ParseError& e) {
+            return std::string(e.what());
+        }
+        return std::string("(no error)");
+    };
+    EXPECT_EQ(message("MD,INC,AZI\n10,0,0\n5,0,0\n"),
+              "e.csv:3:1: expected measured depths that do not decrease (at least the 10 of the station before), "
+              "found 5");
+    EXPECT_EQ(message("MD,INC,AZI\n0,0,0\n5,181,0\n"), "e.csv:3:3: expected an inclination between 0 and 180 degrees, found 181");
+    EXPECT_EQ(message("MD,INC,AZI\n0,0,0\nx,1,1\n20,1,1\n"), "e.csv:3:1: expected a number (measured depth), found 'x'");
+    EXPECT_EQ(message("depth,gamma\n0,1\n"),
+              "e.csv: expected a survey header, a line naming measured depth, inclination and azimuth columns "
+              "(e.g. MD,INC,AZI), found none in 2 lines");
+}
+
+TEST(SurveyReaderTest, ASurveyIsToldFromACaliperLog) {
+    EXPECT_TRUE(looksLikeSurvey("# trace\n MD  X  TVD  INCL  AZIM_TN\n0 5 0 0 0\n"));
+    EXPECT_TRUE(looksLikeSurvey("Report\nClient: X\n\nMD,Inc,Azim.,TVD\n(m),(Deg),(Deg),(m)\n0,0,0,0\n"));
+    EXPECT_FALSE(looksLikeSurvey("DEPTH R1 R2 R3 R4 R5 R6 P1AZ DEVI HAZI\n1 2 2 2 2 2 2 0 0 0\n"));  // caliper names
+    EXPECT_FALSE(looksLikeSurvey("1 2 3\nMD INC AZI\n"));                                            // numbers first
+    EXPECT_FALSE(looksLikeSurvey("~Version\n VERS. 2.0 :\n~Curve\n MD.M :\n INC.DEG :\n AZI.DEG :\n"));  // LAS
+    EXPECT_FALSE(looksLikeSurvey("depth,gamma\n0,1\n"));
+}
