@@ -32,6 +32,9 @@ struct GeometryOptions {
     // stuck or over-reaching arm) are treated as missing and interpolated.
     double minArmRadius_mm = 0.0;           // readings <= this are missing
     double maxArmRadius_mm = 1.0e9;         // the tool's reach; no limit by default
+    // Workers that compute the path and the section frames (the result does
+    // not depend on it).
+    int threads = 1;
 };
 
 // One segment's meshes, finest level first.
@@ -81,6 +84,8 @@ public:
     Ned centre(std::size_t row) const;
 
 private:
+    void computeSteps(std::size_t first, std::size_t last, double inc, double azi);
+    void computeFrames(std::size_t first, std::size_t last);
     void appendRing(Mesh& mesh, std::size_t row, bool spline) const;
     Mesh buildLevel(const std::vector<std::size_t>& rows, bool spline) const;
 
