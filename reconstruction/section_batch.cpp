@@ -16,31 +16,41 @@ namespace {
 constexpr int kL = SectionBatchAnalyzer::kLanes;
 constexpr double kTwoPi = boost::math::constants::two_pi<double>();
 
-// kL sections side by side, one per element. GCC and Clang vector extensions
-// do element-wise IEEE arithmetic, so each element gets exactly the value the
+// Sections side by side, one per element. GCC and Clang vector extensions do
+// element-wise IEEE arithmetic, so each element gets exactly the value the
 // scalar code computes, and they lower the type to whatever SIMD the function
-// is compiled for (two SSE2 registers by default, one AVX2 register in the
-// AVX2 clone), which auto-vectorisation of per-lane loops did not do well.
-// The lanes never cross a call that is not inlined by value, so GCC's note
-// that passing them by value changes the ABI without AVX does not apply.
-#pragma GCC diagnostic ignored "-Wpsabi"
-typedef double Lanes __attribute__((vector_size(kL * sizeof(double))));
-typedef long long LaneMask __attribute__((vector_size(kL * sizeof(long long))));
+// is compiled for; auto-vectorisation of per-lane loops did not do that well.
+typedef double Lanes4 __attribute__((vector_size(4 * sizeof(double))));
+typedef double Lanes8 __attribute__((vector_size(8 * sizeof(double))));
 
-inline Lanes load(const double* p) {
-    Lanes v;
+template <class V>
+constexpr int kWidth = static_cast<int>(sizeof(V) / sizeof(double));
+// The comparison result of V: integers of the same width.
+template <class V>
+using MaskOf = decltype(V{} < V{});
+
+template <class V>
+inline V load(const double* p) {
+    V v;
     std::memcpy(&v, p, sizeof v);
     return v;
 }
-inline Lanes splat(double x) {
-    return Lanes{} + x;
+template <class V>
+inline void store(double* p, V v) {
+    std::memcpy(p, &v, sizeof v);
+}
+template <class V>
+inline V splat(double x) {
+    return V{} + x;
 }
 // std::abs of each element: the sign bit cleared.
-inline Lanes absolute(Lanes x) {
-    return reinterpret_cast<Lanes>(reinterpret_cast<LaneMask>(x) & 0x7fffffffffffffffLL);
+template <class V>
+inline V absolute(V x) {
+    return reinterpret_cast<V>(reinterpret_cast<MaskOf<V>>(x) & 0x7fffffffffffffffLL);
 }
-inline Lanes squareRoot(Lanes x) {
-    for (int l = 0; l < kL; ++l) x[l] = std::sqrt(x[l]);
+template <class V>
+inline V squareRoot(V x) {
+    for (int l = 0; l < kWidth<V>; ++l) x[l] = std::sqrt(x[l]);
     return x;
 }
 
@@ -49,76 +59,72 @@ inline Lanes squareRoot(Lanes x) {
 // mean, with `fitted` false where fitEllipse gives up before its eigenvalues
 // (singular normal equations, not an ellipse).
 struct LaneSums {
-    Lanes twiceArea, cu, cv;
-    Lanes a, b, c, d, e;
-    Lanes k, scale;
-    LaneMask fitted;
+    double twiceArea[kL], cu[kL], cv[kL];
+    double a[kL], b[kL], c[kL], d[kL], e[kL];
+    double k[kL], scale[kL];
+    bool fitted[kL];
 };
-
-// ThreadSanitizer instruments the clones' resolver, which the dynamic loader
-// runs before the sanitizer's runtime is up: no clones in such a build.
-#if defined(__SANITIZE_THREAD__)
-#define CALIPER3D_SIMD_CLONES
-#elif defined(__has_feature)
-#if __has_feature(thread_sanitizer)
-#define CALIPER3D_SIMD_CLONES
-#endif
-#endif
-#ifndef CALIPER3D_SIMD_CLONES
-#define CALIPER3D_SIMD_CLONES __attribute__((target_clones("avx2", "default")))
-#endif
 
 // Per lane, the operations of PeriodicSplineSampler::sample,
 // SectionAnalyzer::analyse and fitEllipse in their order: no sum is reordered
 // and no product fused (the library is built with -ffp-contract=off), so each
-// lane's result is bit-identical to the one-section code whichever clone runs.
-// The clones only change how many lanes one instruction takes; the dynamic
-// loader picks one once per process.
-CALIPER3D_SIMD_CLONES void analyseLanes(int knots, int m, const double* weights,
-                                        const double* cosines, const double* sines,
-                                        const double* pads, Lanes* u, LaneSums& out) {
-    Lanes* v = u + (m + 1);  // u and v: m + 1 rows each, the last repeating the first
+// lane's result is bit-identical to the one-section code whatever the vector
+// width. Lanes [offset, offset + width) of the batch; pads, u and v hold kL
+// values per row (u and v: m + 1 rows, the last repeating the first).
+template <class V>
+__attribute__((always_inline)) inline void laneSums(int knots, int m, const double* weights,
+                                                    const double* cosines, const double* sines,
+                                                    const double* pads, double* u, double* v,
+                                                    int offset, LaneSums& out) {
+    pads += offset;
+    u += offset;
+    v += offset;
     for (int j = 0; j < m; ++j) {
         const double* w = weights + j * knots;
-        Lanes s = splat(0.0);
-        for (int k = 0; k < knots; ++k) s += w[k] * load(pads + k * kL);
-        u[j] = s * cosines[j];
-        v[j] = s * sines[j];
+        V s = splat<V>(0.0);
+        for (int k = 0; k < knots; ++k) s += w[k] * load<V>(pads + k * kL);
+        store(u + j * kL, s * cosines[j]);
+        store(v + j * kL, s * sines[j]);
     }
-    u[m] = u[0];
-    v[m] = v[0];
+    store(u + m * kL, load<V>(u));
+    store(v + m * kL, load<V>(v));
+    auto U = [u](int j) { return load<V>(u + j * kL); };
+    auto W = [v](int j) { return load<V>(v + j * kL); };
 
     // Shoelace area and centroid (SectionAnalyzer::analyse).
-    Lanes twiceArea = splat(0.0), cu = splat(0.0), cv = splat(0.0);
+    V twiceArea = splat<V>(0.0), cu = splat<V>(0.0), cv = splat<V>(0.0);
     for (int j = 0; j < m; ++j) {
-        const Lanes cross = u[j] * v[j + 1] - u[j + 1] * v[j];
+        const V uj = U(j), uk = U(j + 1), vj = W(j), vk = W(j + 1);
+        const V cross = uj * vk - uk * vj;
         twiceArea += cross;
-        cu += (u[j] + u[j + 1]) * cross;
-        cv += (v[j] + v[j + 1]) * cross;
+        cu += (uj + uk) * cross;
+        cv += (vj + vk) * cross;
     }
-    out.twiceArea = twiceArea;
-    out.cu = cu;
-    out.cv = cv;
-    out.fitted = LaneMask{} + (m >= 5 ? -1LL : 0LL);
-    if (m < 5) return;
+    store(out.twiceArea + offset, twiceArea);
+    store(out.cu + offset, cu);
+    store(out.cv + offset, cv);
+    if (m < 5) {
+        for (int l = 0; l < kWidth<V>; ++l) out.fitted[offset + l] = false;
+        return;
+    }
 
     // fitEllipse: mean, scale, normal equations.
-    Lanes mx = splat(0.0), my = splat(0.0), scale = splat(0.0);
+    V mx = splat<V>(0.0), my = splat<V>(0.0), scale = splat<V>(0.0);
     for (int i = 0; i < m; ++i) {
-        mx += u[i];
-        my += v[i];
+        mx += U(i);
+        my += W(i);
     }
     mx /= static_cast<double>(m);
     my /= static_cast<double>(m);
-    for (int i = 0; i < m; ++i) scale += absolute(u[i] - mx) + absolute(v[i] - my);
-    scale = scale > 0.0 ? scale / static_cast<double>(m) : splat(1.0);
-    const Lanes inv = 1.0 / scale;
-    Lanes sxxxx = splat(0.0), sxxxy = sxxxx, sxxyy = sxxxx, sxyyy = sxxxx, syyyy = sxxxx,
-          sxxx = sxxxx, sxxy = sxxxx, sxyy = sxxxx, syyy = sxxxx, sxx = sxxxx, sxy = sxxxx,
-          syy = sxxxx, sx = sxxxx, sy = sxxxx;
+    for (int i = 0; i < m; ++i) scale += absolute(U(i) - mx) + absolute(W(i) - my);
+    scale = scale > 0.0 ? scale / static_cast<double>(m) : splat<V>(1.0);
+    const V inv = 1.0 / scale;
+    V sxxxx = splat<V>(0.0), sxxxy = sxxxx, sxxyy = sxxxx, sxyyy = sxxxx, syyyy = sxxxx,
+      sxxx = sxxxx, sxxy = sxxxx, sxyy = sxxxx, syyy = sxxxx, sxx = sxxxx, sxy = sxxxx, syy = sxxxx,
+      sx = sxxxx, sy = sxxxx;
     for (int i = 0; i < m; ++i) {
-        const Lanes x = (u[i] - mx) * inv, y = (v[i] - my) * inv;
-        const Lanes xx = x * x, xy = x * y, yy = y * y;
+        const V x = (U(i) - mx) * inv, y = (W(i) - my) * inv;
+        const V xx = x * x, xy = x * y, yy = y * y;
         sxxxx += xx * xx;
         sxxxy += xx * xy;
         sxxyy += xx * yy;
@@ -137,59 +143,102 @@ CALIPER3D_SIMD_CLONES void analyseLanes(int knots, int m, const double* weights,
 
     // The 5x5 Cholesky solve of fitEllipse; a lane whose pivot fails goes on
     // with NaNs and is marked not fitted.
-    Lanes mat[5][5] = {{sxxxx, sxxxy, sxxyy, sxxx, sxxy},
-                       {sxxxy, sxxyy, sxyyy, sxxy, sxyy},
-                       {sxxyy, sxyyy, syyyy, sxyy, syyy},
-                       {sxxx, sxxy, sxyy, sxx, sxy},
-                       {sxxy, sxyy, syyy, sxy, syy}};
-    Lanes rhs[5] = {sxx, sxy, syy, sx, sy};
-    LaneMask ok = LaneMask{} - 1;
+    V mat[5][5] = {{sxxxx, sxxxy, sxxyy, sxxx, sxxy},
+                   {sxxxy, sxxyy, sxyyy, sxxy, sxyy},
+                   {sxxyy, sxyyy, syyyy, sxyy, syyy},
+                   {sxxx, sxxy, sxyy, sxx, sxy},
+                   {sxxy, sxyy, syyy, sxy, syy}};
+    V rhs[5] = {sxx, sxy, syy, sx, sy};
+    MaskOf<V> ok = MaskOf<V>{} - 1;
     for (int j = 0; j < 5; ++j) {
-        Lanes d = mat[j][j];
+        V d = mat[j][j];
         for (int k = 0; k < j; ++k) d -= mat[j][k] * mat[j][k];
         ok &= d > 1e-300;
         d = squareRoot(d);
         mat[j][j] = d;
         for (int i = j + 1; i < 5; ++i) {
-            Lanes s = mat[i][j];
+            V s = mat[i][j];
             for (int k = 0; k < j; ++k) s -= mat[i][k] * mat[j][k];
             mat[i][j] = s / d;
         }
     }
     for (int i = 0; i < 5; ++i) {
-        Lanes s = rhs[i];
+        V s = rhs[i];
         for (int k = 0; k < i; ++k) s -= mat[i][k] * rhs[k];
         rhs[i] = s / mat[i][i];
     }
     for (int i = 4; i >= 0; --i) {
-        Lanes s = rhs[i];
+        V s = rhs[i];
         for (int k = i + 1; k < 5; ++k) s -= mat[k][i] * rhs[k];
         rhs[i] = s / mat[i][i];
     }
-    const Lanes A = rhs[0], B = rhs[1], C = rhs[2], D = rhs[3], E = rhs[4];
-    const Lanes det = 4.0 * A * C - B * B;
-    const Lanes x0 = (B * E - 2.0 * C * D) / det;
-    const Lanes y0 = (B * D - 2.0 * A * E) / det;
-    const Lanes k = 1.0 - (A * x0 * x0 + B * x0 * y0 + C * y0 * y0 + D * x0 + E * y0);
-    out.a = A;
-    out.b = B;
-    out.c = C;
-    out.d = D;
-    out.e = E;
-    out.k = k;
-    out.scale = scale;
-    out.fitted = ok & (det > 0.0) & (k > 0.0);
+    const V A = rhs[0], B = rhs[1], C = rhs[2], D = rhs[3], E = rhs[4];
+    const V det = 4.0 * A * C - B * B;
+    const V x0 = (B * E - 2.0 * C * D) / det;
+    const V y0 = (B * D - 2.0 * A * E) / det;
+    const V k = 1.0 - (A * x0 * x0 + B * x0 * y0 + C * y0 * y0 + D * x0 + E * y0);
+    store(out.a + offset, A);
+    store(out.b + offset, B);
+    store(out.c + offset, C);
+    store(out.d + offset, D);
+    store(out.e + offset, E);
+    store(out.k + offset, k);
+    store(out.scale + offset, scale);
+    ok &= (det > 0.0) & (k > 0.0);
+    for (int l = 0; l < kWidth<V>; ++l) out.fitted[offset + l] = ok[l] != 0;
+}
+
+// ThreadSanitizer instruments the clones' resolver, which the dynamic loader
+// runs before the sanitizer's runtime is up: no clones in such a build.
+#if defined(__SANITIZE_THREAD__)
+#define CALIPER3D_SIMD_CLONES
+#elif defined(__has_feature)
+#if __has_feature(thread_sanitizer)
+#define CALIPER3D_SIMD_CLONES
+#endif
+#endif
+#ifndef CALIPER3D_SIMD_CLONES
+#define CALIPER3D_SIMD_CLONES __attribute__((target_clones("avx2", "default")))
+#endif
+
+// The batch as two halves of four lanes: one AVX2 register per vector in the
+// AVX2 clone (picked by the dynamic loader), two SSE2 registers otherwise.
+CALIPER3D_SIMD_CLONES void batchSums4(int knots, int m, const double* weights,
+                                      const double* cosines, const double* sines,
+                                      const double* pads, double* u, double* v, LaneSums& out) {
+    laneSums<Lanes4>(knots, m, weights, cosines, sines, pads, u, v, 0, out);
+    laneSums<Lanes4>(knots, m, weights, cosines, sines, pads, u, v, 4, out);
+}
+
+// The batch as one AVX-512 vector: twice the lanes per instruction where the
+// processor has them (the machines we measure on do).
+#if defined(__x86_64__) || defined(__i386__)
+#define CALIPER3D_HAS_AVX512_PATH 1
+__attribute__((target("avx512f"))) void batchSums8(int knots, int m, const double* weights,
+                                                   const double* cosines, const double* sines,
+                                                   const double* pads, double* u, double* v,
+                                                   LaneSums& out) {
+    laneSums<Lanes8>(knots, m, weights, cosines, sines, pads, u, v, 0, out);
+}
+#endif
+
+bool haveAvx512() {
+#if defined(CALIPER3D_HAS_AVX512_PATH)
+    return __builtin_cpu_supports("avx512f");
+#else
+    return false;
+#endif
 }
 
 // SectionAnalyzer::analyse's fallback when no ellipse fits: the ellipse of
 // the same second moments, from the sums it would have accumulated beside the
 // area (Steger 1996), and its angle the way analyse computes it.
-void momentEllipse(const Lanes* u, const Lanes* v, int m, int lane, double area, BatchShape& s,
+void momentEllipse(const double* u, const double* v, int m, int lane, double area, BatchShape& s,
                    double& majorAngle_deg) {
     double suu = 0.0, svv = 0.0, suv = 0.0;
     for (int j = 0; j < m; ++j) {
-        const double uj = u[j][lane], uk = u[j + 1][lane];
-        const double vj = v[j][lane], vk = v[j + 1][lane];
+        const double uj = u[j * kL + lane], uk = u[(j + 1) * kL + lane];
+        const double vj = v[j * kL + lane], vk = v[(j + 1) * kL + lane];
         const double cross = uj * vk - uk * vj;
         suu += (uj * uj + uj * uk + uk * uk) * cross;
         svv += (vj * vj + vj * vk + vk * vk) * cross;
@@ -219,8 +268,8 @@ double majorAngle_deg(const BatchShape& s) {
     return deg;
 }
 
-SectionBatchAnalyzer::SectionBatchAnalyzer(int knots, int samples)
-    : m_knots(knots), m_samples(samples) {
+SectionBatchAnalyzer::SectionBatchAnalyzer(int knots, int samples, Width width)
+    : m_knots(knots), m_samples(samples), m_wide(width == Width::Widest && haveAvx512()) {
     const PeriodicSplineSampler sampler(knots, samples);
     m_weights.assign(sampler.weights(),
                      sampler.weights() + static_cast<std::size_t>(knots) * samples);
@@ -237,9 +286,12 @@ void SectionBatchAnalyzer::analyse(const double* pads, BatchShape* out,
                                    Workspace& workspace) const {
     const int m = m_samples;
     LaneSums sums;
-    Lanes* u = workspace.lanes<Lanes>();
-    const Lanes* v = u + (m + 1);
-    analyseLanes(m_knots, m, m_weights.data(), m_cos.data(), m_sin.data(), pads, u, sums);
+    double* u = workspace.data();
+    double* v = u + (m + 1) * kL;
+    if (m_wide)
+        batchSums8(m_knots, m, m_weights.data(), m_cos.data(), m_sin.data(), pads, u, v, sums);
+    else
+        batchSums4(m_knots, m, m_weights.data(), m_cos.data(), m_sin.data(), pads, u, v, sums);
     for (int l = 0; l < kL; ++l) {
         BatchShape& s = out[l];
         s = BatchShape{};

@@ -1,7 +1,6 @@
 #pragma once
 
 #include <cstddef>
-#include <memory>
 #include <vector>
 
 namespace caliper3d::reconstruction {
@@ -45,9 +44,14 @@ double majorAngle_deg(const BatchShape& shape);
 // Workspace.
 class SectionBatchAnalyzer {
 public:
-    static constexpr int kLanes = 4;
+    static constexpr int kLanes = 8;
 
-    SectionBatchAnalyzer(int knots, int samples);
+    // How the kLanes sections go through the vector units: the widest the
+    // processor has (one AVX-512 vector), or two halves of four lanes (AVX2 or
+    // SSE2). The results are the same; tests run both.
+    enum class Width { Widest, FourLanes };
+
+    SectionBatchAnalyzer(int knots, int samples, Width width = Width::Widest);
 
     int knots() const { return m_knots; }
     int samples() const { return m_samples; }
@@ -56,17 +60,10 @@ public:
     class Workspace {
     public:
         explicit Workspace(const SectionBatchAnalyzer& analyzer)
-            : m_buffer(static_cast<std::size_t>(2 * analyzer.samples() + 2) * kLanes + kAlign) {}
-        // 64-byte aligned, so that a row of lanes never straddles a cache line.
-        template <class T>
-        T* lanes() {
-            void* p = m_buffer.data();
-            std::size_t space = m_buffer.size() * sizeof(double);
-            return static_cast<T*>(std::align(64, sizeof(T), p, space));
-        }
+            : m_buffer(static_cast<std::size_t>(2 * analyzer.samples() + 2) * kLanes) {}
+        double* data() { return m_buffer.data(); }
 
     private:
-        static constexpr std::size_t kAlign = 8;
         std::vector<double> m_buffer;
     };
 
@@ -77,6 +74,7 @@ public:
 private:
     int m_knots;
     int m_samples;
+    bool m_wide;                       // one AVX-512 vector per batch, else two halves of four
     std::vector<double> m_weights;     // spline weights, samples x knots
     std::vector<double> m_cos, m_sin;  // of the sample angles
 };

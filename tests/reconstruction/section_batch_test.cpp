@@ -51,52 +51,56 @@ std::vector<double> pads(int n, int kind, std::mt19937& random) {
 
 }  // namespace
 
-TEST(SectionBatchTest, EveryLaneIsSectionAnalyzerBitForBit) {
-    std::mt19937 random(7);
-    std::size_t sections = 0, unfitted = 0;
-    for (int knots : {3, 4, 6, 24, 40}) {
-        for (int samples : {3, 4, 5, 7, 48, 300}) {
-            const SectionAnalyzer reference(knots, samples);
-            const SectionBatchAnalyzer batch(knots, samples);
-            SectionBatchAnalyzer::Workspace workspace(batch);
-            std::vector<double> sampled(static_cast<std::size_t>(samples));
-            for (int round = 0; round < 12; ++round) {
-                std::vector<std::vector<double>> lanes;
-                std::vector<double> interleaved(static_cast<std::size_t>(knots) * kLanes);
-                for (int l = 0; l < kLanes; ++l) {
-                    lanes.push_back(pads(knots, round * kLanes + l, random));
-                    for (int k = 0; k < knots; ++k)
-                        interleaved[static_cast<std::size_t>(k * kLanes + l)] = lanes[l][k];
-                }
-                BatchShape shapes[kLanes];
-                batch.analyse(interleaved.data(), shapes, workspace);
-                for (int l = 0; l < kLanes; ++l) {
-                    const SectionShape s = reference.analyse(lanes[l].data(), sampled.data());
-                    const BatchShape& b = shapes[l];
-                    SCOPED_TRACE(::testing::Message()
-                                 << knots << " pads, " << samples << " samples, lane " << l);
-                    EXPECT_EQ(b.area_mm2, s.area_mm2);
-                    EXPECT_EQ(b.equivalentDiameter_mm, s.equivalentDiameter_mm);
-                    EXPECT_EQ(b.centroidU_mm, s.centroidU_mm);
-                    EXPECT_EQ(b.centroidV_mm, s.centroidV_mm);
-                    EXPECT_EQ(b.centreOffset_mm, s.centreOffset_mm);
-                    EXPECT_EQ(b.dmax_mm, s.dmax_mm);
-                    EXPECT_EQ(b.dmin_mm, s.dmin_mm);
-                    EXPECT_EQ(b.ellipticity, s.ellipticity);
-                    EXPECT_EQ(b.ellipseFitted, s.ellipseFitted);
-                    EXPECT_EQ(majorAngle_deg(b), s.majorAngle_deg);
-                    // The direction is the angle's, as an axis (the cosines without trigonometry).
-                    const double angle = glm::radians(s.majorAngle_deg);
-                    EXPECT_NEAR(b.majorU * std::sin(angle) - b.majorV * std::cos(angle), 0.0,
-                                1e-12);
-                    EXPECT_NEAR(std::hypot(b.majorU, b.majorV), 1.0, 1e-15);
-                    EXPECT_GE(b.majorV, 0.0);
-                    ++sections;
-                    unfitted += s.ellipseFitted ? 0 : 1;
+TEST(SectionBatchTest, EveryLaneIsSectionAnalyzerBitForBitWhateverTheVectorWidth) {
+    for (const auto width :
+         {SectionBatchAnalyzer::Width::Widest, SectionBatchAnalyzer::Width::FourLanes}) {
+        std::mt19937 random(7);
+        std::size_t sections = 0, unfitted = 0;
+        for (int knots : {3, 4, 6, 24, 40}) {
+            for (int samples : {3, 4, 5, 7, 48, 300}) {
+                const SectionAnalyzer reference(knots, samples);
+                const SectionBatchAnalyzer batch(knots, samples, width);
+                SectionBatchAnalyzer::Workspace workspace(batch);
+                std::vector<double> sampled(static_cast<std::size_t>(samples));
+                for (int round = 0; round < 12; ++round) {
+                    std::vector<std::vector<double>> lanes;
+                    std::vector<double> interleaved(static_cast<std::size_t>(knots) * kLanes);
+                    for (int l = 0; l < kLanes; ++l) {
+                        lanes.push_back(pads(knots, round * kLanes + l, random));
+                        for (int k = 0; k < knots; ++k)
+                            interleaved[static_cast<std::size_t>(k * kLanes + l)] = lanes[l][k];
+                    }
+                    BatchShape shapes[kLanes];
+                    batch.analyse(interleaved.data(), shapes, workspace);
+                    for (int l = 0; l < kLanes; ++l) {
+                        const SectionShape s = reference.analyse(lanes[l].data(), sampled.data());
+                        const BatchShape& b = shapes[l];
+                        SCOPED_TRACE(::testing::Message()
+                                     << knots << " pads, " << samples << " samples, lane " << l);
+                        EXPECT_EQ(b.area_mm2, s.area_mm2);
+                        EXPECT_EQ(b.equivalentDiameter_mm, s.equivalentDiameter_mm);
+                        EXPECT_EQ(b.centroidU_mm, s.centroidU_mm);
+                        EXPECT_EQ(b.centroidV_mm, s.centroidV_mm);
+                        EXPECT_EQ(b.centreOffset_mm, s.centreOffset_mm);
+                        EXPECT_EQ(b.dmax_mm, s.dmax_mm);
+                        EXPECT_EQ(b.dmin_mm, s.dmin_mm);
+                        EXPECT_EQ(b.ellipticity, s.ellipticity);
+                        EXPECT_EQ(b.ellipseFitted, s.ellipseFitted);
+                        EXPECT_EQ(majorAngle_deg(b), s.majorAngle_deg);
+                        // The direction is the angle's, as an axis (the cosines without
+                        // trigonometry).
+                        const double angle = glm::radians(s.majorAngle_deg);
+                        EXPECT_NEAR(b.majorU * std::sin(angle) - b.majorV * std::cos(angle), 0.0,
+                                    1e-12);
+                        EXPECT_NEAR(std::hypot(b.majorU, b.majorV), 1.0, 1e-15);
+                        EXPECT_GE(b.majorV, 0.0);
+                        ++sections;
+                        unfitted += s.ellipseFitted ? 0 : 1;
+                    }
                 }
             }
         }
+        EXPECT_EQ(sections, 5u * 6u * 12u * kLanes);
+        EXPECT_GT(unfitted, 100u);  // the second-moment fallback ran too
     }
-    EXPECT_EQ(sections, 5u * 6u * 12u * kLanes);
-    EXPECT_GT(unfitted, 100u);  // the second-moment fallback ran too
 }
