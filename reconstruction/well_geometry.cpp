@@ -11,6 +11,7 @@
 #include "reconstruction/arm_geometry.h"
 #include "reconstruction/colour_map.h"
 #include "reconstruction/ordered_blocks.h"
+#include "reconstruction/prefault.h"
 #include "reconstruction/survey_interpolation.h"
 
 namespace caliper3d::reconstruction {
@@ -65,12 +66,18 @@ WellGeometry::WellGeometry(std::shared_ptr<const io::SectionTable> table,
     }
 
     const bool fromSurvey = !m_options.survey.empty();
+    // The workers write ~140 bytes per row into fresh memory: its pages are
+    // faulted in on every worker at once first, not by the first writer.
+    const int threads = std::max(1, m_options.threads);
     if (fromSurvey) {
         m_path = interpolateSurveyPath(m_options.survey, t.depth_m);
     } else {
+        m_path.reserve(rows);
+        prefaultPages(m_path.data(), rows * sizeof(PathPoint), threads);
         m_path.resize(rows);
     }
-    m_frames.resize(rows);
+    m_frames = FillArray<SectionFrame>(rows);
+    prefaultPages(m_frames.data(), rows * sizeof(SectionFrame), threads);
     m_orientation.resize(rows);
 
     // Each block computes its rows' minimum-curvature steps and frames from
@@ -84,7 +91,7 @@ WellGeometry::WellGeometry(std::shared_ptr<const io::SectionTable> table,
         startAzi = carriedIntoBlocks(t.hazi_deg, rows, kBlockRows);
     }
     forEachBlockInOrder(
-        blocks, m_options.threads,
+        blocks, threads,
         [&](std::size_t block, std::size_t) {
             const std::size_t first = block * kBlockRows, last = std::min(rows, first + kBlockRows);
             if (!fromSurvey) computeSteps(first, last, startInc[block], startAzi[block]);
@@ -157,10 +164,10 @@ void WellGeometry::computeFrames(std::size_t first, std::size_t last) {
         const double rb = valueAt(t.rb_deg, i);
         const bool steep = inc > m_options.steepInclination_deg;
         if (std::isfinite(rb) && (steep || !std::isfinite(p1az))) {
-            m_frames[i] = frameFromRelativeBearing(direction, rb);
+            m_frames.set(i, frameFromRelativeBearing(direction, rb));
             m_orientation[i] = Orientation::RelativeBearing;
         } else {
-            m_frames[i] = frameFromPadAzimuth(direction, std::isfinite(p1az) ? p1az : 0.0);
+            m_frames.set(i, frameFromPadAzimuth(direction, std::isfinite(p1az) ? p1az : 0.0));
             m_orientation[i] =
                 std::isfinite(p1az) ? Orientation::PadAzimuth : Orientation::Unoriented;
         }

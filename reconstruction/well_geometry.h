@@ -8,6 +8,7 @@
 #include <glm/vec3.hpp>
 
 #include "io/section_table.h"
+#include "reconstruction/fill_array.h"
 #include "reconstruction/mesh.h"
 #include "reconstruction/minimum_curvature.h"
 #include "reconstruction/periodic_spline.h"
@@ -92,7 +93,7 @@ private:
     std::shared_ptr<const io::SectionTable> m_table;
     GeometryOptions m_options;
     std::vector<PathPoint> m_path;
-    std::vector<SectionFrame> m_frames;
+    FillArray<SectionFrame> m_frames;  // constructed by the workers that compute them
     std::vector<Orientation> m_orientation;
     std::vector<std::pair<std::size_t, std::size_t>> m_segments;
     PeriodicSplineSampler m_sampler;
