@@ -1,6 +1,7 @@
 // Reconstruction of the 4 km well of design section 5 (1.6 M sections at
 // 2.5 mm, six arms, 48 spline points): path + spline + analysis, on one and
-// two threads. Prints sections per second (docs/benchmarks-reconstruction.md).
+// two threads (geometry and analysis alike). Prints sections per second
+// (docs/benchmarks-reconstruction.md).
 #include <memory>
 
 #include <benchmark/benchmark.h>
@@ -21,10 +22,12 @@ std::shared_ptr<const io::SectionTable> fourKilometreWell() {
 
 void pathSplineAnalysis(benchmark::State& state) {
     const auto table = fourKilometreWell();
+    GeometryOptions geometryOptions;
+    geometryOptions.threads = static_cast<int>(state.range(0));
     AnalysisOptions options;
     options.threads = static_cast<int>(state.range(0));
     for (auto _ : state) {
-        const WellGeometry geometry(table, GeometryOptions{});
+        const WellGeometry geometry(table, geometryOptions);
         const WellAnalysis analysis = analyseWell(geometry, options);
         benchmark::DoNotOptimize(analysis.sections.data());
     }

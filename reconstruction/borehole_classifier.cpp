@@ -36,15 +36,17 @@ BoreholeClass classifyShape(const ClassifierInput& s, const ClassificationRules&
 
 namespace {
 
+using Accessor = std::function<double(std::size_t)>;
+
 // Largest tool turn over any window of `window` metres within [first, last],
 // scaled up to the window for a run shorter than it.
-double maxTurnPerWindow(const std::vector<ClassifierInput>& s, std::size_t first, std::size_t last,
-                        double window) {
+double maxTurnPerWindow(const Accessor& mdAt, const Accessor& toolAzimuthAt, std::size_t first,
+                        std::size_t last, double window) {
     std::vector<double> unwrapped;
     std::vector<double> md;
     double previous = std::nan(""), offset = 0.0;
     for (std::size_t i = first; i <= last; ++i) {
-        const double a = s[i].toolAzimuth_deg;
+        const double a = toolAzimuthAt(i);
         if (!std::isfinite(a)) continue;
         if (std::isfinite(previous)) {
             double d = a - previous;
@@ -53,7 +55,7 @@ double maxTurnPerWindow(const std::vector<ClassifierInput>& s, std::size_t first
         }
         previous = a;
         unwrapped.push_back(a + offset);
-        md.push_back(s[i].md_m);
+        md.push_back(mdAt(i));
     }
     if (unwrapped.size() < 2) return 0.0;
     const double length = md.back() - md.front();
@@ -76,6 +78,14 @@ std::vector<BoreholeClass> classifySections(const std::vector<ClassifierInput>& 
                                             const ClassificationRules& rules) {
     std::vector<BoreholeClass> out(sections.size());
     for (std::size_t i = 0; i < sections.size(); ++i) out[i] = classifyShape(sections[i], rules);
+    applyBreakoutZoneRules(
+        out, [&](std::size_t i) { return sections[i].md_m; },
+        [&](std::size_t i) { return sections[i].toolAzimuth_deg; }, rules);
+    return out;
+}
+
+void applyBreakoutZoneRules(std::vector<BoreholeClass>& out, const Accessor& md,
+                            const Accessor& toolAzimuth, const ClassificationRules& rules) {
     std::size_t i = 0;
     while (i < out.size()) {
         if (out[i] != BoreholeClass::Breakout) {
@@ -85,16 +95,16 @@ std::vector<BoreholeClass> classifySections(const std::vector<ClassifierInput>& 
         std::size_t j = i;
         while (j + 1 < out.size() && out[j + 1] == BoreholeClass::Breakout) ++j;
         // A run's length counts half a sampling step beyond each end section.
-        const double stepAbove = i > 0 ? sections[i].md_m - sections[i - 1].md_m : 0.0;
-        const double stepBelow = j + 1 < out.size() ? sections[j + 1].md_m - sections[j].md_m : 0.0;
-        const double length = sections[j].md_m - sections[i].md_m + (stepAbove + stepBelow) / 2.0;
+        const double stepAbove = i > 0 ? md(i) - md(i - 1) : 0.0;
+        const double stepBelow = j + 1 < out.size() ? md(j + 1) - md(j) : 0.0;
+        const double length = md(j) - md(i) + (stepAbove + stepBelow) / 2.0;
         const bool tooShort = length < rules.minBreakoutLength_m;
-        const bool rotating = maxTurnPerWindow(sections, i, j, rules.rotationWindow_m) >= rules.maxToolRotation_deg;
+        const bool rotating = maxTurnPerWindow(md, toolAzimuth, i, j, rules.rotationWindow_m) >=
+                              rules.maxToolRotation_deg;
         if (tooShort || rotating)
             for (std::size_t k = i; k <= j; ++k) out[k] = BoreholeClass::InGauge;
         i = j + 1;
     }
-    return out;
 }
 
 }  // namespace caliper3d::reconstruction

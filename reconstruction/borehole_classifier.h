@@ -1,5 +1,7 @@
 #pragma once
 
+#include <cstddef>
+#include <functional>
 #include <string_view>
 #include <vector>
 
@@ -51,5 +53,14 @@ BoreholeClass classifyShape(const ClassifierInput& s, const ClassificationRules&
 // shorter runs), is not a breakout: its sections become in_gauge.
 std::vector<BoreholeClass> classifySections(const std::vector<ClassifierInput>& sections,
                                             const ClassificationRules& rules);
+
+// The zone rules of classifySections on shape classes already in `classes`,
+// for a caller that keeps its sections in another layout: md_m(i) and
+// toolAzimuth_deg(i) give section i's measured depth and tool azimuth (they
+// are asked only for breakout candidates and their neighbours).
+void applyBreakoutZoneRules(std::vector<BoreholeClass>& classes,
+                            const std::function<double(std::size_t)>& md_m,
+                            const std::function<double(std::size_t)>& toolAzimuth_deg,
+                            const ClassificationRules& rules);
 
 }  // namespace caliper3d::reconstruction

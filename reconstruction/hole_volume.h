@@ -30,4 +30,22 @@ struct HoleVolume {
 HoleVolume holeVolume(const std::vector<double>& md_m, const std::vector<double>& area_mm2,
                       const std::vector<double>& bit_mm, const VolumeOptions& options);
 
+// holeVolume one step at a time, for a caller that keeps its sections in
+// another layout: the steps added in depth order give holeVolume's result bit
+// for bit.
+class HoleVolumeAccumulator {
+public:
+    // firstMd_m and lastMd_m: measured depths of the first and last sections.
+    HoleVolumeAccumulator(const VolumeOptions& options, double firstMd_m, double lastMd_m);
+    // The step from one section (md, area, bit size) to the next.
+    void addStep(double md0_m, double area0_mm2, double bit0_mm, double md1_m, double area1_mm2,
+                 double bit1_mm);
+    HoleVolume result() const;
+
+private:
+    VolumeOptions m_options;
+    HoleVolume m_volume;
+    double m_casing_m2 = 0.0;
+};
+
 }  // namespace caliper3d::reconstruction

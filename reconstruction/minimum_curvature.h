@@ -2,6 +2,8 @@
 
 #include <vector>
 
+#include "reconstruction/hole_direction.h"
+
 namespace caliper3d::reconstruction {
 
 // A survey station: measured depth, inclination (0 = vertical down) and
@@ -38,6 +40,10 @@ struct MinimumCurvatureStep {
 //   dN = dMD/2 (sin I1 cos A1 + sin I2 cos A2) RF, and alike for E and TVD.
 // RF uses the series 1 + b^2/12 + b^4/120 for tiny b, where 2/b tan(b/2) loses digits.
 MinimumCurvatureStep minimumCurvatureStep(const SurveyStation& a, const SurveyStation& b);
+// The same from the stations' sines and cosines, for a caller that already has
+// them (every section of a log is the end of one step and the start of the next).
+MinimumCurvatureStep minimumCurvatureStep(double mdA, const HoleDirection& a, double mdB,
+                                          const HoleDirection& b);
 
 // Positions of every station; the first is at the origin.
 std::vector<PathPoint> minimumCurvaturePath(const std::vector<SurveyStation>& stations);

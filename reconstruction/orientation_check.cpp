@@ -1,5 +1,6 @@
 #include "reconstruction/orientation_check.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/trigonometric.hpp>
@@ -9,35 +10,59 @@
 
 namespace caliper3d::reconstruction {
 
-OrientationOffset padAzimuthOffset(const io::SectionTable& t, double minInclination_deg) {
-    OrientationOffset out;
+bool hasPadAzimuthCurves(const io::SectionTable& t) {
     const std::size_t rows = t.rowCount();
-    if (t.p1az_deg.size() != rows || t.hazi_deg.size() != rows || t.rb_deg.size() != rows ||
-        t.devi_deg.size() != rows) {
-        out.mean_deg = out.sd_deg = std::nan("");
-        return out;
-    }
-    double c = 0.0, s = 0.0;
-    for (std::size_t i = 0; i < rows; ++i) {
+    return t.p1az_deg.size() == rows && t.hazi_deg.size() == rows && t.rb_deg.size() == rows &&
+           t.devi_deg.size() == rows;
+}
+
+PadAzimuthSums padAzimuthSums(const io::SectionTable& t, std::size_t first, std::size_t last,
+                              double minInclination_deg) {
+    PadAzimuthSums out;
+    HoleDirection direction;
+    for (std::size_t i = first; i < last; ++i) {
         const double p1az = t.p1az_deg[i], hazi = t.hazi_deg[i], rb = t.rb_deg[i], inc = t.devi_deg[i];
         if (!std::isfinite(p1az) || !std::isfinite(hazi) || !std::isfinite(rb) || !std::isfinite(inc)) continue;
         if (inc < minInclination_deg) continue;
-        const SectionFrame f = frameFromRelativeBearing(inc, hazi, rb);
-        const double predicted = inPlaneAzimuth_deg(f, 0.0);
-        if (!std::isfinite(predicted)) continue;
-        const double d = glm::radians(p1az - predicted);
-        c += std::cos(d);
-        s += std::sin(d);
+        direction.update(inc, hazi);
+        // The predicted pad-1 direction; its azimuth is that of its horizontal
+        // projection, undefined when the projection is too short.
+        const Ned arm1 = frameFromRelativeBearing(direction, rb).arm1;
+        const double horizontal = std::hypot(arm1.x, arm1.y);
+        if (horizontal < 1e-3) continue;
+        // cos and sin of P1AZ minus the predicted azimuth atan2(y, x), by the
+        // angle-difference identities: no atan2 and no second sin/cos.
+        const double p = glm::radians(p1az);
+        const double cosP = std::cos(p), sinP = std::sin(p);
+        out.cosSum += (cosP * arm1.x + sinP * arm1.y) / horizontal;
+        out.sinSum += (sinP * arm1.x - cosP * arm1.y) / horizontal;
         ++out.samples;
     }
+    return out;
+}
+
+OrientationOffset padAzimuthOffset(const PadAzimuthSums& sums) {
+    OrientationOffset out;
+    out.samples = sums.samples;
     if (out.samples == 0) {
         out.mean_deg = out.sd_deg = std::nan("");
         return out;
     }
-    out.mean_deg = glm::degrees(std::atan2(s, c));
-    const double r = std::min(1.0, std::hypot(c, s) / static_cast<double>(out.samples));
+    out.mean_deg = glm::degrees(std::atan2(sums.sinSum, sums.cosSum));
+    const double r =
+        std::min(1.0, std::hypot(sums.cosSum, sums.sinSum) / static_cast<double>(out.samples));
     out.sd_deg = r > 0.0 ? glm::degrees(std::sqrt(-2.0 * std::log(r))) : 180.0;
     return out;
+}
+
+OrientationOffset padAzimuthOffset(const io::SectionTable& t, double minInclination_deg) {
+    if (!hasPadAzimuthCurves(t)) return padAzimuthOffset(PadAzimuthSums{});
+    PadAzimuthSums total;
+    const std::size_t rows = t.rowCount();
+    for (std::size_t first = 0; first < rows; first += kPadAzimuthBlockRows)
+        total.add(padAzimuthSums(t, first, std::min(rows, first + kPadAzimuthBlockRows),
+                                 minInclination_deg));
+    return padAzimuthOffset(total);
 }
 
 }  // namespace caliper3d::reconstruction

@@ -46,6 +46,8 @@ public:
 
     // out[j] = spline through values[0..knots) at t = j*knots/samples.
     void sample(const double* values, double* out) const;
+    // The weights: out[j] = sum over k of weights()[j * knots + k] * values[k].
+    const double* weights() const { return m_weights.data(); }
 
 private:
     int m_knots;

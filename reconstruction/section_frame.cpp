@@ -9,14 +9,20 @@
 namespace caliper3d::reconstruction {
 
 Ned holeTangent(double inc_deg, double azi_deg) {
-    const double i = glm::radians(inc_deg), a = glm::radians(azi_deg);
-    return {std::sin(i) * std::cos(a), std::sin(i) * std::sin(a), std::cos(i)};
+    return holeTangent(HoleDirection(inc_deg, azi_deg));
+}
+
+Ned holeTangent(const HoleDirection& d) {
+    return {d.sinInc * d.cosAzi, d.sinInc * d.sinAzi, d.cosInc};
 }
 
 Ned highSide(double inc_deg, double azi_deg) {
-    const double i = glm::radians(inc_deg), a = glm::radians(azi_deg);
-    if (std::abs(std::sin(i)) < 1e-12) return {1.0, 0.0, 0.0};
-    return {std::cos(i) * std::cos(a), std::cos(i) * std::sin(a), -std::sin(i)};
+    return highSide(HoleDirection(inc_deg, azi_deg));
+}
+
+Ned highSide(const HoleDirection& d) {
+    if (std::abs(d.sinInc) < 1e-12) return {1.0, 0.0, 0.0};
+    return {d.cosInc * d.cosAzi, d.cosInc * d.sinAzi, -d.sinInc};
 }
 
 Ned SectionFrame::direction(double clockwiseAngle_rad) const {
@@ -24,15 +30,19 @@ Ned SectionFrame::direction(double clockwiseAngle_rad) const {
 }
 
 SectionFrame frameFromPadAzimuth(double inc_deg, double azi_deg, double p1az_deg) {
+    return frameFromPadAzimuth(HoleDirection(inc_deg, azi_deg), p1az_deg);
+}
+
+SectionFrame frameFromPadAzimuth(const HoleDirection& d, double p1az_deg) {
     SectionFrame f;
-    f.tangent = holeTangent(inc_deg, azi_deg);
+    f.tangent = holeTangent(d);
     const double p = glm::radians(p1az_deg);
     const Ned horizontal{std::cos(p), std::sin(p), 0.0};
     // Arm 1 = horizontal direction moved into the plane along the tangent:
     // u = h + s t with u . t = 0; its horizontal projection keeps azimuth p1az
     // (for a hole that is not horizontal).
     const Ned t = f.tangent;
-    if (std::abs(t.z) < 1e-6) return frameFromRelativeBearing(inc_deg, azi_deg, 0.0);
+    if (std::abs(t.z) < 1e-6) return frameFromRelativeBearing(d, 0.0);
     const double s = -glm::dot(horizontal, t) / t.z;
     Ned u = horizontal + Ned(0.0, 0.0, s);
     u = glm::normalize(u);
@@ -42,9 +52,13 @@ SectionFrame frameFromPadAzimuth(double inc_deg, double azi_deg, double p1az_deg
 }
 
 SectionFrame frameFromRelativeBearing(double inc_deg, double azi_deg, double rb_deg) {
+    return frameFromRelativeBearing(HoleDirection(inc_deg, azi_deg), rb_deg);
+}
+
+SectionFrame frameFromRelativeBearing(const HoleDirection& d, double rb_deg) {
     SectionFrame f;
-    f.tangent = holeTangent(inc_deg, azi_deg);
-    const Ned hs = highSide(inc_deg, azi_deg);
+    f.tangent = holeTangent(d);
+    const Ned hs = highSide(d);
     const Ned right = glm::cross(f.tangent, hs);
     const double r = glm::radians(rb_deg);
     f.arm1 = std::cos(r) * hs + std::sin(r) * right;

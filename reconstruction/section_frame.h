@@ -2,6 +2,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "reconstruction/hole_direction.h"
+
 namespace caliper3d::reconstruction {
 
 // Vectors in the analysis frame: x = north, y = east, z = down (TVD), metres.
@@ -9,11 +11,13 @@ using Ned = glm::dvec3;
 
 // Unit vector along the hole, pointing deeper.
 Ned holeTangent(double inc_deg, double azi_deg);
+Ned holeTangent(const HoleDirection& d);
 
 // Unit vector in the section plane pointing to the high side of the hole
 // (the upward direction projected on the plane). Undefined in a vertical hole,
 // where north is returned.
 Ned highSide(double inc_deg, double azi_deg);
+Ned highSide(const HoleDirection& d);
 
 // Orthonormal frame of a section: the plane is perpendicular to `tangent`;
 // `arm1` is arm 1's direction; `side` = tangent x arm1 is 90 degrees clockwise
@@ -31,9 +35,11 @@ struct SectionFrame {
 // points at azimuth p1az. Falls back to the relative bearing 0 (high side)
 // when the hole is so steep that the projection is degenerate.
 SectionFrame frameFromPadAzimuth(double inc_deg, double azi_deg, double p1az_deg);
+SectionFrame frameFromPadAzimuth(const HoleDirection& d, double p1az_deg);
 
 // Arm 1 is rb degrees clockwise (looking down the hole) from the high side.
 SectionFrame frameFromRelativeBearing(double inc_deg, double azi_deg, double rb_deg);
+SectionFrame frameFromRelativeBearing(const HoleDirection& d, double rb_deg);
 
 // The scene (Coin, Y up) frame is x = east, y = up, z = south. This is the
 // one place where analysis-frame vectors become scene vectors.

@@ -10,6 +10,8 @@
 
 #include "reconstruction/arm_geometry.h"
 #include "reconstruction/colour_map.h"
+#include "reconstruction/ordered_blocks.h"
+#include "reconstruction/prefault.h"
 #include "reconstruction/survey_interpolation.h"
 
 namespace caliper3d::reconstruction {
@@ -20,18 +22,31 @@ double valueAt(const std::vector<double>& curve, std::size_t row) {
     return row < curve.size() ? curve[row] : io::kNaN;
 }
 
-// Carries the last finite value forward (0 before the first) so that a null
-// orientation reading never produces a NaN position.
-std::vector<double> filled(const std::vector<double>& curve, std::size_t rows) {
-    std::vector<double> out(rows, 0.0);
-    double last = 0.0;
-    for (std::size_t i = 0; i < rows; ++i) {
-        const double v = valueAt(curve, i);
-        if (std::isfinite(v)) last = v;
-        out[i] = last;
+// The value each block of `blockRows` rows starts from when nulls carry the
+// last finite reading forward (0 before the first), so that a null
+// orientation reading never produces a NaN position: one backward search per
+// block, usually of one row.
+std::vector<double> carriedIntoBlocks(const std::vector<double>& curve, std::size_t rows,
+                                      std::size_t blockRows) {
+    std::vector<double> out;
+    double carried = 0.0;
+    for (std::size_t first = 0; first < rows; first += blockRows) {
+        out.push_back(carried);
+        const std::size_t last = std::min({rows, first + blockRows, curve.size()});
+        for (std::size_t i = last; i-- > first;) {
+            if (std::isfinite(curve[i])) {
+                carried = curve[i];
+                break;
+            }
+        }
     }
     return out;
 }
+
+// Rows per block of the parallel construction: large enough that a block's
+// start-up (a backward search, one extra direction) is negligible, small
+// enough that two workers share a well evenly.
+constexpr std::size_t kBlockRows = 4096;
 
 }  // namespace
 
@@ -50,35 +65,49 @@ WellGeometry::WellGeometry(std::shared_ptr<const io::SectionTable> table,
                                         std::to_string(i + 1) + ")");
     }
 
-    if (!m_options.survey.empty()) {
+    const bool fromSurvey = !m_options.survey.empty();
+    // The workers write ~140 bytes per row into fresh memory: its pages are
+    // faulted in on every worker at once first, not by the first writer.
+    const int threads = std::max(1, m_options.threads);
+    if (fromSurvey) {
         m_path = interpolateSurveyPath(m_options.survey, t.depth_m);
     } else {
-        const std::vector<double> inc = filled(t.devi_deg, rows);
-        const std::vector<double> azi = filled(t.hazi_deg, rows);
-        std::vector<SurveyStation> stations(rows);
-        for (std::size_t i = 0; i < rows; ++i) stations[i] = {t.depth_m[i], inc[i], azi[i]};
-        m_path = minimumCurvaturePath(stations);
+        m_path.reserve(rows);
+        prefaultPages(m_path.data(), rows * sizeof(PathPoint), threads);
+        m_path.resize(rows);
     }
-
-    // Arm 1 per design section 3: P1AZ in near-vertical holes, RB from the
-    // high side in steep ones (where P1AZ, a horizontal projection, loses
-    // precision) or when P1AZ is missing; P1AZ when RB is missing. A row with
-    // neither keeps arm 1 north and is counted as unoriented.
-    m_frames.resize(rows);
+    m_frames = FillArray<SectionFrame>(rows);
+    prefaultPages(m_frames.data(), rows * sizeof(SectionFrame), threads);
     m_orientation.resize(rows);
-    for (std::size_t i = 0; i < rows; ++i) {
-        const double inc = m_path[i].inc_deg, azi = m_path[i].azi_deg;
-        const double p1az = valueAt(t.p1az_deg, i);
-        const double rb = valueAt(t.rb_deg, i);
-        const bool steep = inc > m_options.steepInclination_deg;
-        if (std::isfinite(rb) && (steep || !std::isfinite(p1az))) {
-            m_frames[i] = frameFromRelativeBearing(inc, azi, rb);
-            m_orientation[i] = Orientation::RelativeBearing;
-        } else {
-            m_frames[i] = frameFromPadAzimuth(inc, azi, std::isfinite(p1az) ? p1az : 0.0);
-            m_orientation[i] = std::isfinite(p1az) ? Orientation::PadAzimuth : Orientation::Unoriented;
-        }
+
+    // Each block computes its rows' minimum-curvature steps and frames from
+    // one set of sines and cosines per row; the positions are then the running
+    // sum of the steps, added block after block in row order exactly as a
+    // single loop adds them.
+    const std::size_t blocks = (rows + kBlockRows - 1) / kBlockRows;
+    std::vector<double> startInc, startAzi;
+    if (!fromSurvey) {
+        startInc = carriedIntoBlocks(t.devi_deg, rows, kBlockRows);
+        startAzi = carriedIntoBlocks(t.hazi_deg, rows, kBlockRows);
     }
+    forEachBlockInOrder(
+        blocks, threads,
+        [&](std::size_t block, std::size_t) {
+            const std::size_t first = block * kBlockRows, last = std::min(rows, first + kBlockRows);
+            if (!fromSurvey) computeSteps(first, last, startInc[block], startAzi[block]);
+            computeFrames(first, last);
+        },
+        [&](std::size_t block) {
+            if (fromSurvey) return;
+            const std::size_t first = block * kBlockRows, last = std::min(rows, first + kBlockRows);
+            for (std::size_t i = std::max<std::size_t>(first, 1); i < last; ++i) {
+                PathPoint& p = m_path[i];
+                const PathPoint& prev = m_path[i - 1];
+                p.north = prev.north + p.north;
+                p.east = prev.east + p.east;
+                p.tvd = prev.tvd + p.tvd;
+            }
+        });
 
     // Segments of equal length; consecutive segments share their boundary row.
     const double segment = std::max(m_options.segmentLength_m, 1e-3);
@@ -89,6 +118,59 @@ WellGeometry::WellGeometry(std::shared_ptr<const io::SectionTable> table,
         while (last + 1 < rows && t.depth_m[last + 1] <= limit) ++last;
         m_segments.emplace_back(first, last);
         first = last;
+    }
+}
+
+// Path points of rows [first, last) from the log's DEVI and HAZI (nulls carry
+// the last reading forward, starting from `inc` and `azi`), each holding its minimum-curvature step
+// from the row before in north/east/tvd until the constructor sums them.
+void WellGeometry::computeSteps(std::size_t first, std::size_t last, double inc, double azi) {
+    const io::SectionTable& t = *m_table;
+    HoleDirection previous(inc, azi), current = previous;
+    for (std::size_t i = first; i < last; ++i) {
+        const double devi = valueAt(t.devi_deg, i), hazi = valueAt(t.hazi_deg, i);
+        if (std::isfinite(devi)) inc = devi;
+        if (std::isfinite(hazi)) azi = hazi;
+        current.update(inc, azi);
+        PathPoint& p = m_path[i];
+        p = PathPoint{};
+        p.md = t.depth_m[i];
+        p.inc_deg = inc;
+        p.azi_deg = azi;
+        if (i > 0) {
+            const double mdBefore = t.depth_m[i - 1];
+            const MinimumCurvatureStep s = minimumCurvatureStep(mdBefore, previous, p.md, current);
+            p.north = s.dNorth;
+            p.east = s.dEast;
+            p.tvd = s.dTvd;
+            p.dogleg_deg = glm::degrees(s.dogleg_rad);
+            p.dls_degPer30m = doglegSeverity_degPer30m(p.dogleg_deg, p.md - mdBefore);
+        }
+        previous = current;
+    }
+}
+
+// Arm 1 per design section 3: P1AZ in near-vertical holes, RB from the high
+// side in steep ones (where P1AZ, a horizontal projection, loses precision) or
+// when P1AZ is missing; P1AZ when RB is missing. A row with neither keeps arm 1
+// north and is counted as unoriented.
+void WellGeometry::computeFrames(std::size_t first, std::size_t last) {
+    const io::SectionTable& t = *m_table;
+    HoleDirection direction(m_path[first].inc_deg, m_path[first].azi_deg);
+    for (std::size_t i = first; i < last; ++i) {
+        const double inc = m_path[i].inc_deg, azi = m_path[i].azi_deg;
+        direction.update(inc, azi);
+        const double p1az = valueAt(t.p1az_deg, i);
+        const double rb = valueAt(t.rb_deg, i);
+        const bool steep = inc > m_options.steepInclination_deg;
+        if (std::isfinite(rb) && (steep || !std::isfinite(p1az))) {
+            m_frames.set(i, frameFromRelativeBearing(direction, rb));
+            m_orientation[i] = Orientation::RelativeBearing;
+        } else {
+            m_frames.set(i, frameFromPadAzimuth(direction, std::isfinite(p1az) ? p1az : 0.0));
+            m_orientation[i] =
+                std::isfinite(p1az) ? Orientation::PadAzimuth : Orientation::Unoriented;
+        }
     }
 }
 

@@ -8,6 +8,7 @@
 #include <glm/vec3.hpp>
 
 #include "io/section_table.h"
+#include "reconstruction/fill_array.h"
 #include "reconstruction/mesh.h"
 #include "reconstruction/minimum_curvature.h"
 #include "reconstruction/periodic_spline.h"
@@ -32,6 +33,9 @@ struct GeometryOptions {
     // stuck or over-reaching arm) are treated as missing and interpolated.
     double minArmRadius_mm = 0.0;           // readings <= this are missing
     double maxArmRadius_mm = 1.0e9;         // the tool's reach; no limit by default
+    // Workers that compute the path and the section frames (the result does
+    // not depend on it).
+    int threads = 1;
 };
 
 // One segment's meshes, finest level first.
@@ -81,13 +85,15 @@ public:
     Ned centre(std::size_t row) const;
 
 private:
+    void computeSteps(std::size_t first, std::size_t last, double inc, double azi);
+    void computeFrames(std::size_t first, std::size_t last);
     void appendRing(Mesh& mesh, std::size_t row, bool spline) const;
     Mesh buildLevel(const std::vector<std::size_t>& rows, bool spline) const;
 
     std::shared_ptr<const io::SectionTable> m_table;
     GeometryOptions m_options;
     std::vector<PathPoint> m_path;
-    std::vector<SectionFrame> m_frames;
+    FillArray<SectionFrame> m_frames;  // constructed by the workers that compute them
     std::vector<Orientation> m_orientation;
     std::vector<std::pair<std::size_t, std::size_t>> m_segments;
     PeriodicSplineSampler m_sampler;

@@ -34,6 +34,16 @@ AxialStatistics axialStatistics(const std::vector<double>& angles_deg, const std
 std::vector<Zone> detectZones(const std::vector<double>& md, const std::vector<BoreholeClass>& classes,
                               const std::vector<double>& azimuth, const std::vector<double>& dmax,
                               const std::vector<double>& dmin) {
+    return detectZones(
+        classes, [&](std::size_t i) { return md[i]; }, [&](std::size_t i) { return azimuth[i]; },
+        [&](std::size_t i) { return dmax[i]; }, [&](std::size_t i) { return dmin[i]; });
+}
+
+std::vector<Zone> detectZones(const std::vector<BoreholeClass>& classes,
+                              const std::function<double(std::size_t)>& md,
+                              const std::function<double(std::size_t)>& azimuth,
+                              const std::function<double(std::size_t)>& dmax,
+                              const std::function<double(std::size_t)>& dmin) {
     std::vector<Zone> zones;
     std::size_t i = 0;
     const std::size_t n = classes.size();
@@ -48,20 +58,20 @@ std::vector<Zone> detectZones(const std::vector<double>& md, const std::vector<B
         z.kind = classes[i];
         z.firstSection = i;
         z.lastSection = j;
-        const double above = i > 0 ? (md[i] - md[i - 1]) / 2.0 : 0.0;
-        const double below = j + 1 < n ? (md[j + 1] - md[j]) / 2.0 : 0.0;
-        z.top_m = md[i] - above;
-        z.bottom_m = md[j] + below;
+        const double above = i > 0 ? (md(i) - md(i - 1)) / 2.0 : 0.0;
+        const double below = j + 1 < n ? (md(j + 1) - md(j)) / 2.0 : 0.0;
+        z.top_m = md(i) - above;
+        z.bottom_m = md(j) + below;
         z.length_m = z.bottom_m - z.top_m;
-        std::vector<double> angles(azimuth.begin() + static_cast<std::ptrdiff_t>(i),
-                                   azimuth.begin() + static_cast<std::ptrdiff_t>(j) + 1);
+        std::vector<double> angles(j - i + 1);
+        for (std::size_t k = i; k <= j; ++k) angles[k - i] = azimuth(k);
         const AxialStatistics st = axialStatistics(angles);
         z.meanAzimuth_deg = st.mean_deg;
         z.circularSd_deg = st.sd_deg;
         double sMax = 0.0, sMin = 0.0;
         for (std::size_t k = i; k <= j; ++k) {
-            sMax += dmax[k];
-            sMin += dmin[k];
+            sMax += dmax(k);
+            sMin += dmin(k);
         }
         z.meanDmax_mm = sMax / static_cast<double>(j - i + 1);
         z.meanDmin_mm = sMin / static_cast<double>(j - i + 1);

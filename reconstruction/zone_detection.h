@@ -1,5 +1,7 @@
 #pragma once
 
+#include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -38,6 +40,14 @@ struct Zone {
 std::vector<Zone> detectZones(const std::vector<double>& md_m, const std::vector<BoreholeClass>& classes,
                               const std::vector<double>& majorAzimuth_deg,
                               const std::vector<double>& dmax_mm, const std::vector<double>& dmin_mm);
+// The same for a caller that keeps its sections in another layout: the
+// functions give section i's values (asked only for sections in a zone and
+// their neighbours).
+std::vector<Zone> detectZones(const std::vector<BoreholeClass>& classes,
+                              const std::function<double(std::size_t)>& md_m,
+                              const std::function<double(std::size_t)>& majorAzimuth_deg,
+                              const std::function<double(std::size_t)>& dmax_mm,
+                              const std::function<double(std::size_t)>& dmin_mm);
 
 // World Stress Map quality of the breakouts of one well (Heidbach et al.
 // 2010, WSM Technical Report 16-01, table 2; also Zoback 2007, table 6.1):

@@ -58,3 +58,26 @@ TEST(MinimumCurvatureTest, DoglegSeverityPer30Metres) {
     EXPECT_DOUBLE_EQ(doglegSeverity_degPer30m(1.0, 10.0), 3.0);
     EXPECT_DOUBLE_EQ(doglegSeverity_degPer30m(1.0, 0.0), 0.0);
 }
+
+TEST(MinimumCurvatureTest, StepFromSinesAndCosinesIsTheStepFromAngles) {
+    const SurveyStation a{1000.0, 12.5, 359.0}, b{1000.0025, 12.5004, 0.25};
+    const MinimumCurvatureStep fromAngles = minimumCurvatureStep(a, b);
+    const MinimumCurvatureStep fromTrig = minimumCurvatureStep(
+        a.md, HoleDirection(a.inc_deg, a.azi_deg), b.md, HoleDirection(b.inc_deg, b.azi_deg));
+    EXPECT_EQ(fromTrig.dNorth, fromAngles.dNorth);
+    EXPECT_EQ(fromTrig.dEast, fromAngles.dEast);
+    EXPECT_EQ(fromTrig.dTvd, fromAngles.dTvd);
+    EXPECT_EQ(fromTrig.dogleg_rad, fromAngles.dogleg_rad);
+}
+
+TEST(MinimumCurvatureTest, HoleDirectionKeepsAnUnchangedAngleAndItsSignOfZero) {
+    HoleDirection d(0.0, 45.0);
+    d.update(-0.0, 45.0);  // sin(-0) is -0: a different value for the formulas
+    EXPECT_TRUE(std::signbit(d.sinInc));
+    d.update(30.0, 45.0);
+    EXPECT_EQ(d.sinInc, std::sin(glm::radians(30.0)));
+    EXPECT_EQ(d.cosAzi, std::cos(glm::radians(45.0)));
+    d.update(30.0, 46.0);
+    EXPECT_EQ(d.sinAzi, std::sin(glm::radians(46.0)));
+    EXPECT_EQ(d.cosInc, std::cos(glm::radians(30.0)));
+}

@@ -67,3 +67,18 @@ TEST(SectionFrameTest, SceneFrameIsEastUpSouth) {
     // Right-handed: east x up = south.
     EXPECT_EQ(glm::cross(east, -down), -north);
 }
+
+TEST(SectionFrameTest, FramesFromSinesAndCosinesAreTheFramesFromAngles) {
+    auto expectSame = [](const SectionFrame& a, const SectionFrame& b) {
+        EXPECT_EQ(a.tangent, b.tangent);
+        EXPECT_EQ(a.arm1, b.arm1);
+        EXPECT_EQ(a.side, b.side);
+    };
+    for (double inc : {0.0, 3.0, 45.0, 89.99999, 90.0}) {
+        const HoleDirection d(inc, 123.4);
+        expectSame(frameFromPadAzimuth(d, 271.3), frameFromPadAzimuth(inc, 123.4, 271.3));
+        expectSame(frameFromRelativeBearing(d, 33.0), frameFromRelativeBearing(inc, 123.4, 33.0));
+        EXPECT_EQ(highSide(d), highSide(inc, 123.4));
+        EXPECT_EQ(holeTangent(d), holeTangent(inc, 123.4));
+    }
+}

@@ -5,9 +5,12 @@
 #include <cmath>
 #include <memory>
 
+#include <cstring>
+
 #include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
 
+#include "reconstruction/section_analysis.h"
 #include "reconstruction/synthetic_well.h"
 
 using namespace caliper3d;
@@ -162,4 +165,202 @@ TEST(WellAnalysisTest, VolumesOfAGaugeHoleMatchTheCylinder) {
     EXPECT_NEAR(a.analysis.volume.gaugeHole_m3, cylinder, 1e-9);
     EXPECT_NEAR(a.analysis.volume.hole_m3, cylinder, cylinder * 0.003);  // inscribed 48-gon
     EXPECT_NEAR(a.analysis.volume.gaugeAnnulus_m3, cylinder - M_PI / 4 * 0.1778 * 0.1778 * 100.0, 1e-9);
+}
+
+namespace {
+
+// A well of several analysis blocks with every feature: breakout, washout,
+// key seat, undergauge, stuck and missing arms, null orientation readings.
+std::shared_ptr<const io::SectionTable> featureWell() {
+    auto spec = syntheticProfile("example", 60.0, 0.005);
+    using K = SyntheticFeature::Kind;
+    spec.features.push_back({K::Keyseat, 40.0, 45.0, 240.9, 215.9, 0.0, 12.5});
+    spec.features.push_back({K::Undergauge, 50.0, 52.0, 203.9, 203.9, 0.0, 0.0});
+    spec.kickoff_m = 10.0;
+    spec.buildRate_degPer30m = 12.0;
+    spec.stuckArm = 2;
+    spec.stuckTop_m = 20.0;
+    spec.stuckBottom_m = 21.0;
+    io::SectionTable t = makeSyntheticWell(spec);
+    for (std::size_t i = 0; i < t.rowCount(); i += 101) t.radii(i)[i % 6] = std::nan("");
+    for (std::size_t i = 3000; i < 3100; ++i) t.p1az_deg[i] = std::nan("");
+    for (std::size_t i = 3050; i < 3150; ++i) t.rb_deg[i] = std::nan("");
+    return std::make_shared<const io::SectionTable>(std::move(t));
+}
+
+bool same(double a, double b) {
+    return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+}  // namespace
+
+TEST(WellAnalysisTest, AnyNumberOfThreadsGivesTheSameResultsBitForBit) {
+    const auto table = featureWell();
+    const WellGeometry g(table, GeometryOptions{});
+    const WellAnalysis one = analyseWell(g, {});
+    ASSERT_GT(one.sections.size(), 2 * 4096u);  // three blocks
+    for (int threads : {2, 3}) {
+        AnalysisOptions options;
+        options.threads = threads;
+        const WellAnalysis many = analyseWell(g, options);
+        ASSERT_EQ(many.sections.size(), one.sections.size());
+        std::size_t differ = 0;
+        for (std::size_t i = 0; i < one.sections.size(); ++i) {
+            const SectionResult &a = one.sections[i], &b = many.sections[i];
+            const double fa[] = {a.md_m,
+                                 a.tvd_m,
+                                 a.north_m,
+                                 a.east_m,
+                                 a.inc_deg,
+                                 a.azi_deg,
+                                 a.dls_degPer30m,
+                                 a.bit_mm,
+                                 a.area_mm2,
+                                 a.equivalentDiameter_mm,
+                                 a.dmin_mm,
+                                 a.dmax_mm,
+                                 a.ellipticity,
+                                 a.majorAzimuth_deg,
+                                 a.majorFromHighSide_deg,
+                                 a.centreOffset_mm,
+                                 a.centreOffsetAzimuth_deg};
+            const double fb[] = {b.md_m,
+                                 b.tvd_m,
+                                 b.north_m,
+                                 b.east_m,
+                                 b.inc_deg,
+                                 b.azi_deg,
+                                 b.dls_degPer30m,
+                                 b.bit_mm,
+                                 b.area_mm2,
+                                 b.equivalentDiameter_mm,
+                                 b.dmin_mm,
+                                 b.dmax_mm,
+                                 b.ellipticity,
+                                 b.majorAzimuth_deg,
+                                 b.majorFromHighSide_deg,
+                                 b.centreOffset_mm,
+                                 b.centreOffsetAzimuth_deg};
+            for (int k = 0; k < 17; ++k) differ += same(fa[k], fb[k]) ? 0 : 1;
+            differ += a.repairedArms != b.repairedArms || a.cls != b.cls;
+        }
+        EXPECT_EQ(differ, 0u) << threads << " threads";
+        ASSERT_EQ(many.zones.size(), one.zones.size());
+        for (std::size_t z = 0; z < one.zones.size(); ++z) {
+            EXPECT_EQ(many.zones[z].firstSection, one.zones[z].firstSection);
+            EXPECT_EQ(many.zones[z].lastSection, one.zones[z].lastSection);
+            EXPECT_TRUE(same(many.zones[z].meanAzimuth_deg, one.zones[z].meanAzimuth_deg));
+            EXPECT_TRUE(same(many.zones[z].circularSd_deg, one.zones[z].circularSd_deg));
+        }
+        EXPECT_TRUE(same(many.volume.hole_m3, one.volume.hole_m3));
+        EXPECT_TRUE(same(many.volume.gaugeHole_m3, one.volume.gaugeHole_m3));
+        EXPECT_TRUE(same(many.padAzimuthOffset.mean_deg, one.padAzimuthOffset.mean_deg));
+        EXPECT_TRUE(same(many.padAzimuthOffset.sd_deg, one.padAzimuthOffset.sd_deg));
+        EXPECT_EQ(many.repairedSections, one.repairedSections);
+        EXPECT_EQ(many.repairedArms, one.repairedArms);
+        EXPECT_EQ(many.unorientedSections, one.unorientedSections);
+    }
+}
+
+TEST(WellAnalysisTest, ResultsAreTheOneSectionFunctionsResults) {
+    // Shape values bit for bit; world angles (dot products on the frame rather
+    // than angle round trips) to 1e-9 deg; classes, zones, volume and the P1AZ
+    // check exactly as the public functions give them from those values.
+    const auto table = featureWell();
+    const WellGeometry g(table, GeometryOptions{});
+    AnalysisOptions options;
+    options.threads = 2;
+    options.volume.casingOd_mm = 177.8;
+    const WellAnalysis a = analyseWell(g, options);
+    const SectionAnalyzer analyzer(table->armCount, 48);
+    std::vector<double> pads(static_cast<std::size_t>(table->armCount)), sampled(48);
+    std::vector<ClassifierInput> in;
+    std::vector<double> md, azimuth, dmax, dmin, area, bit;
+    std::size_t differ = 0;
+    auto axisDistance = [](double x, double y) {
+        const double d = std::fmod(std::abs(x - y), 180.0);
+        return std::min(d, 180.0 - d);
+    };
+    for (std::size_t i = 0; i < a.sections.size(); ++i) {
+        const SectionResult& r = a.sections[i];
+        EXPECT_EQ(r.repairedArms, g.repairRadii(i, pads.data()));
+        const SectionShape s = analyzer.analyse(pads.data(), sampled.data());
+        differ += !same(r.area_mm2, s.area_mm2) ||
+                  !same(r.equivalentDiameter_mm, s.equivalentDiameter_mm) ||
+                  !same(r.dmin_mm, s.dmin_mm) || !same(r.dmax_mm, s.dmax_mm) ||
+                  !same(r.ellipticity, s.ellipticity) ||
+                  !same(r.centreOffset_mm, s.centreOffset_mm);
+        const SectionFrame& f = g.frame(i);
+        const PathPoint& p = g.path()[i];
+        EXPECT_LT(axisDistance(r.majorAzimuth_deg, inPlaneAzimuth_deg(f, s.majorAngle_deg)), 1e-9)
+            << i;
+        EXPECT_LT(axisDistance(r.majorFromHighSide_deg,
+                               angleFromHighSide_deg(f, p.inc_deg, p.azi_deg, s.majorAngle_deg)),
+                  1e-9)
+            << i;
+        EXPECT_GE(r.majorFromHighSide_deg, 0.0);
+        EXPECT_LT(r.majorFromHighSide_deg, 180.0);
+        if (s.centreOffset_mm > 1e-6) {
+            const double expected =
+                inPlaneAzimuth_deg(f, glm::degrees(std::atan2(s.centroidV_mm, s.centroidU_mm)));
+            const double d = std::abs(r.centreOffsetAzimuth_deg - expected);
+            EXPECT_LT(std::min(d, 360.0 - d), 1e-9) << i;
+        }
+        const double p1az = table->p1az_deg[i];
+        in.push_back({r.md_m, r.dmin_mm, r.dmax_mm, r.bit_mm, r.inc_deg, r.majorFromHighSide_deg,
+                      std::isfinite(p1az) ? p1az : table->rb_deg[i]});
+        md.push_back(r.md_m);
+        azimuth.push_back(r.majorAzimuth_deg);
+        dmax.push_back(r.dmax_mm);
+        dmin.push_back(r.dmin_mm);
+        area.push_back(r.area_mm2);
+        bit.push_back(r.bit_mm);
+    }
+    EXPECT_EQ(differ, 0u);
+    const std::vector<BoreholeClass> classes = classifySections(in, options.rules);
+    std::size_t classDiffer = 0;
+    for (std::size_t i = 0; i < classes.size(); ++i) classDiffer += classes[i] != a.sections[i].cls;
+    EXPECT_EQ(classDiffer, 0u);
+    std::vector<BoreholeClass> kinds;
+    for (const Zone& z : a.zones) kinds.push_back(z.kind);
+    EXPECT_NE(std::find(kinds.begin(), kinds.end(), BoreholeClass::Keyseat), kinds.end());
+    EXPECT_NE(std::find(kinds.begin(), kinds.end(), BoreholeClass::Undergauge), kinds.end());
+    const std::vector<Zone> zones = detectZones(md, classes, azimuth, dmax, dmin);
+    ASSERT_EQ(a.zones.size(), zones.size());
+    for (std::size_t z = 0; z < zones.size(); ++z) {
+        EXPECT_EQ(a.zones[z].kind, zones[z].kind);
+        EXPECT_EQ(a.zones[z].firstSection, zones[z].firstSection);
+        EXPECT_EQ(a.zones[z].lastSection, zones[z].lastSection);
+        EXPECT_TRUE(same(a.zones[z].length_m, zones[z].length_m));
+        EXPECT_TRUE(same(a.zones[z].meanAzimuth_deg, zones[z].meanAzimuth_deg));
+        EXPECT_TRUE(same(a.zones[z].meanDmax_mm, zones[z].meanDmax_mm));
+    }
+    const HoleVolume v = holeVolume(md, area, bit, options.volume);
+    EXPECT_TRUE(same(a.volume.hole_m3, v.hole_m3));
+    EXPECT_TRUE(same(a.volume.gaugeHole_m3, v.gaugeHole_m3));
+    EXPECT_TRUE(same(a.volume.annulus_m3, v.annulus_m3));
+    EXPECT_TRUE(same(a.volume.cement_m3, v.cement_m3));
+    const OrientationOffset o = padAzimuthOffset(*table);
+    EXPECT_GT(o.samples, 1000u);
+    EXPECT_EQ(a.padAzimuthOffset.samples, o.samples);
+    EXPECT_TRUE(same(a.padAzimuthOffset.mean_deg, o.mean_deg));
+    EXPECT_TRUE(same(a.padAzimuthOffset.sd_deg, o.sd_deg));
+}
+
+TEST(WellAnalysisTest, WithoutAnyBitSizeTheMedianDiameterIsTheGaugeOnEveryThreadCount) {
+    io::SectionTable t = *featureWell();
+    t.bitSize_mm.clear();
+    const WellGeometry g(std::make_shared<const io::SectionTable>(std::move(t)), GeometryOptions{});
+    AnalysisOptions two;
+    two.threads = 2;
+    const WellAnalysis a = analyseWell(g, {}), b = analyseWell(g, two);
+    EXPECT_TRUE(a.bitSizeFromSections);
+    EXPECT_NEAR(a.sections.front().bit_mm, 215.9, 0.5);
+    EXPECT_GT(a.volume.gaugeHole_m3, 0.0);
+    ASSERT_EQ(a.zones.size(), b.zones.size());
+    for (std::size_t i = 0; i < a.sections.size(); ++i) {
+        ASSERT_EQ(a.sections[i].cls, b.sections[i].cls);
+        ASSERT_EQ(a.sections[i].bit_mm, b.sections[i].bit_mm);
+    }
+    EXPECT_TRUE(same(a.volume.gaugeHole_m3, b.volume.gaugeHole_m3));
 }

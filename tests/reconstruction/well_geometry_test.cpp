@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <memory>
+#include <vector>
 
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
@@ -80,4 +81,70 @@ TEST(WellGeometryTest, RadialExaggerationScalesTheDrawnRadiusOnly) {
     for (const glm::vec3& p : m.positions) EXPECT_NEAR(std::hypot(p.x, p.z), 20.0f * 0.21590f / 2, 1e-4f);
     for (double r : g.repairedRadii(3)) EXPECT_NEAR(r, 215.9 / 2, 1e-9);  // the data stay true
     EXPECT_NEAR(m.positions.back().y, -10.0f, 1e-4f);                    // and so does the path
+}
+
+namespace {
+// The path and frames computed the plain way: one station per row with nulls
+// carried forward, one sequential minimum-curvature pass, frames from the angles.
+void expectSequentialGeometry(const WellGeometry& g) {
+    const caliper3d::io::SectionTable& t = g.table();
+    std::vector<SurveyStation> stations(t.rowCount());
+    double inc = 0.0, azi = 0.0;
+    for (std::size_t i = 0; i < t.rowCount(); ++i) {
+        if (i < t.devi_deg.size() && std::isfinite(t.devi_deg[i])) inc = t.devi_deg[i];
+        if (i < t.hazi_deg.size() && std::isfinite(t.hazi_deg[i])) azi = t.hazi_deg[i];
+        stations[i] = {t.depth_m[i], inc, azi};
+    }
+    const std::vector<PathPoint> expected = minimumCurvaturePath(stations);
+    ASSERT_EQ(g.path().size(), expected.size());
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+        const PathPoint &p = g.path()[i], &q = expected[i];
+        differ += p.md != q.md || p.north != q.north || p.east != q.east || p.tvd != q.tvd ||
+                  p.inc_deg != q.inc_deg || p.azi_deg != q.azi_deg ||
+                  p.dogleg_deg != q.dogleg_deg || p.dls_degPer30m != q.dls_degPer30m;
+        const SectionFrame f =
+            g.orientation(i) == WellGeometry::Orientation::RelativeBearing
+                ? frameFromRelativeBearing(q.inc_deg, q.azi_deg, t.rb_deg[i])
+                : frameFromPadAzimuth(q.inc_deg, q.azi_deg,
+                                      std::isfinite(t.p1az_deg[i]) ? t.p1az_deg[i] : 0.0);
+        differ += f.tangent != g.frame(i).tangent || f.arm1 != g.frame(i).arm1 ||
+                  f.side != g.frame(i).side;
+    }
+    EXPECT_EQ(differ, 0u);  // bit for bit, not merely within 1e-9 m
+}
+}  // namespace
+
+TEST(WellGeometryTest, ParallelPathAndFramesAreTheSequentialOnesBitForBit) {
+    // 13 blocks of rows; nulls in DEVI and HAZI across a block boundary and at the top.
+    auto spec = syntheticProfile("example", 120.0, 0.0025);
+    spec.kickoff_m = 5.0;
+    spec.turnRate_degPer30m = 2.0;
+    auto table = makeSyntheticWell(spec);
+    for (std::size_t i = 0; i < 10; ++i) table.devi_deg[i] = std::nan("");
+    for (std::size_t i = 4000; i < 8300; ++i) table.devi_deg[i] = table.hazi_deg[i] = std::nan("");
+    for (std::size_t i = 20000; i < 30000; i += 3) table.rb_deg[i] = std::nan("");
+    auto shared = std::make_shared<const caliper3d::io::SectionTable>(table);
+    GeometryOptions options;
+    options.steepInclination_deg = 2.0;  // frames from RB, and from P1AZ where RB is null
+    for (int threads : {1, 2, 3}) {
+        options.threads = threads;
+        const WellGeometry g(shared, options);
+        expectSequentialGeometry(g);
+    }
+}
+
+TEST(WellGeometryTest, PathFromASurveyGetsItsFramesInParallelToo) {
+    auto table = std::make_shared<const caliper3d::io::SectionTable>(
+        makeSyntheticWell(syntheticProfile("circle", 30.0, 0.0025)));
+    GeometryOptions options;
+    options.survey = {{0.0, 0.0, 0.0}, {10.0, 5.0, 30.0}, {30.0, 20.0, 40.0}};
+    const WellGeometry one(table, options);
+    options.threads = 2;
+    const WellGeometry two(table, options);
+    for (std::size_t i = 0; i < table->rowCount(); ++i) {
+        ASSERT_EQ(one.path()[i].tvd, two.path()[i].tvd);
+        ASSERT_EQ(one.frame(i).arm1, two.frame(i).arm1);
+        ASSERT_EQ(one.frame(i).tangent, holeTangent(one.path()[i].inc_deg, one.path()[i].azi_deg));
+    }
 }
