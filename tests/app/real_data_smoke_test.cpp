@@ -82,8 +82,9 @@ TEST(RealDataSmokeTest, InfoDescribesEveryReferenceFile) {
             EXPECT_EQ(r.status, 0) << r.output;
             EXPECT_EQ(r.output.rfind("file:      " + path + "\nformat:    ", 0), 0u) << r.output;
             EXPECT_NE(r.output.find("\nwarnings:  "), std::string::npos) << r.output;
-            if (std::string(folder) == "surveys")
+            if (std::string(folder) == "surveys") {
                 EXPECT_NE(r.output.find("format:    deviation survey"), std::string::npos) << r.output;
+            }
             ++described;
         }
     }

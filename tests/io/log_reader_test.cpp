@@ -220,7 +220,9 @@ TEST(LogReaderTest, InfoDescribesEveryReferenceFileOrSaysWhyNot) {
             EXPECT_FALSE(info.curves.empty());
             EXPECT_EQ(info.survey, std::string(folder) == "surveys");
             surveys += info.survey;
-            if (formats.count(name)) EXPECT_EQ(info.format, formats.at(name));
+            if (formats.count(name)) {
+                EXPECT_EQ(info.format, formats.at(name));
+            }
             EXPECT_FALSE(formatLogInfo(info).empty());
         }
     }
