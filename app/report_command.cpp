@@ -53,8 +53,9 @@ int runReport(const QStringList& args) {
             {"step",
              "One row every this many metres (the nearest section; default: every section).",
              "METRES", "0"});
-        p.addOption({"zones", "Also write the zone table (CSV).", "ZONES"});
-        p.addOption({"las", "Also write the computed curves as LAS 2.0.", "OUT.las"});
+        p.addOption({"zones", "Also write the zone table (CSV; '-' for standard output).", "ZONES"});
+        p.addOption({"las", "Also write the computed curves as LAS 2.0 ('-' for standard output).",
+                     "OUT.las"});
         p.addOption(
             {"casing-od", "Casing outer diameter for the annular volumes (e.g. 7in).", "LENGTH"});
         p.addOption({"excess", "Cement excess as a fraction (0.3 = 30 %; default 0).", "F", "0"});
@@ -115,16 +116,28 @@ int runReport(const QStringList& args) {
             table, geometryOptions(options, well, sceneOrigin({well})));
         const reconstruction::WellAnalysis result = reconstruction::analyseWell(geometry, analysis);
 
+        // Each output goes to its file, or to standard output for '-' (one of them at most).
         const std::string out = verb.value("output");
-        const bool toStdout = out == "-";
-        if (toStdout)
+        const std::string zones = verb.isSet("zones") ? verb.value("zones") : std::string();
+        const std::string las = verb.isSet("las") ? verb.value("las") : std::string();
+        const int dashes = (out == "-") + (zones == "-") + (las == "-");
+        if (dashes > 1)
+            throw UsageError("caliper3d report: only one of -o, --zones and --las can be '-'");
+        const bool toStdout = dashes == 1;
+        const std::string wellName = std::filesystem::path(well.path).stem().string();
+        if (out == "-")
             reconstruction::writeSectionReport(std::cout, result, report);
         else
             reconstruction::writeSectionReport(out, result, report);
-        if (verb.isSet("zones")) reconstruction::writeZoneReport(verb.value("zones"), result);
-        if (verb.isSet("las"))
-            reconstruction::writeAnalysisLas(verb.value("las"), result, report,
-                                             std::filesystem::path(well.path).stem().string());
+        if (zones == "-")
+            reconstruction::writeZoneReport(std::cout, result);
+        else if (!zones.empty())
+            reconstruction::writeZoneReport(zones, result);
+        if (las == "-")
+            reconstruction::writeAnalysisLas(std::cout, result, report, wellName);
+        else if (!las.empty())
+            reconstruction::writeAnalysisLas(las, result, report, wellName);
+        std::cout.flush();
 
         // With the report on standard output, everything else goes to standard error.
         FILE* info = toStdout ? stderr : stdout;
@@ -134,7 +147,8 @@ int runReport(const QStringList& args) {
                      well.surveyPath.empty() ? "" : (", path from " + well.surveyPath).c_str());
         std::fputs(reconstruction::formatAnalysisSummary(result).c_str(), info);
         printWarnings(diagnostics);
-        if (!toStdout) std::printf("wrote %s\n", out.c_str());
+        for (const std::string& written : {out, zones, las})
+            if (!written.empty() && written != "-") std::fprintf(info, "wrote %s\n", written.c_str());
         return kExitOk;
     });
 }

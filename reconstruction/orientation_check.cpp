@@ -51,7 +51,7 @@ OrientationOffset padAzimuthOffset(const PadAzimuthSums& sums) {
     out.mean_deg = glm::degrees(std::atan2(sums.sinSum, sums.cosSum));
     const double r =
         std::min(1.0, std::hypot(sums.cosSum, sums.sinSum) / static_cast<double>(out.samples));
-    out.sd_deg = r > 0.0 ? glm::degrees(std::sqrt(-2.0 * std::log(r))) : 180.0;
+    out.sd_deg = r > 0.0 ? glm::degrees(std::sqrt(std::max(0.0, -2.0 * std::log(r)))) : 180.0;  // r = 1 gives 0, not -0
     return out;
 }
 

@@ -48,6 +48,7 @@ struct WorldAngles {
 // other end from a formula that rounds differently; there the original
 // formulas decide, so that the report prints what they give.
 constexpr double kSeam_deg = 1e-9;
+constexpr double kUndefinedBelow_mm = 0.01;
 bool nearSeam(double a, double period) {
     return a < kSeam_deg || a > period - kSeam_deg;
 }
@@ -58,32 +59,42 @@ bool nearSeam(double a, double period) {
 // trigonometry; one atan2 per angle remains.
 WorldAngles worldAngles(const SectionFrame& f, const PathPoint& p, const BatchShape& s) {
     WorldAngles out;
-    // Azimuth of the horizontal projection; none within 0.06 deg of vertical
-    // (projection of the unit vector shorter than 1e-3).
-    const Ned major = s.majorU * f.arm1 + s.majorV * f.side;
-    const double az =
-        major.x * major.x + major.y * major.y < 1e-6 ? std::nan("") : azimuthOf(major.y, major.x);
-    out.majorAzimuth_deg = std::isfinite(az) ? axial(az) : az;
-    if (nearSeam(out.majorAzimuth_deg, 180.0)) {
-        const double exact = inPlaneAzimuth_deg(f, majorAngle_deg(s));
-        out.majorAzimuth_deg = std::isfinite(exact) ? std::fmod(exact, 180.0) : exact;
+    // A round section has no major axis, and a centred tool no offset
+    // direction: what the fit gives there is the direction of rounding noise.
+    // Below a hundredth of a millimetre (what the report prints) both are NaN.
+    const bool round = !(s.dmax_mm - s.dmin_mm >= kUndefinedBelow_mm);
+    const bool centred = !(s.centreOffset_mm >= kUndefinedBelow_mm);
+    out.majorAzimuth_deg = out.majorFromHighSide_deg = out.centreOffsetAzimuth_deg = std::nan("");
+    if (!round) {
+        // Azimuth of the horizontal projection; none within 0.06 deg of vertical
+        // (projection of the unit vector shorter than 1e-3).
+        const Ned major = s.majorU * f.arm1 + s.majorV * f.side;
+        const double az = major.x * major.x + major.y * major.y < 1e-6
+                              ? std::nan("")
+                              : azimuthOf(major.y, major.x);
+        out.majorAzimuth_deg = std::isfinite(az) ? axial(az) : az;
+        if (nearSeam(out.majorAzimuth_deg, 180.0)) {
+            const double exact = inPlaneAzimuth_deg(f, majorAngle_deg(s));
+            out.majorAzimuth_deg = std::isfinite(exact) ? std::fmod(exact, 180.0) : exact;
+        }
+
+        // The high side is (cos i cos a, cos i sin a, -sin i) = (t_z t_x, t_z t_y,
+        // -(t_x^2 + t_y^2)) / sin i for the tangent t = (sin i cos a, sin i sin a,
+        // cos i): atan2 needs no normalisation, and the sign of sin i can only turn
+        // the angle by 180 deg, which an axis ignores. North in a vertical hole.
+        const Ned& t = f.tangent;
+        const double horizontal2 = t.x * t.x + t.y * t.y;
+        const Ned highSide =
+            horizontal2 < 1e-24 ? Ned(1.0, 0.0, 0.0) : Ned(t.z * t.x, t.z * t.y, -horizontal2);
+        const Ned right = glm::cross(t, highSide);
+        out.majorFromHighSide_deg =
+            axial(azimuthOf(glm::dot(major, right), glm::dot(major, highSide)));
+        if (nearSeam(out.majorFromHighSide_deg, 180.0))
+            out.majorFromHighSide_deg =
+                std::fmod(angleFromHighSide_deg(f, p.inc_deg, p.azi_deg, majorAngle_deg(s)), 180.0);
     }
 
-    // The high side is (cos i cos a, cos i sin a, -sin i) = (t_z t_x, t_z t_y,
-    // -(t_x^2 + t_y^2)) / sin i for the tangent t = (sin i cos a, sin i sin a,
-    // cos i): atan2 needs no normalisation, and the sign of sin i can only turn
-    // the angle by 180 deg, which an axis ignores. North in a vertical hole.
-    const Ned& t = f.tangent;
-    const double horizontal2 = t.x * t.x + t.y * t.y;
-    const Ned highSide =
-        horizontal2 < 1e-24 ? Ned(1.0, 0.0, 0.0) : Ned(t.z * t.x, t.z * t.y, -horizontal2);
-    const Ned right = glm::cross(t, highSide);
-    out.majorFromHighSide_deg = axial(azimuthOf(glm::dot(major, right), glm::dot(major, highSide)));
-    if (nearSeam(out.majorFromHighSide_deg, 180.0))
-        out.majorFromHighSide_deg =
-            std::fmod(angleFromHighSide_deg(f, p.inc_deg, p.azi_deg, majorAngle_deg(s)), 180.0);
-
-    if (s.centreOffset_mm > 0.0) {
+    if (!centred) {
         const Ned c = s.centroidU_mm * f.arm1 + s.centroidV_mm * f.side;  // length centreOffset_mm
         out.centreOffsetAzimuth_deg =
             c.x * c.x + c.y * c.y < 1e-6 * s.centreOffset_mm * s.centreOffset_mm

@@ -1,5 +1,6 @@
 #include "reconstruction/zone_detection.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/trigonometric.hpp>
@@ -27,7 +28,7 @@ AxialStatistics axialStatistics(const std::vector<double>& angles_deg, const std
     if (mean >= 180.0) mean -= 180.0;
     out.mean_deg = mean;
     const double r = std::min(1.0, std::hypot(c, s) / w);
-    out.sd_deg = r > 0.0 ? glm::degrees(std::sqrt(-2.0 * std::log(r))) / 2.0 : 90.0;
+    out.sd_deg = r > 0.0 ? glm::degrees(std::sqrt(std::max(0.0, -2.0 * std::log(r)))) / 2.0 : 90.0;  // r = 1 gives 0, not -0
     return out;
 }
 

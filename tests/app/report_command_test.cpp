@@ -160,6 +160,22 @@ TEST(ReportCommandTest, WellheadLasAndStandardOutput) {
     EXPECT_EQ(first, "~Version information");
 }
 
+TEST(ReportCommandTest, ZoneTableOnStandardOutputAndOnlyOneDash) {
+    // The washout profile: one washout zone over 0.4-0.6 L, a circle with no major axis.
+    const std::string log = synth("washout", 100.0, 0.5);
+    const auto csv = scratch("report_zones_stdout.csv");
+    const CommandRun r = runCaliper3d("report " + log + " -o " + csv.string() + " --zones -", false);
+    ASSERT_EQ(r.status, 0) << r.output;
+    std::istringstream in(r.output);
+    const Csv zones = parseCsv(in);
+    ASSERT_EQ(zones.rows.size(), 1u) << r.output;
+    EXPECT_EQ(zones.rows[0].at("kind"), "washout");
+    EXPECT_NEAR(zones.number(0, "top_m"), 40.0, 0.5);
+    EXPECT_EQ(zones.rows[0].at("mean_azimuth_deg"), "");  // round: no azimuth to average
+    EXPECT_TRUE(std::filesystem::exists(csv));
+    EXPECT_EQ(runCaliper3d("report " + log + " -o - --zones -").status, 2);
+}
+
 TEST(ReportCommandTest, BadSurveyIsBadInputNamingItsFileAndLine) {
     const std::string log = synth("circle", 20.0, 0.5);
     const auto survey = scratch("report_bad_survey.csv");

@@ -81,6 +81,14 @@ TEST(WellAnalysisTest, WashoutAndUndergaugeZonesSitWhereTheyWereMade) {
     EXPECT_EQ(w.analysis.zones[0].kind, BoreholeClass::Washout);
     EXPECT_NEAR(w.analysis.zones[0].top_m, 40.0, 0.05);
     EXPECT_NEAR(w.analysis.zones[0].bottom_m, 60.0, 0.05);
+    // Round sections (a circle everywhere): no major axis, so the zone has no
+    // mean azimuth either, and a centred tool no offset direction.
+    EXPECT_TRUE(std::isnan(w.analysis.zones[0].meanAzimuth_deg));
+    for (const SectionResult& r : w.analysis.sections) {
+        EXPECT_TRUE(std::isnan(r.majorAzimuth_deg)) << r.md_m;
+        EXPECT_TRUE(std::isnan(r.majorFromHighSide_deg)) << r.md_m;
+        EXPECT_TRUE(std::isnan(r.centreOffsetAzimuth_deg)) << r.md_m;
+    }
     const Analysed u = analyse("undergauge");
     ASSERT_EQ(u.analysis.zones.size(), 1u);
     EXPECT_EQ(u.analysis.zones[0].kind, BoreholeClass::Undergauge);
@@ -292,19 +300,27 @@ TEST(WellAnalysisTest, ResultsAreTheOneSectionFunctionsResults) {
                   !same(r.centreOffset_mm, s.centreOffset_mm);
         const SectionFrame& f = g.frame(i);
         const PathPoint& p = g.path()[i];
-        EXPECT_LT(axisDistance(r.majorAzimuth_deg, inPlaneAzimuth_deg(f, s.majorAngle_deg)), 1e-9)
-            << i;
-        EXPECT_LT(axisDistance(r.majorFromHighSide_deg,
-                               angleFromHighSide_deg(f, p.inc_deg, p.azi_deg, s.majorAngle_deg)),
-                  1e-9)
-            << i;
-        EXPECT_GE(r.majorFromHighSide_deg, 0.0);
-        EXPECT_LT(r.majorFromHighSide_deg, 180.0);
-        if (s.centreOffset_mm > 1e-6) {
+        // Round (to a hundredth of a millimetre): no major axis; centred: no offset direction.
+        if (s.dmax_mm - s.dmin_mm < 0.01) {
+            EXPECT_TRUE(std::isnan(r.majorAzimuth_deg)) << i;
+            EXPECT_TRUE(std::isnan(r.majorFromHighSide_deg)) << i;
+        } else {
+            EXPECT_LT(axisDistance(r.majorAzimuth_deg, inPlaneAzimuth_deg(f, s.majorAngle_deg)), 1e-9)
+                << i;
+            EXPECT_LT(axisDistance(r.majorFromHighSide_deg,
+                                   angleFromHighSide_deg(f, p.inc_deg, p.azi_deg, s.majorAngle_deg)),
+                      1e-9)
+                << i;
+            EXPECT_GE(r.majorFromHighSide_deg, 0.0);
+            EXPECT_LT(r.majorFromHighSide_deg, 180.0);
+        }
+        if (s.centreOffset_mm >= 0.01) {
             const double expected =
                 inPlaneAzimuth_deg(f, glm::degrees(std::atan2(s.centroidV_mm, s.centroidU_mm)));
             const double d = std::abs(r.centreOffsetAzimuth_deg - expected);
             EXPECT_LT(std::min(d, 360.0 - d), 1e-9) << i;
+        } else {
+            EXPECT_TRUE(std::isnan(r.centreOffsetAzimuth_deg)) << i;
         }
         const double p1az = table->p1az_deg[i];
         in.push_back({r.md_m, r.dmin_mm, r.dmax_mm, r.bit_mm, r.inc_deg, r.majorFromHighSide_deg,
