@@ -19,7 +19,7 @@ namespace {
 // The table is filled once, front to back, right after it is reserved: where
 // Linux gives transparent huge pages on request, take them, so that filling
 // 100+ MiB takes 512 times fewer page faults (about a tenth of the reading
-// time of the 4 km well, docs/benchmarks-io.md). Harmless where declined.
+// time of the 4 km well, docs/benchmarks.md, "Reading logs"). Harmless where declined.
 void reserveFilledOnce(std::vector<double>& v, std::size_t n) {
     v.reserve(n);
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
