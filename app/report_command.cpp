@@ -53,7 +53,8 @@ int runReport(const QStringList& args) {
             {"step",
              "One row every this many metres (the nearest section; default: every section).",
              "METRES", "0"});
-        p.addOption({"zones", "Also write the zone table (CSV; '-' for standard output).", "ZONES"});
+        p.addOption(
+            {"zones", "Also write the zone table (CSV; '-' for standard output).", "ZONES"});
         p.addOption({"las", "Also write the computed curves as LAS 2.0 ('-' for standard output).",
                      "OUT.las"});
         p.addOption(
@@ -148,7 +149,8 @@ int runReport(const QStringList& args) {
         std::fputs(reconstruction::formatAnalysisSummary(result).c_str(), info);
         printWarnings(diagnostics);
         for (const std::string& written : {out, zones, las})
-            if (!written.empty() && written != "-") std::fprintf(info, "wrote %s\n", written.c_str());
+            if (!written.empty() && written != "-")
+                std::fprintf(info, "wrote %s\n", written.c_str());
         return kExitOk;
     });
 }

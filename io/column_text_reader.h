@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "io/diagnostics.h"
@@ -11,8 +12,10 @@ namespace caliper3d::io {
 // The reference tool's plain column text: per line
 //   depth R1 .. RN P1AZ DEVI HAZI
 // separated by spaces or tabs, decimal point or decimal comma. Blank lines and
-// lines starting with '#' are skipped; CRLF line ends are accepted; a first
-// line of names (no number on it) is skipped.
+// lines starting with '#' are skipped; CRLF line ends are accepted. A line of
+// names with one name per column (or a '#' line of them right before the data,
+// starting with a depth) names the columns instead: "depth_m R1_in ... GR"
+// (docs/formats.md). Refuses LAS and other formats (ParseError).
 //
 // Multi-finger tools often write only the finger radii: a file whose lines all
 // hold kMinRadiiOnlyColumns or more numbers, but not armCount + 4, is read as
@@ -20,8 +23,9 @@ namespace caliper3d::io {
 struct ColumnTextOptions {
     static constexpr int kMinRadiiOnlyColumns = 8;
     int armCount = 6;
-    LengthUnit depthUnit = LengthUnit::Metre;
-    LengthUnit radiusUnit = LengthUnit::Inch;
+    std::optional<LengthUnit> depthUnit;   // overrides the names' units; default metres
+    std::optional<LengthUnit> radiusUnit;  // overrides the names' units; default inches
+                                           //   (millimetres when inches would be implausible)
     bool allowRadiiOnly = true;
     double rowStep_m = 0.01;
 };

@@ -8,8 +8,12 @@
 
 namespace caliper3d::io {
 
-// Writes the reference tool's column text (depth R1..RN P1AZ DEVI HAZI),
-// depth in metres and radii in `radiusUnit`, with a '#' header comment.
+// Writes column text in the reference layout (depth R1..RN P1AZ DEVI HAZI)
+// followed by RB, BS and every extra curve the table has, under a line of
+// names with units ("depth_m R1_in ... BS_in GR[gAPI]"); depth in metres,
+// radii and bit size in `radiusUnit`, angles in degrees, NaN as "nan". A curve
+// the table lacks is left out, never written as zeros. The readers read it
+// back to the same table.
 void writeColumnText(std::ostream& out, const SectionTable& table,
                      LengthUnit radiusUnit = LengthUnit::Inch);
 void writeColumnTextFile(const std::string& path, const SectionTable& table,

@@ -24,7 +24,9 @@ std::string upper(std::string_view s) {
 
 double angleScaleOf(const std::string& unit) {
     const std::string u = upper(unit);
-    if (u.empty() || u == "DEG" || u == "DEGA" || u == "DEGREES" || u == "DEGREE" || u == "\xC2\xB0") return 1.0;
+    if (u.empty() || u == "DEG" || u == "DEGA" || u == "DEGREES" || u == "DEGREE" ||
+        u == "\xC2\xB0")
+        return 1.0;
     if (u == "RAD" || u == "RADIANS") return 180.0 / kPi;
     return std::nan("");
 }
@@ -42,12 +44,15 @@ SectionTable CurvePlan::emptyTable(const std::vector<ColumnSpec>& columns) const
 void CurvePlan::mapRow(const double* raw, SectionTable& out) const {
     out.depth_m.push_back(raw[depthColumn] * depthScale);
     for (int k = 0; k < armCount; ++k)
-        out.radius_mm.push_back(raw[armColumn[static_cast<std::size_t>(k)]] * armScale[static_cast<std::size_t>(k)]);
+        out.radius_mm.push_back(raw[armColumn[static_cast<std::size_t>(k)]] *
+                                armScale[static_cast<std::size_t>(k)]);
     std::vector<double>* angles[4] = {&out.p1az_deg, &out.devi_deg, &out.hazi_deg, &out.rb_deg};
     for (int a = 0; a < 4; ++a)
         if (angleColumn[a] >= 0) angles[a]->push_back(raw[angleColumn[a]] * angleScale[a]);
-    if (bitSizeColumn >= 0) out.bitSize_mm.push_back(raw[bitSizeColumn] * bitSizeScale);
-    else if (!std::isnan(bitSizeConstant)) out.bitSize_mm.push_back(bitSizeConstant);
+    if (bitSizeColumn >= 0)
+        out.bitSize_mm.push_back(raw[bitSizeColumn] * bitSizeScale);
+    else if (!std::isnan(bitSizeConstant))
+        out.bitSize_mm.push_back(bitSizeConstant);
     for (std::size_t e = 0; e < extraColumns.size(); ++e)
         out.extraCurves[e].values.push_back(raw[extraColumns[e]]);
 }
@@ -73,27 +78,30 @@ CurvePlan makeCurvePlan(const std::vector<ColumnSpec>& columns, const LasHeader*
     if (depthUnitText.empty() && header)
         if (const LasItem* strt = header->wellItem("STRT")) depthUnitText = strt->unit;
     info.depthUnit = depthUnitText;
-    std::optional<LengthUnit> depthUnit = options.depthUnit ? options.depthUnit : parseLengthUnit(depthUnitText);
+    std::optional<LengthUnit> depthUnit =
+        options.depthUnit ? options.depthUnit : parseLengthUnit(depthUnitText);
     if (!depthUnit) {
         if (!depthUnitText.empty())
             throw ParseError(file, depth.line, 0,
-                             "expected a depth unit M or FT for " + depth.mnemonic + ", found '" + depthUnitText +
-                                 "' (or give --depth-unit)");
-        diagnostics.warn(file, depth.line, "depth has no unit; read as metres (give --depth-unit to change)");
+                             "expected a depth unit M or FT for " + depth.mnemonic + ", found '" +
+                                 depthUnitText + "' (or give --depth-unit)");
+        diagnostics.warn(file, depth.line,
+                         "depth has no unit; read as metres (give --depth-unit to change)");
         depthUnit = LengthUnit::Metre;
     }
     plan.depthScale = toMetres(*depthUnit);
     for (std::size_t c = 0; c < columns.size(); ++c)
-        if (static_cast<int>(c) != roles.depth && guessRole(columns[c].mnemonic).role == CurveRole::Depth &&
-            !columns[c].text)
+        if (static_cast<int>(c) != roles.depth &&
+            guessRole(columns[c].mnemonic).role == CurveRole::Depth && !columns[c].text)
             plan.otherDepthColumns.push_back(static_cast<int>(c));
 
     auto lengthScale = [&](int c) {
         if (options.radiusUnit) return toMillimetres(*options.radiusUnit);
         if (auto u = parseLengthUnit(spec(c).unit)) return toMillimetres(*u);
         throw ParseError(file, spec(c).line, 0,
-                         "expected a length unit IN, MM or CM for caliper curve " + spec(c).mnemonic + ", found '" +
-                             spec(c).unit + "' (or give --radius-unit)");
+                         "expected a length unit IN, MM or CM for caliper curve " +
+                             spec(c).mnemonic + ", found '" + spec(c).unit +
+                             "' (or give --radius-unit)");
     };
 
     if (!roles.radii.empty()) {
@@ -115,24 +123,27 @@ CurvePlan makeCurvePlan(const std::vector<ColumnSpec>& columns, const LasHeader*
         info.armSource = "diameters";
         for (int c : roles.diameters) info.armSource += " " + spec(c).mnemonic;
         info.armSource += " (pad pairs; the tool is taken as centred)";
-        diagnostics.warn(file, spec(roles.diameters.front()).line,
-                         "radii from opposite-pad diameters: each pad pair is taken as centred on the tool");
+        diagnostics.warn(
+            file, spec(roles.diameters.front()).line,
+            "radii from opposite-pad diameters: each pad pair is taken as centred on the tool");
     } else {
         info.armSource = "none: no caliper curves found (name them with --radii or --diameters)";
     }
     plan.armCount = static_cast<int>(plan.armColumn.size());
     if (plan.armCount > 0 && plan.armCount < 3)
-        throw ParseError(file, 0, 0, "expected at least 3 arm radii, found " + std::to_string(plan.armCount));
+        throw ParseError(file, 0, 0,
+                         "expected at least 3 arm radii, found " + std::to_string(plan.armCount));
 
-    const int angleRoles[4] = {roles.padAzimuth, roles.deviation, roles.holeAzimuth, roles.relativeBearing};
+    const int angleRoles[4] = {roles.padAzimuth, roles.deviation, roles.holeAzimuth,
+                               roles.relativeBearing};
     for (int a = 0; a < 4; ++a) {
         const int c = angleRoles[a];
         if (c < 0) continue;
         const double scale = angleScaleOf(spec(c).unit);
         if (!std::isfinite(scale))
             throw ParseError(file, spec(c).line, 0,
-                             "expected an angle unit DEG or RAD for " + spec(c).mnemonic + ", found '" + spec(c).unit +
-                                 "'");
+                             "expected an angle unit DEG or RAD for " + spec(c).mnemonic +
+                                 ", found '" + spec(c).unit + "'");
         plan.angleColumn[a] = c;
         plan.angleScale[a] = scale;
     }
@@ -150,7 +161,8 @@ CurvePlan makeCurvePlan(const std::vector<ColumnSpec>& columns, const LasHeader*
             if (!bs || !parseNumber(bs->value, v)) continue;
             const auto unit = parseLengthUnit(bs->unit);
             if (!unit) {
-                diagnostics.warn(file, bs->line, "bit size " + bs->value + " has no length unit; ignored");
+                diagnostics.warn(file, bs->line,
+                                 "bit size " + bs->value + " has no length unit; ignored");
                 break;
             }
             plan.bitSizeConstant = v * toMillimetres(*unit);
@@ -162,18 +174,44 @@ CurvePlan makeCurvePlan(const std::vector<ColumnSpec>& columns, const LasHeader*
     for (std::size_t c = 0; c < columns.size(); ++c) {
         const ColumnSpec& col = columns[c];
         CurveRole role = roles.roleOf(static_cast<int>(c));
-        if (role == CurveRole::Radius && guessRole(col.mnemonic).role == CurveRole::Finger) role = CurveRole::Finger;
-        const bool secondDepth = std::find(plan.otherDepthColumns.begin(), plan.otherDepthColumns.end(),
-                                           static_cast<int>(c)) != plan.otherDepthColumns.end();
+        if (role == CurveRole::Radius && guessRole(col.mnemonic).role == CurveRole::Finger)
+            role = CurveRole::Finger;
+        const bool secondDepth =
+            std::find(plan.otherDepthColumns.begin(), plan.otherDepthColumns.end(),
+                      static_cast<int>(c)) != plan.otherDepthColumns.end();
         info.curves.push_back({col.mnemonic, col.unit,
-                               col.text ? "text (skipped)"
-                                        : secondDepth ? "second depth (checked against the index)"
-                                                      : std::string(roleName(role)),
+                               col.text      ? "text (skipped)"
+                               : secondDepth ? "second depth (checked against the index)"
+                                             : std::string(roleName(role)),
                                0});
-        if (role == CurveRole::Other && !col.text && guessRole(col.mnemonic).role != CurveRole::Depth)
+        if (role == CurveRole::Other && !col.text &&
+            guessRole(col.mnemonic).role != CurveRole::Depth)
             plan.extraColumns.push_back(static_cast<int>(c));
     }
     return plan;
+}
+
+namespace {
+std::string_view trimmed(std::string_view s) {
+    while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+    while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+    return s;
+}
+}  // namespace
+
+std::pair<std::string_view, std::string_view> splitColumnName(std::string_view name) {
+    for (auto [open, close] : {std::pair<char, char>{'(', ')'}, {'[', ']'}}) {
+        const std::size_t o = name.find(open);
+        if (o != std::string_view::npos && o > 0 && name.back() == close)
+            return {name.substr(0, o), trimmed(name.substr(o + 1, name.size() - o - 2))};
+    }
+    const std::size_t u = name.rfind('_');
+    if (u != std::string_view::npos && u > 0 && u + 1 < name.size()) {
+        const std::string_view unit = name.substr(u + 1);
+        if (parseLengthUnit(unit) || std::isfinite(angleScaleOf(std::string(unit))))
+            return {name.substr(0, u), unit};
+    }
+    return {name, {}};
 }
 
 }  // namespace caliper3d::io

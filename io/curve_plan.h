@@ -2,6 +2,8 @@
 
 #include <cstddef>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "io/diagnostics.h"
@@ -53,6 +55,11 @@ struct CurvePlan {
 CurvePlan makeCurvePlan(const std::vector<ColumnSpec>& columns, const LasHeader* header,
                         const ReadOptions& options, const std::string& file, LogInfo& info,
                         Diagnostics& diagnostics);
+
+// A column name of column text as mnemonic and unit: "R1_in", "BS(mm)",
+// "DEVI[deg]" and "DEPTH" (no unit). A suffix after the last '_' is a unit only
+// when it is a length or angle unit we know, so that "GR_API" or "RAD1_QH" stay whole.
+std::pair<std::string_view, std::string_view> splitColumnName(std::string_view name);
 
 // Factor to degrees for an angle unit (empty, DEG, RAD, ...); NaN when not an angle.
 double angleScaleOf(const std::string& unit);

@@ -185,12 +185,16 @@ std::string formatLogInfo(const LogInfo& info) {
             std::count_if(s.begin(), s.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
     };
     std::size_t width = 12;  // long survey column names ("Measured Depth ( ft )") widen the name column
-    for (const CurveInfo& c : info.curves) width = std::max(width, shown(c.mnemonic));
+    std::size_t unitWidth = 8;  // "in (assumed)" widens the unit column
+    for (const CurveInfo& c : info.curves) {
+        width = std::max(width, shown(c.mnemonic));
+        unitWidth = std::max(unitWidth, shown(c.unit));
+    }
     for (const CurveInfo& c : info.curves) {
         out << "  " << c.mnemonic;
         for (std::size_t i = shown(c.mnemonic); i < width; ++i) out << ' ';
         out << " " << (c.unit.empty() ? "-" : c.unit);
-        for (std::size_t i = c.unit.empty() ? 1 : shown(c.unit); i < 8; ++i) out << ' ';
+        for (std::size_t i = c.unit.empty() ? 1 : shown(c.unit); i < unitWidth; ++i) out << ' ';
         out << " " << c.role;
         if (c.nulls) out << ", " << c.nulls << (c.nulls == 1 ? " null" : " nulls");
         out << "\n";

@@ -5,14 +5,14 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <condition_variable>
 #include <cstdint>
-#include <functional>
-#include <mutex>
-#include <cmath>
 #include <cstring>
 #include <exception>
+#include <functional>
 #include <memory>
+#include <mutex>
 #include <sstream>
 #include <thread>
 #include <utility>
@@ -125,7 +125,9 @@ class FileSource : public TextSource {
 public:
     explicit FileSource(const std::string& path) : m_path(path) {
         m_fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-        if (m_fd < 0) throw ParseError(path, 0, 0, "cannot open file for reading: " + std::string(std::strerror(errno)));
+        if (m_fd < 0)
+            throw ParseError(path, 0, 0,
+                             "cannot open file for reading: " + std::string(std::strerror(errno)));
         const off_t end = ::lseek(m_fd, 0, SEEK_END);
         m_size = end > 0 ? static_cast<std::size_t>(end) : 0;
         ::lseek(m_fd, 0, SEEK_SET);
@@ -133,17 +135,22 @@ public:
         ::posix_fadvise(m_fd, 0, 0, POSIX_FADV_SEQUENTIAL);
 #endif
     }
-    ~FileSource() override { ::close(m_fd); }
+    ~FileSource() override {
+        ::close(m_fd);
+    }
     FileSource(const FileSource&) = delete;
     FileSource& operator=(const FileSource&) = delete;
     std::size_t read(char* to, std::size_t n) override {
         for (;;) {
             const ssize_t got = ::read(m_fd, to, n);
             if (got >= 0) return static_cast<std::size_t>(got);
-            if (errno != EINTR) throw ParseError(m_path, 0, 0, "read failed: " + std::string(std::strerror(errno)));
+            if (errno != EINTR)
+                throw ParseError(m_path, 0, 0, "read failed: " + std::string(std::strerror(errno)));
         }
     }
-    std::size_t size() const override { return m_size; }
+    std::size_t size() const override {
+        return m_size;
+    }
 
 private:
     std::string m_path;
@@ -180,7 +187,8 @@ public:
         m_begin = 0;
         for (;;) {
             while (!m_eof && m_end < m_buffer.size()) {
-                const std::size_t got = m_source.read(m_buffer.data() + m_end, m_buffer.size() - m_end);
+                const std::size_t got =
+                    m_source.read(m_buffer.data() + m_end, m_buffer.size() - m_end);
                 if (got == 0) m_eof = true;
                 m_end += got;
             }
@@ -190,7 +198,8 @@ public:
             }
             const void* nl = memrchr(m_buffer.data(), '\n', m_end);
             if (nl != nullptr) {
-                m_begin = static_cast<std::size_t>(static_cast<const char*>(nl) - m_buffer.data()) + 1;
+                m_begin =
+                    static_cast<std::size_t>(static_cast<const char*>(nl) - m_buffer.data()) + 1;
                 return {m_buffer.data(), m_begin};
             }
             m_buffer.resize(m_buffer.size() * 2);  // a line longer than a block
@@ -207,8 +216,8 @@ private:
 
 // ---- tables -----------------------------------------------------------------------
 
-void appendRange(const std::vector<double>& from, std::vector<double>& to, std::size_t a, std::size_t b,
-                 std::size_t width) {
+void appendRange(const std::vector<double>& from, std::vector<double>& to, std::size_t a,
+                 std::size_t b, std::size_t width) {
     if (from.empty()) return;
     to.insert(to.end(), from.begin() + static_cast<std::ptrdiff_t>(a * width),
               from.begin() + static_cast<std::ptrdiff_t>(b * width));
@@ -261,7 +270,9 @@ void permute(SectionTable& t, const std::vector<std::size_t>& order) {
 
 // ---- rows -----------------------------------------------------------------------
 
-bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+bool isBlank(char c) {
+    return c == ' ' || c == '\t' || c == '\r';
+}
 
 std::string_view trim(std::string_view s) {
     while (!s.empty() && (isBlank(s.front()) || s.front() == '\n')) s.remove_prefix(1);
@@ -269,15 +280,27 @@ std::string_view trim(std::string_view s) {
     return s;
 }
 
+std::vector<std::string_view> splitBlank(std::string_view s) {
+    std::vector<std::string_view> out;
+    for (std::size_t i = 0; i < s.size();) {
+        while (i < s.size() && isBlank(s[i])) ++i;
+        std::size_t j = i;
+        while (j < s.size() && !isBlank(s[j])) ++j;
+        if (j > i) out.push_back(s.substr(i, j - i));
+        i = j;
+    }
+    return out;
+}
+
 // What a data line looks like and how its values become a row.
 struct RowFormat {
     std::string file;
     bool las = false;
-    char delimiter = ' ';            // ' ' = runs of blanks; ',' = commas
-    std::size_t declared = 0;        // columns of the raw row
-    std::size_t tokens = 0;          // values per line in the file
-    std::size_t firstColumn = 0;     // raw column of the first token (1 for radii-only text)
-    std::vector<char> textColumn;    // per raw column
+    char delimiter = ' ';          // ' ' = runs of blanks; ',' = commas
+    std::size_t declared = 0;      // columns of the raw row
+    std::size_t tokens = 0;        // values per line in the file
+    std::size_t firstColumn = 0;   // raw column of the first token (1 for radii-only text)
+    std::vector<char> textColumn;  // per raw column
     bool hasNull = false;
     double null = 0.0;
     NullPolicy nullPolicy = NullPolicy::Common;
@@ -290,12 +313,12 @@ struct RowFormat {
 // Rows parsed from one run of lines (one thread's share of a block).
 struct ParsedRows {
     SectionTable table;
-    std::vector<std::size_t> lines;       // 1-based line of each row
-    std::vector<std::size_t> nulls;       // per raw column
-    std::vector<std::size_t> depthDiffer; // per plan.otherDepthColumns
+    std::vector<std::size_t> lines;        // 1-based line of each row
+    std::vector<std::size_t> nulls;        // per raw column
+    std::vector<std::size_t> depthDiffer;  // per plan.otherDepthColumns
     Diagnostics diagnostics;
     std::size_t linesConsumed = 0;
-    bool stopped = false;                 // a '~' section line ended the data
+    bool stopped = false;  // a '~' section line ended the data
     std::size_t stopOffset = 0;
     std::exception_ptr error;
 };
@@ -311,7 +334,8 @@ void parseRows(const RowFormat& f, std::string_view text, std::size_t firstLine,
     try {
         const CurvePlan& plan = *f.plan;
         // Reused from block to block: its pages are already mapped.
-        if (out.table.extraCurves.size() != plan.extraColumns.size()) out.table = plan.emptyTable(columns);
+        if (out.table.extraCurves.size() != plan.extraColumns.size())
+            out.table = plan.emptyTable(columns);
         clearRows(out.table);
         out.lines.clear();
         out.diagnostics = Diagnostics{};
@@ -341,14 +365,18 @@ void parseRows(const RowFormat& f, std::string_view text, std::size_t firstLine,
                 --out.linesConsumed;
                 return;
             }
-            auto column = [&](const char* at) { return static_cast<std::size_t>(at - lineBegin) + 1; };
+            auto column = [&](const char* at) {
+                return static_cast<std::size_t>(at - lineBegin) + 1;
+            };
             std::size_t t = 0;
             bool overflow = false;
             for (; t < f.tokens; ++t) {
                 if (t > 0 && commaDelimited) {
                     while (p < lineEnd && isBlank(*p)) ++p;
-                    if (p < lineEnd && *p == ',') ++p;
-                    else break;
+                    if (p < lineEnd && *p == ',')
+                        ++p;
+                    else
+                        break;
                 }
                 while (p < lineEnd && isBlank(*p)) ++p;
                 if (p == lineEnd && !commaDelimited) break;
@@ -356,42 +384,51 @@ void parseRows(const RowFormat& f, std::string_view text, std::size_t firstLine,
                 const char* tokenBegin = p;
                 double v = 0.0;
                 auto [end, ec] = fast_float::from_chars(p, lineEnd, v);
-                const bool clean = ec == std::errc() && (end == lineEnd || isBlank(*end) || (commaDelimited && *end == ','));
+                const bool clean = ec == std::errc() && (end == lineEnd || isBlank(*end) ||
+                                                         (commaDelimited && *end == ','));
                 if (clean && !f.textColumn[c]) {
                     p = end;
                 } else {
                     const char* tokenEnd = p;
                     if (f.textColumn[c] && p < lineEnd && *p == '"') {
                         // LAS 3.0 quotes a string that holds the delimiter: "SAND, SHALY".
-                        const void* close = std::memchr(p + 1, '"', static_cast<std::size_t>(lineEnd - p - 1));
+                        const void* close =
+                            std::memchr(p + 1, '"', static_cast<std::size_t>(lineEnd - p - 1));
                         if (!close)
                             throw ParseError(f.file, lineNumber, column(p),
-                                             "expected a closing '\"' for the text of curve " + f.names[c] +
-                                                 ", found the end of the line");
+                                             "expected a closing '\"' for the text of curve " +
+                                                 f.names[c] + ", found the end of the line");
                         tokenEnd = static_cast<const char*>(close) + 1;
                     } else {
-                        while (tokenEnd < lineEnd && !isBlank(*tokenEnd) && !(commaDelimited && *tokenEnd == ',')) ++tokenEnd;
+                        while (tokenEnd < lineEnd && !isBlank(*tokenEnd) &&
+                               !(commaDelimited && *tokenEnd == ','))
+                            ++tokenEnd;
                         if (commaDelimited && f.textColumn[c])  // text may hold blanks
                             while (tokenEnd < lineEnd && *tokenEnd != ',') ++tokenEnd;
                     }
-                    const std::string_view token(tokenBegin, static_cast<std::size_t>(tokenEnd - tokenBegin));
+                    const std::string_view token(tokenBegin,
+                                                 static_cast<std::size_t>(tokenEnd - tokenBegin));
                     p = tokenEnd;
                     if (f.textColumn[c]) {
                         v = kNaN;
                     } else if (parseNumber(token, v)) {
-                    } else if (f.las && c != static_cast<std::size_t>(f.depthColumn) && isNullToken(token, f.nullPolicy)) {
+                    } else if (f.las && c != static_cast<std::size_t>(f.depthColumn) &&
+                               isNullToken(token, f.nullPolicy)) {
                         v = kNaN;
-                        overflow = !token.empty() && token.find_first_not_of('*') == std::string_view::npos;
+                        overflow = !token.empty() &&
+                                   token.find_first_not_of('*') == std::string_view::npos;
                     } else {
                         throw ParseError(f.file, lineNumber, column(tokenBegin),
-                                         "expected a number for " + (f.las ? "curve " : std::string()) + f.names[c] +
+                                         "expected a number for " +
+                                             (f.las ? "curve " : std::string()) + f.names[c] +
                                              ", found '" + std::string(token.substr(0, 40)) + "'");
                     }
                 }
                 if (!std::isfinite(v)) {
                     v = kNaN;
                 } else if (f.las && c != static_cast<std::size_t>(f.depthColumn) &&
-                           ((f.hasNull && v == f.null) || (f.nullPolicy == NullPolicy::Common && isCommonNullNumber(v)))) {
+                           ((f.hasNull && v == f.null) ||
+                            (f.nullPolicy == NullPolicy::Common && isCommonNullNumber(v)))) {
                     v = kNaN;
                 }
                 raw[c] = v;
@@ -404,17 +441,20 @@ void parseRows(const RowFormat& f, std::string_view text, std::size_t firstLine,
                 if (overflow) {
                     // An overflowed field ran into the next ones: they are unknown, not lost.
                     out.diagnostics.warn(f.file, lineNumber,
-                                         "field overflow covers the last " + std::to_string(f.tokens - t + 1) +
+                                         "field overflow covers the last " +
+                                             std::to_string(f.tokens - t + 1) +
                                              " values; read as null");
                     for (; t < f.tokens; ++t) raw[f.firstColumn + t] = kNaN;
                 } else if (finalRun && restIsBlank(text, pos)) {
                     out.diagnostics.warn(f.file, lineNumber,
-                                         "last line holds " + std::to_string(t) + " of " + std::to_string(f.tokens) +
+                                         "last line holds " + std::to_string(t) + " of " +
+                                             std::to_string(f.tokens) +
                                              " values (truncated file?); skipped");
                     continue;
                 } else {
-                    throw ParseError(f.file, lineNumber, 0,
-                                     "expected " + f.layout + ", found " + std::to_string(t) + " values");
+                    throw ParseError(
+                        f.file, lineNumber, 0,
+                        "expected " + f.layout + ", found " + std::to_string(t) + " values");
                 }
             }
             for (std::size_t c = 0; c < f.declared; ++c) out.nulls[c] += std::isnan(raw[c]);
@@ -434,7 +474,8 @@ void parseRows(const RowFormat& f, std::string_view text, std::size_t firstLine,
 
 std::string lasVersionText(const LasHeader& h) {
     std::ostringstream version;
-    version << "LAS " << h.version << (h.version == std::floor(h.version) ? ".0" : "") << (h.wrap ? ", wrapped" : "");
+    version << "LAS " << h.version << (h.version == std::floor(h.version) ? ".0" : "")
+            << (h.wrap ? ", wrapped" : "");
     return version.str();
 }
 
@@ -442,7 +483,8 @@ std::string lasVersionText(const LasHeader& h) {
 
 class LogStreamer {
 public:
-    LogStreamer(std::string name, const ReadOptions& options, const ChunkConsumer& consumer, const StreamOptions& stream)
+    LogStreamer(std::string name, const ReadOptions& options, const ChunkConsumer& consumer,
+                const StreamOptions& stream)
         : m_name(std::move(name)), m_options(options), m_consumer(consumer), m_stream(stream) {
         m_info.file = m_name;
     }
@@ -468,10 +510,13 @@ public:
         std::size_t offset = 0;
         if (run.substr(0, 3) == "\xEF\xBB\xBF") offset = 3;
         if (trim(run).empty() && m_reader->done())
-            throw ParseError(m_name, 0, 0, "expected a caliper log (column text or LAS), found an empty file");
+            throw ParseError(m_name, 0, 0,
+                             "expected a caliper log (column text or LAS), found an empty file");
         refuseWhatIsNotALog(run.substr(offset));
-        if (looksLikeLas(run.substr(offset))) readLasHeader(run, offset);
-        else prepareColumnText(run, offset);
+        if (looksLikeLas(run.substr(offset)))
+            readLasHeader(run, offset);
+        else
+            prepareColumnText(run, offset);
         if (m_wrapped) return finishWrapped(run.substr(offset));
         if (m_stream.onStart) m_stream.onStart(m_info, estimateRows(run.substr(offset)));
         dataLoop(run.substr(offset), offset);
@@ -485,22 +530,30 @@ private:
     void refuseWhatIsNotALog(std::string_view start) const {
         const std::string_view head = start.substr(0, 64u << 10);
         if (const void* nul = std::memchr(head.data(), '\0', head.size())) {
-            const std::size_t at = static_cast<std::size_t>(static_cast<const char*>(nul) - head.data());
-            const std::size_t line = 1 + static_cast<std::size_t>(std::count(head.begin(), head.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
+            const std::size_t at =
+                static_cast<std::size_t>(static_cast<const char*>(nul) - head.data());
+            const std::size_t line =
+                1 + static_cast<std::size_t>(std::count(
+                        head.begin(), head.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
             const std::size_t newline = at == 0 ? std::string_view::npos : head.rfind('\n', at - 1);
             const std::size_t column = newline == std::string_view::npos ? at + 1 : at - newline;
             throw ParseError(m_name, line, column,
-                             "expected text, found a NUL byte (a binary file, or UTF-16 without a byte-order mark)");
+                             "expected text, found a NUL byte (a binary file, or UTF-16 without a "
+                             "byte-order mark)");
         }
         const std::size_t first = head.find_first_not_of(" \t\r\n");
         if (first != std::string_view::npos && (head[first] == '{' || head[first] == '['))
-            throw ParseError(m_name, 1 + static_cast<std::size_t>(std::count(head.begin(), head.begin() + static_cast<std::ptrdiff_t>(first), '\n')), 0,
-                             "expected a caliper log (LAS or column text), found JSON");
+            throw ParseError(
+                m_name,
+                1 + static_cast<std::size_t>(std::count(
+                        head.begin(), head.begin() + static_cast<std::ptrdiff_t>(first), '\n')),
+                0, "expected a caliper log (LAS or column text), found JSON");
         if (!looksLikeLas(head) && looksLikeSurvey(head))
-            throw ParseError(m_name, 0, 0,
-                             "expected a caliper log, found a deviation survey (a line names measured depth, "
-                             "inclination and azimuth columns, and no caliper curves): give it with --survey, "
-                             "or see it with caliper3d info");
+            throw ParseError(
+                m_name, 0, 0,
+                "expected a caliper log, found a deviation survey (a line names measured depth, "
+                "inclination and azimuth columns, and no caliper curves): give it with --survey, "
+                "or see it with caliper3d info");
     }
 
     static bool looksLikeLas(std::string_view text) {
@@ -520,7 +573,8 @@ private:
 
     std::size_t estimateRows(std::string_view dataStart) const {
         const std::size_t sample = std::min<std::size_t>(dataStart.size(), 1u << 20);
-        const std::size_t lines = static_cast<std::size_t>(std::count(dataStart.begin(), dataStart.begin() + static_cast<std::ptrdiff_t>(sample), '\n'));
+        const std::size_t lines = static_cast<std::size_t>(std::count(
+            dataStart.begin(), dataStart.begin() + static_cast<std::ptrdiff_t>(sample), '\n'));
         if (lines == 0) return 1;
         const double perLine = static_cast<double>(sample) / static_cast<double>(lines);
         return static_cast<std::size_t>(static_cast<double>(m_sourceSize) / perLine * 1.02) + 16;
@@ -563,7 +617,8 @@ private:
         const LasHeader& h = m_header;
         m_info.format = lasVersionText(h);
         if (const LasItem* well = h.wellItem("WELL")) m_info.wellName = well->value;
-        if (h.curves.empty()) throw ParseError(m_name, 0, 0, "expected a ~C (curve information) section, found none");
+        if (h.curves.empty())
+            throw ParseError(m_name, 0, 0, "expected a ~C (curve information) section, found none");
         m_columns = lasColumns(h, &m_info.diagnostics);
         if (h.wrap) {
             m_wrapped = true;
@@ -614,12 +669,16 @@ private:
             const std::size_t declared = m_columns.size();
             if (count < declared && count > 0 && m_format.delimiter != ',') {
                 std::string missing;
-                for (std::size_t c = count; c < declared; ++c) missing += (missing.empty() ? "" : ", ") + m_columns[c].mnemonic;
+                for (std::size_t c = count; c < declared; ++c)
+                    missing += (missing.empty() ? "" : ", ") + m_columns[c].mnemonic;
                 if (static_cast<std::size_t>(m_plan.depthColumn) >= count)
-                    throw ParseError(m_name, line, 0, "expected the depth curve among the data columns, found " +
-                                                          std::to_string(count) + " values");
-                m_info.diagnostics.warn(m_name, line, std::to_string(declared) + " curves declared but rows hold " +
-                                                          std::to_string(count) + " values; no data for " + missing);
+                    throw ParseError(m_name, line, 0,
+                                     "expected the depth curve among the data columns, found " +
+                                         std::to_string(count) + " values");
+                m_info.diagnostics.warn(
+                    m_name, line,
+                    std::to_string(declared) + " curves declared but rows hold " +
+                        std::to_string(count) + " values; no data for " + missing);
                 m_format.tokens = count;
                 m_format.layout = std::to_string(count) + " values";
             }
@@ -627,20 +686,100 @@ private:
         }
     }
 
+    // Column text with a line of names: each name is a mnemonic with an optional unit
+    // ("R1_in", "BS(mm)", "DEVI[deg]"), and the roles come from the mnemonics as in LAS, so
+    // any order and any extra curve (GR, RB, BS, ...) reads right. Without units the text
+    // defaults apply (depth in metres, radii in inches unless implausible).
+    void prepareNamedColumns(const std::vector<std::string_view>& names, std::size_t line,
+                             const std::vector<std::string_view>& firstRow) {
+        bool anyUnit = false;
+        for (std::string_view n : names) {
+            auto [mnemonic, unit] = splitColumnName(n);
+            anyUnit = anyUnit || !unit.empty();
+            m_columns.push_back({std::string(mnemonic), std::string(unit), "", false, line});
+        }
+        ReadOptions options = m_options;
+        if (!anyUnit) {
+            if (!options.depthUnit) options.depthUnit = LengthUnit::Metre;
+            if (!options.radiusUnit) {
+                options.radiusUnit = LengthUnit::Inch;
+                // Radii over kMaxPlausibleRadius_in inches are far likelier millimetres.
+                std::vector<double> values;
+                for (std::size_t c = 0; c < names.size() && c < firstRow.size(); ++c) {
+                    const CurveRole role = guessRole(m_columns[c].mnemonic).role;
+                    double v = 0.0;
+                    if ((role == CurveRole::Radius || role == CurveRole::Finger) &&
+                        parseNumber(firstRow[c], v))
+                        values.push_back(v);
+                }
+                if (!values.empty()) {
+                    std::nth_element(
+                        values.begin(),
+                        values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2),
+                        values.end());
+                    if (values[values.size() / 2] > kMaxPlausibleRadius_in) {
+                        options.radiusUnit = LengthUnit::Millimetre;
+                        m_info.diagnostics.warn(
+                            m_name, line,
+                            "columns carry no units and radii near " +
+                                std::to_string(values[values.size() / 2]) +
+                                " would be inches, far too large: read as millimetres (give "
+                                "--radius-unit to choose)");
+                    }
+                }
+            }
+        }
+        m_plan = makeCurvePlan(m_columns, nullptr, options, m_name, m_info, m_info.diagnostics);
+        if (!anyUnit) {
+            // Say which units were assumed.
+            m_info.depthUnit = std::string(unitName(*options.depthUnit));
+            m_info.curves[static_cast<std::size_t>(m_plan.depthColumn)].unit =
+                m_info.depthUnit + " (assumed)";
+            for (int c : m_plan.armColumn)
+                m_info.curves[static_cast<std::size_t>(c)].unit =
+                    std::string(unitName(*options.radiusUnit)) + " (assumed)";
+            if (m_plan.bitSizeColumn >= 0)
+                m_info.curves[static_cast<std::size_t>(m_plan.bitSizeColumn)].unit =
+                    std::string(unitName(*options.radiusUnit)) + " (assumed)";
+        }
+        m_info.format = "column text (" + std::to_string(names.size()) +
+                        " named columns, names on line " + std::to_string(line) + ")";
+        m_format.file = m_name;
+        m_format.las = false;
+        m_format.declared = m_columns.size();
+        m_format.tokens = m_columns.size();
+        m_format.firstColumn = 0;
+        m_format.textColumn.assign(m_columns.size(), 0);
+        for (const ColumnSpec& c : m_columns) m_format.names.push_back(c.mnemonic);
+        m_format.layout = std::to_string(m_columns.size()) + " named columns";
+        m_format.depthColumn = m_plan.depthColumn;
+        m_format.plan = &m_plan;
+    }
+
     void prepareColumnText(std::string_view run, std::size_t offset) {
         if (m_options.armCount < 2 || m_options.armCount > 256)
             throw ParseError(m_name, 0, 0, "arm count must be between 2 and 256");
         int arms = m_options.armCount;
-        // The first content line decides: names (skipped), radii only, or the reference layout.
+        // The first content line decides: named columns, radii only, or the reference layout.
+        // A line of names before it (or a '#' comment line of names right before it, as our
+        // writer and many scripts write) names the columns when it has one name per column.
         std::size_t pos = offset, line = 0;
-        std::vector<std::string_view> tokens;
+        std::vector<std::string_view> tokens, names, commentNames;
+        std::size_t namesLine = 0, commentLine = 0;
         while (pos < run.size()) {
             const std::size_t nl = run.find('\n', pos);
             const std::size_t end = nl == std::string_view::npos ? run.size() : nl;
             const std::string_view l = trim(run.substr(pos, end - pos));
             pos = end + 1;
             ++line;
-            if (l.empty() || l.front() == '#') continue;
+            if (l.empty()) continue;
+            if (l.front() == '#') {
+                const std::size_t text = l.find_first_not_of('#');
+                commentNames = text == std::string_view::npos ? std::vector<std::string_view>()
+                                                              : splitBlank(trim(l.substr(text)));
+                commentLine = line;
+                continue;
+            }
             for (std::size_t i = 0; i < l.size();) {
                 while (i < l.size() && isBlank(l[i])) ++i;
                 std::size_t j = i;
@@ -653,17 +792,39 @@ private:
             for (std::string_view t : tokens) anyNumber = anyNumber || parseNumber(t, v);
             if (!anyNumber) {
                 m_skipFirstLines = line;  // a line of column names
+                names = tokens;
+                namesLine = line;
+                commentNames.clear();
                 tokens.clear();
                 continue;
             }
             break;
         }
         const int found = static_cast<int>(tokens.size());
+        if (!names.empty() && static_cast<int>(names.size()) != found)
+            m_info.diagnostics.warn(
+                m_name, namesLine,
+                std::to_string(names.size()) + " column names over " + std::to_string(found) +
+                    " columns of numbers: names ignored, columns read as the reference layout");
+        if (static_cast<int>(names.size()) != found) {
+            names.clear();
+            // A comment line of names counts only when it matches and starts with a depth.
+            if (static_cast<int>(commentNames.size()) == found && found > 0 &&
+                guessRole(splitColumnName(commentNames.front()).first).role == CurveRole::Depth) {
+                names = commentNames;
+                namesLine = commentLine;
+            }
+        }
+        if (!names.empty()) {
+            prepareNamedColumns(names, namesLine, tokens);
+            return;
+        }
         m_radiiOnly = found != arms + 4 && m_options.allowRadiiOnly && found >= 8 && found <= 256;
         if (m_radiiOnly) {
             arms = found;
             m_info.diagnostics.warn(m_name, line,
-                                    std::to_string(found) + " numbers per line and no depth column: read as " +
+                                    std::to_string(found) +
+                                        " numbers per line and no depth column: read as " +
                                         std::to_string(found) + " radii per row, depth = row x " +
                                         std::to_string(m_options.rowStep_m) + " m");
         }
@@ -678,23 +839,29 @@ private:
                 if (at < tokens.size() && parseNumber(tokens[at], v)) radii.push_back(v);
             }
             if (!radii.empty()) {
-                std::nth_element(radii.begin(), radii.begin() + static_cast<std::ptrdiff_t>(radii.size() / 2), radii.end());
+                std::nth_element(radii.begin(),
+                                 radii.begin() + static_cast<std::ptrdiff_t>(radii.size() / 2),
+                                 radii.end());
                 const double median = radii[radii.size() / 2];
                 if (median > kMaxPlausibleRadius_in) {
                     radiusUnit = LengthUnit::Millimetre;
-                    m_info.diagnostics.warn(m_name, line,
-                                            "radii near " + std::to_string(median) +
-                                                " would be inches, far too large: read as millimetres (give "
-                                                "--radius-unit to choose)");
+                    m_info.diagnostics.warn(
+                        m_name, line,
+                        "radii near " + std::to_string(median) +
+                            " would be inches, far too large: read as millimetres (give "
+                            "--radius-unit to choose)");
                 }
             }
         }
         const LengthUnit depthUnit = m_options.depthUnit.value_or(LengthUnit::Metre);
         const std::string radiusUnitName(unitName(radiusUnit));
-        m_columns.push_back({m_radiiOnly ? "ROW" : "DEPTH", std::string(unitName(depthUnit)), "", false, 0});
-        for (int k = 1; k <= arms; ++k) m_columns.push_back({"R" + std::to_string(k), radiusUnitName, "", false, 0});
+        m_columns.push_back(
+            {m_radiiOnly ? "ROW" : "DEPTH", std::string(unitName(depthUnit)), "", false, 0});
+        for (int k = 1; k <= arms; ++k)
+            m_columns.push_back({"R" + std::to_string(k), radiusUnitName, "", false, 0});
         if (!m_radiiOnly)
-            for (const char* angle : {"P1AZ", "DEVI", "HAZI"}) m_columns.push_back({angle, "deg", "", false, 0});
+            for (const char* angle : {"P1AZ", "DEVI", "HAZI"})
+                m_columns.push_back({angle, "deg", "", false, 0});
         ReadOptions plain = m_options;
         plain.roles = {};
         plain.radiusUnit = radiusUnit;
@@ -702,7 +869,8 @@ private:
         RoleOverrides overrides;
         m_plan = makeCurvePlan(m_columns, nullptr, plain, m_name, m_info, m_info.diagnostics);
         if (m_radiiOnly) {
-            m_info.curves.front().role = "depth (row x " + std::to_string(m_options.rowStep_m) + " m)";
+            m_info.curves.front().role =
+                "depth (row x " + std::to_string(m_options.rowStep_m) + " m)";
             m_info.format = "column text (" + std::to_string(arms) + " radii per line, no depth)";
         } else {
             m_info.format = "column text (depth R1..R" + std::to_string(arms) + " P1AZ DEVI HAZI)";
@@ -715,10 +883,11 @@ private:
         m_format.tokens = m_radiiOnly ? static_cast<std::size_t>(arms) : m_columns.size();
         m_format.firstColumn = m_radiiOnly ? 1 : 0;
         m_format.textColumn.assign(m_columns.size(), 0);
-        for (const ColumnSpec& c : m_columns) m_format.names.push_back(c.mnemonic == "DEPTH" ? "depth" : c.mnemonic);
+        for (const ColumnSpec& c : m_columns)
+            m_format.names.push_back(c.mnemonic == "DEPTH" ? "depth" : c.mnemonic);
         m_format.layout = m_radiiOnly ? std::to_string(arms) + " radii"
-                                      : std::to_string(arms + 4) + " columns (depth R1..R" + std::to_string(arms) +
-                                            " P1AZ DEVI HAZI)";
+                                      : std::to_string(arms + 4) + " columns (depth R1..R" +
+                                            std::to_string(arms) + " P1AZ DEVI HAZI)";
         m_format.depthColumn = 0;
         m_format.plan = &m_plan;
     }
@@ -777,7 +946,8 @@ private:
         m_pieceBegin.assign(1, 0);
         for (std::size_t i = 1; i < pieces; ++i) {
             const std::size_t target = std::max(m_pieceBegin.back(), run.size() * i / pieces);
-            const std::size_t nl = target == 0 ? std::string_view::npos : run.find('\n', target - 1);
+            const std::size_t nl =
+                target == 0 ? std::string_view::npos : run.find('\n', target - 1);
             if (nl == std::string_view::npos || nl + 1 >= run.size()) break;
             if (nl + 1 > m_pieceBegin.back()) m_pieceBegin.push_back(nl + 1);
         }
@@ -790,7 +960,8 @@ private:
         // Lines are counted from 1 within each piece; the piece's place in the
         // file is added below, in order, so no thread has to count ahead.
         const std::function<void(std::size_t)> parsePiece = [&](std::size_t i) {
-            const std::string_view text = run.substr(m_pieceBegin[i], m_pieceBegin[i + 1] - m_pieceBegin[i]);
+            const std::string_view text =
+                run.substr(m_pieceBegin[i], m_pieceBegin[i + 1] - m_pieceBegin[i]);
             parseRows(m_format, text, 1, finalRun && i + 1 == pieces, m_columns, m_parts[i]);
         };
         m_sharing->run(pieces, parsePiece);
@@ -822,14 +993,18 @@ private:
 
     void commit(ParsedRows& part) {
         for (std::size_t c = 0; c < m_nulls.size(); ++c) m_nulls[c] += part.nulls[c];
-        for (std::size_t k = 0; k < m_depthDiffer.size(); ++k) m_depthDiffer[k] += part.depthDiffer[k];
-        for (const Warning& w : part.diagnostics.warnings) m_info.diagnostics.warn(w.file, w.line, w.message);
-        m_info.diagnostics.warningCount += part.diagnostics.warningCount - part.diagnostics.warnings.size();
+        for (std::size_t k = 0; k < m_depthDiffer.size(); ++k)
+            m_depthDiffer[k] += part.depthDiffer[k];
+        for (const Warning& w : part.diagnostics.warnings)
+            m_info.diagnostics.warn(w.file, w.line, w.message);
+        m_info.diagnostics.warningCount +=
+            part.diagnostics.warningCount - part.diagnostics.warnings.size();
 
         SectionTable& t = part.table;
         const std::size_t n = t.rowCount();
         if (m_radiiOnly)
-            for (std::size_t r = 0; r < n; ++r) t.depth_m[r] = static_cast<double>(m_rowIndex++) * m_options.rowStep_m;
+            for (std::size_t r = 0; r < n; ++r)
+                t.depth_m[r] = static_cast<double>(m_rowIndex++) * m_options.rowStep_m;
         if (!m_directionKnown) decideDirection(t);
         std::size_t runStart = 0;
         m_kept.clear();
@@ -859,7 +1034,8 @@ private:
                         clearRows(m_current);
                     } else if (m_options.depthOrder == DepthOrder::Reject) {
                         throw ParseError(m_name, part.lines[r], 0,
-                                         "expected depth increasing past " + std::to_string(m_last / m_plan.depthScale) +
+                                         "expected depth increasing past " +
+                                             std::to_string(m_last / m_plan.depthScale) +
                                              ", found " + std::to_string(d / m_plan.depthScale));
                     } else {
                         if (!m_backwards++) m_firstBackwardsLine = part.lines[r];
@@ -941,8 +1117,9 @@ private:
             pos = end + 1;
             ++line;
             if (!l.empty() && l.front() == '~')
-                m_info.diagnostics.warn(m_name, line, "section '" + std::string(l.substr(0, 40)) +
-                                                          "' after the data is not read; skipped");
+                m_info.diagnostics.warn(m_name, line,
+                                        "section '" + std::string(l.substr(0, 40)) +
+                                            "' after the data is not read; skipped");
         }
     }
 
@@ -958,7 +1135,8 @@ private:
         const LasLog las = readLas(all, m_name, lasOptions, &lasDiagnostics);
         // The header's warnings were given once already.
         for (const Warning& w : lasDiagnostics.warnings)
-            if (w.line > m_lineNumber || w.line == 0) m_info.diagnostics.warn(w.file, w.line, w.message);
+            if (w.line > m_lineNumber || w.line == 0)
+                m_info.diagnostics.warn(w.file, w.line, w.message);
         m_plan = makeCurvePlan(m_columns, &m_header, m_options, m_name, m_info, m_info.diagnostics);
         m_format.las = true;
         m_current = m_plan.emptyTable(m_columns);
@@ -987,10 +1165,12 @@ private:
             if (m_descending) {
                 std::vector<std::size_t> order(m_held.rowCount());
                 for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-                std::stable_sort(order.begin(), order.end(),
-                                 [&](std::size_t a, std::size_t b) { return m_held.depth_m[a] < m_held.depth_m[b]; });
+                std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+                    return m_held.depth_m[a] < m_held.depth_m[b];
+                });
                 std::size_t outOfOrder = 0;
-                for (std::size_t i = 1; i < m_held.rowCount(); ++i) outOfOrder += m_held.depth_m[i] > m_held.depth_m[i - 1];
+                for (std::size_t i = 1; i < m_held.rowCount(); ++i)
+                    outOfOrder += m_held.depth_m[i] > m_held.depth_m[i - 1];
                 std::vector<std::size_t> kept;
                 kept.reserve(order.size());
                 for (std::size_t r : order) {
@@ -1001,15 +1181,17 @@ private:
                     kept.push_back(r);
                 }
                 permute(m_held, kept);
-                m_info.diagnostics.warn(m_name, 0, outOfOrder == 0
-                                                       ? "log recorded upwards; rows sorted by increasing depth"
-                                                       : "log recorded upwards with " + std::to_string(outOfOrder) +
-                                                             " rows out of order; rows sorted by increasing depth");
+                m_info.diagnostics.warn(
+                    m_name, 0,
+                    outOfOrder == 0 ? "log recorded upwards; rows sorted by increasing depth"
+                                    : "log recorded upwards with " + std::to_string(outOfOrder) +
+                                          " rows out of order; rows sorted by increasing depth");
                 SectionTable chunk = m_plan.emptyTable(m_columns);
                 for (std::size_t a = 0; a < m_held.rowCount(); a += m_stream.chunkRows) {
                     if (cancelled()) break;
                     clearRows(chunk);
-                    appendRows(m_held, chunk, a, std::min(m_held.rowCount(), a + m_stream.chunkRows));
+                    appendRows(m_held, chunk, a,
+                               std::min(m_held.rowCount(), a + m_stream.chunkRows));
                     deliver(chunk);
                 }
             } else {
@@ -1017,20 +1199,28 @@ private:
             }
         }
         Diagnostics& d = m_info.diagnostics;
-        if (m_nullDepths) d.warn(m_name, m_firstNullDepthLine, std::to_string(m_nullDepths) + " rows without a depth skipped");
+        if (m_nullDepths)
+            d.warn(m_name, m_firstNullDepthLine,
+                   std::to_string(m_nullDepths) + " rows without a depth skipped");
         if (m_repeated)
-            d.warn(m_name, m_firstRepeatedLine, std::to_string(m_repeated) + " rows repeat the depth of the row before; skipped");
+            d.warn(
+                m_name, m_firstRepeatedLine,
+                std::to_string(m_repeated) + " rows repeat the depth of the row before; skipped");
         if (m_backwards)
             d.warn(m_name, m_firstBackwardsLine,
-                   std::to_string(m_backwards) + " rows go back up the hole in a log recorded downwards; skipped");
+                   std::to_string(m_backwards) +
+                       " rows go back up the hole in a log recorded downwards; skipped");
         for (std::size_t k = 0; k < m_depthDiffer.size(); ++k) {
             if (!m_depthDiffer[k]) continue;
             const ColumnSpec& c = m_columns[static_cast<std::size_t>(m_plan.otherDepthColumns[k])];
-            d.warn(m_name, c.line, "depth curve " + c.mnemonic + " differs from the index " +
-                                       m_columns[static_cast<std::size_t>(m_plan.depthColumn)].mnemonic + " on " +
-                                       std::to_string(m_depthDiffer[k]) + " rows by 1 cm or more; the index is used");
+            d.warn(m_name, c.line,
+                   "depth curve " + c.mnemonic + " differs from the index " +
+                       m_columns[static_cast<std::size_t>(m_plan.depthColumn)].mnemonic + " on " +
+                       std::to_string(m_depthDiffer[k]) +
+                       " rows by 1 cm or more; the index is used");
         }
-        for (std::size_t c = 0; c < m_info.curves.size() && c < m_nulls.size(); ++c) m_info.curves[c].nulls = m_nulls[c];
+        for (std::size_t c = 0; c < m_info.curves.size() && c < m_nulls.size(); ++c)
+            m_info.curves[c].nulls = m_nulls[c];
         if (m_radiiOnly && !m_info.curves.empty()) m_info.curves.front().nulls = 0;
         m_info.arms = m_plan.armCount;
         if (m_bitSizeMin <= m_bitSizeMax) {
@@ -1038,12 +1228,17 @@ private:
             m_info.bitSizeMax_mm = m_bitSizeMax;
         }
         if (!m_steps.empty()) {
-            std::nth_element(m_steps.begin(), m_steps.begin() + static_cast<std::ptrdiff_t>(m_steps.size() / 2), m_steps.end());
+            std::nth_element(m_steps.begin(),
+                             m_steps.begin() + static_cast<std::ptrdiff_t>(m_steps.size() / 2),
+                             m_steps.end());
             m_info.step_m = m_steps[m_steps.size() / 2];
         }
         if (m_info.rows == 0 && !m_info.cancelled) {
-            if (m_format.las) throw ParseError(m_name, m_lineNumber, 0, "expected data rows after ~A, found none");
-            throw ParseError(m_name, 0, 0, "expected rows of numbers (" + m_format.layout + "), found none");
+            if (m_format.las)
+                throw ParseError(m_name, m_lineNumber, 0,
+                                 "expected data rows after ~A, found none");
+            throw ParseError(m_name, 0, 0,
+                             "expected rows of numbers (" + m_format.layout + "), found none");
         }
         return std::move(m_info);
     }
@@ -1069,9 +1264,9 @@ private:
     RowFormat m_format;
 
     SectionTable m_current, m_held;
-    std::vector<ParsedRows> m_parts;      // one per piece of a block
+    std::vector<ParsedRows> m_parts;  // one per piece of a block
     std::vector<std::size_t> m_pieceBegin;
-    PieceSharing* m_sharing = nullptr;   // set while dataLoop runs
+    PieceSharing* m_sharing = nullptr;  // set while dataLoop runs
     std::vector<std::pair<std::size_t, std::size_t>> m_kept;
     std::vector<std::size_t> m_nulls, m_depthDiffer;
     std::vector<double> m_steps;
@@ -1084,14 +1279,15 @@ private:
 
 }  // namespace
 
-LogInfo streamCaliperLog(const std::string& path, const ReadOptions& options, const ChunkConsumer& consumer,
-                         const StreamOptions& stream) {
+LogInfo streamCaliperLog(const std::string& path, const ReadOptions& options,
+                         const ChunkConsumer& consumer, const StreamOptions& stream) {
     FileSource source(path);
     return LogStreamer(path, options, consumer, stream).run(source);
 }
 
-LogInfo streamCaliperText(std::string_view text, const std::string& name, const ReadOptions& options,
-                          const ChunkConsumer& consumer, const StreamOptions& stream) {
+LogInfo streamCaliperText(std::string_view text, const std::string& name,
+                          const ReadOptions& options, const ChunkConsumer& consumer,
+                          const StreamOptions& stream) {
     MemorySource source(text);
     return LogStreamer(name, options, consumer, stream).run(source);
 }

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string_view>
 
+#include "io/curve_plan.h"
 #include "io/curve_roles.h"
 #include "io/number_parsing.h"
 #include "io/parse_error.h"
@@ -383,7 +384,7 @@ bool looksLikeSurvey(std::string_view head) {
         if (found[kMd] < 0 || found[kInc] < 0 || found[kAzi] < 0) continue;
         // "DEPTH R1 .. R6 P1AZ DEVI HAZI" names depth, deviation and azimuth too: a caliper log.
         for (const Field& f : fields) {
-            const CurveRole role = guessRole(trim(f.text)).role;
+            const CurveRole role = guessRole(splitColumnName(trim(f.text)).first).role;
             if (role == CurveRole::Radius || role == CurveRole::Finger || role == CurveRole::Diameter ||
                 role == CurveRole::PadAzimuth)
                 return false;

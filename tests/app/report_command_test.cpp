@@ -46,7 +46,8 @@ Csv parseCsv(std::istream& in) {
         const std::vector<std::string> fields = split(line);
         EXPECT_EQ(fields.size(), csv.names.size()) << line;
         std::map<std::string, std::string> row;
-        for (std::size_t k = 0; k < fields.size() && k < csv.names.size(); ++k) row[csv.names[k]] = fields[k];
+        for (std::size_t k = 0; k < fields.size() && k < csv.names.size(); ++k)
+            row[csv.names[k]] = fields[k];
         csv.rows.push_back(std::move(row));
     }
     return csv;
@@ -77,9 +78,13 @@ TEST(ReportCommandTest, KeyseatProfileIsClassedOnItsIntervalWithZones) {
                                       zones.string() + " --bit-size 215.9mm");
     ASSERT_EQ(r.status, 0) << r.output;
     const Csv report = readCsv(csv);
-    const std::vector<std::string> required = {
-        "md_m",    "tvd_m",       "north_m",           "east_m",   "inc_deg",          "azi_deg", "dmin_mm",
-        "dmax_mm", "ellipticity", "major_azimuth_deg", "area_mm2", "centre_offset_mm", "class"};
+    const std::vector<std::string> required = {"md_m",        "tvd_m",
+                                               "north_m",     "east_m",
+                                               "inc_deg",     "azi_deg",
+                                               "dmin_mm",     "dmax_mm",
+                                               "ellipticity", "major_azimuth_deg",
+                                               "area_mm2",    "centre_offset_mm",
+                                               "class"};
     ASSERT_GE(report.names.size(), required.size());
     for (std::size_t k = 0; k < required.size(); ++k) EXPECT_EQ(report.names[k], required[k]);
     ASSERT_EQ(report.rows.size(), 1201u);
@@ -121,7 +126,8 @@ TEST(ReportCommandTest, SurveyReplacesTheLogsPathAndMatchesTheExactArc) {
         for (int md = 0; md <= 100; md += 10) out << md << "," << md * 0.1 << ",90\n";
     }
     const auto csv = scratch("report_survey.csv");
-    const CommandRun r = runCaliper3d("report " + log + " -o " + csv.string() + " --survey " + survey.string());
+    const CommandRun r =
+        runCaliper3d("report " + log + " -o " + csv.string() + " --survey " + survey.string());
     ASSERT_EQ(r.status, 0) << r.output;
     EXPECT_NE(r.output.find("path from " + survey.string()), std::string::npos) << r.output;
     const Csv report = readCsv(csv);
@@ -164,7 +170,8 @@ TEST(ReportCommandTest, ZoneTableOnStandardOutputAndOnlyOneDash) {
     // The washout profile: one washout zone over 0.4-0.6 L, a circle with no major axis.
     const std::string log = synth("washout", 100.0, 0.5);
     const auto csv = scratch("report_zones_stdout.csv");
-    const CommandRun r = runCaliper3d("report " + log + " -o " + csv.string() + " --zones -", false);
+    const CommandRun r =
+        runCaliper3d("report " + log + " -o " + csv.string() + " --zones -", false);
     ASSERT_EQ(r.status, 0) << r.output;
     std::istringstream in(r.output);
     const Csv zones = parseCsv(in);
@@ -180,8 +187,9 @@ TEST(ReportCommandTest, BadSurveyIsBadInputNamingItsFileAndLine) {
     const std::string log = synth("circle", 20.0, 0.5);
     const auto survey = scratch("report_bad_survey.csv");
     { std::ofstream(survey) << "MD,Inc,Azi\n0,0,0\n10,abc,0\n20,1,0\n"; }
-    const CommandRun r = runCaliper3d("report " + log + " -o " + scratch("report_bad.csv").string() +
-                                      " --survey " + survey.string());
+    const CommandRun r =
+        runCaliper3d("report " + log + " -o " + scratch("report_bad.csv").string() + " --survey " +
+                     survey.string());
     EXPECT_EQ(r.status, 1) << r.output;
     EXPECT_NE(r.output.find(survey.string() + ":3"), std::string::npos) << r.output;
 }
@@ -210,7 +218,8 @@ TEST(ReportCommandTest, RuleChangesTheClassification) {
     const CommandRun normal = runCaliper3d("report " + log + " -o " + csv.string());
     ASSERT_EQ(normal.status, 0) << normal.output;
     EXPECT_EQ(readCsv(csv).rows[100].at("class"), "washout");  // 50 m
-    const CommandRun raised = runCaliper3d("report " + log + " -o " + csv.string() + " --rule washout_mm=45");
+    const CommandRun raised =
+        runCaliper3d("report " + log + " -o " + csv.string() + " --rule washout_mm=45");
     ASSERT_EQ(raised.status, 0) << raised.output;
     EXPECT_EQ(readCsv(csv).rows[100].at("class"), "in_gauge");
 }
@@ -219,7 +228,8 @@ TEST(ReportCommandTest, RealFmiLogReportsPadAzimuthOffsetNearZero) {
     const auto fmi = caliper3d::test::sharedData() / "real" / "1AA063409108W400_FMI_SONIC_MAIN.las";
     CALIPER3D_REQUIRE_DATA(fmi);
     const auto csv = scratch("report_fmi.csv");
-    const CommandRun r = runCaliper3d("report " + fmi.string() + " -o " + csv.string() + " --step 1");
+    const CommandRun r =
+        runCaliper3d("report " + fmi.string() + " -o " + csv.string() + " --step 1");
     ASSERT_EQ(r.status, 0) << r.output;
     EXPECT_GT(readCsv(csv).rows.size(), 100u);
     const std::string key = "P1AZ - (HAZI+RB): mean ";

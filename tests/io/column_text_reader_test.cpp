@@ -1,5 +1,6 @@
 #include "io/column_text_reader.h"
 
+#include <cmath>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -28,7 +29,8 @@ TEST(ColumnTextReaderTest, ReadsReferenceLayoutWithTabsAndDecimalComma) {
 }
 
 TEST(ColumnTextReaderTest, WrongColumnCountNamesFileLineAndLayout) {
-    const std::string text = "1 2 3 4 5 6 7 8 9 10\n1 2 3 4 5 6 7 8 9\n";
+    // (A short last line is a truncated row: skipped with a warning. One in the middle is not.)
+    const std::string text = "1 2 3 4 5 6 7 8 9 10\n1 2 3 4 5 6 7 8 9\n3 2 3 4 5 6 7 8 9 10\n";
     try {
         parseColumnText(text, "bad.txt", ColumnTextOptions{});
         FAIL() << "expected a ParseError";
@@ -78,7 +80,8 @@ TEST(ColumnTextReaderTest, WriterOutputReadsBack) {
     writeColumnText(out, t);
     SectionTable back = parseColumnText(out.str(), "roundtrip", ColumnTextOptions{});
     ASSERT_EQ(back.rowCount(), t.rowCount());
-    for (std::size_t i = 0; i < t.radius_mm.size(); ++i) EXPECT_NEAR(back.radius_mm[i], t.radius_mm[i], 1e-9);
+    for (std::size_t i = 0; i < t.radius_mm.size(); ++i)
+        EXPECT_NEAR(back.radius_mm[i], t.radius_mm[i], 1e-9);
     EXPECT_EQ(back.depth_m, t.depth_m);
     EXPECT_EQ(back.p1az_deg, t.p1az_deg);
 }
@@ -87,7 +90,9 @@ TEST(ColumnTextReaderTest, NamesLineIsSkippedAndRadiiOnlyRowsGetSynthesisedDepth
     const std::string named = "DEPTH R1 R2 R3 R4 R5 R6 P1AZ DEVI HAZI\r\n1.0 4 4 4 4 4 4 0 0 0\r\n";
     EXPECT_EQ(parseColumnText(named, "n.txt", ColumnTextOptions{}).rowCount(), 1u);
 
-    const std::string radii = "\xEF\xBB\xBF" "1 2 3 4 5 6 7 8\n2 3 4 5 6 7 8 9\n";
+    const std::string radii =
+        "\xEF\xBB\xBF"
+        "1 2 3 4 5 6 7 8\n2 3 4 5 6 7 8 9\n";
     ColumnTextOptions options;
     options.radiusUnit = LengthUnit::Millimetre;
     options.rowStep_m = 0.5;
@@ -100,4 +105,43 @@ TEST(ColumnTextReaderTest, NamesLineIsSkippedAndRadiiOnlyRowsGetSynthesisedDepth
 
     options.allowRadiiOnly = false;
     EXPECT_THROW(parseColumnText(radii, "r.txt", options), ParseError);
+}
+
+TEST(ColumnTextReaderTest, WriterKeepsEveryCurveAndLeavesOutMissingOnes) {
+    SectionTable t;
+    t.armCount = 4;
+    for (int i = 0; i < 3; ++i) {
+        t.depth_m.push_back(50.0 + 0.5 * i);
+        for (int k = 0; k < 4; ++k) t.radius_mm.push_back(100.0 + i + 0.25 * k);
+        t.devi_deg.push_back(10.0 + i);
+        t.hazi_deg.push_back(270.0);
+        t.rb_deg.push_back(30.0 * i);
+        t.bitSize_mm.push_back(215.9);
+    }
+    t.radius_mm[5] = kNaN;  // a null reading stays null
+    t.extraCurves.push_back({"GR", "gAPI", "gamma ray", {40.0, 41.5, kNaN}});
+    std::ostringstream out;
+    writeColumnText(out, t, LengthUnit::Millimetre);
+    EXPECT_EQ(
+        out.str().substr(0, out.str().find('\n')),
+        "depth_m R1_mm R2_mm R3_mm R4_mm DEVI_deg HAZI_deg RB_deg BS_mm GR[gAPI]");  // no P1AZ
+                                                                                     // column
+    const SectionTable back = parseColumnText(out.str(), "back.txt", ColumnTextOptions{});
+    ASSERT_EQ(back.armCount, 4);
+    EXPECT_EQ(back.depth_m, t.depth_m);
+    for (std::size_t i = 0; i < t.radius_mm.size(); ++i) {
+        if (std::isnan(t.radius_mm[i]))
+            EXPECT_TRUE(std::isnan(back.radius_mm[i])) << i;
+        else
+            EXPECT_DOUBLE_EQ(back.radius_mm[i], t.radius_mm[i]) << i;
+    }
+    EXPECT_TRUE(back.p1az_deg.empty());  // never zeros for a curve the table lacks
+    EXPECT_EQ(back.devi_deg, t.devi_deg);
+    EXPECT_EQ(back.rb_deg, t.rb_deg);
+    EXPECT_EQ(back.bitSize_mm, t.bitSize_mm);
+    ASSERT_EQ(back.extraCurves.size(), 1u);
+    EXPECT_EQ(back.extraCurves[0].mnemonic, "GR");
+    EXPECT_EQ(back.extraCurves[0].unit, "gAPI");
+    EXPECT_EQ(back.extraCurves[0].values[1], 41.5);
+    EXPECT_TRUE(std::isnan(back.extraCurves[0].values[2]));
 }

@@ -23,7 +23,8 @@ bool warned(const LogInfo& info, const std::string& text) {
 const char kFeetInchesRadians[] =
     "~Version\n VERS. 2.0 :\n WRAP. NO :\n~Well\n WELL. TEST-1 : name\n NULL. -999.25 :\n"
     "~Parameter\n BS.IN 8.5 : bit size\n"
-    "~Curve\n DEPT.FT : depth\n R1.IN :\n R2.IN :\n R3.IN :\n R4.IN :\n P1AZ.RAD :\n DEVI.DEG :\n GR.GAPI :\n"
+    "~Curve\n DEPT.FT : depth\n R1.IN :\n R2.IN :\n R3.IN :\n R4.IN :\n P1AZ.RAD :\n DEVI.DEG :\n "
+    "GR.GAPI :\n"
     "~A\n1001.0 4 4.5 4 4.5 3.14159265358979 2 80\n1000.0 4.25 4.25 4.25 -999.25 0 1 75\n";
 }  // namespace
 
@@ -76,7 +77,8 @@ TEST(LogReaderTest, DiametersBecomeRadiiOfOppositePads) {
 }
 
 TEST(LogReaderTest, RepeatedDepthRowsAreSkippedAndCounted) {
-    const std::string text = "1.0 1 1 1 1 1 1 0 0 0\n1.0 2 2 2 2 2 2 0 0 0\n1.1 3 3 3 3 3 3 0 0 0\n";
+    const std::string text =
+        "1.0 1 1 1 1 1 1 0 0 0\n1.0 2 2 2 2 2 2 0 0 0\n1.1 3 3 3 3 3 3 0 0 0\n";
     const LoadedLog log = loadCaliperText(text, "r.txt", ReadOptions{});
     ASSERT_EQ(log.table.rowCount(), 2u);
     EXPECT_DOUBLE_EQ(log.table.radii(0)[0], 25.4);
@@ -93,8 +95,9 @@ TEST(LogReaderTest, ColumnTextWithHeaderNamesIsDetectedAsText) {
 TEST(LogReaderTest, InfoNamesFormatDepthRangeRolesAndNulls) {
     const LoadedLog log = loadCaliperText(kFeetInchesRadians, "u.las", ReadOptions{});
     const std::string out = formatLogInfo(log.info);
-    for (const char* expected : {"LAS 2", "TEST-1", "rows:      2", "R1", "radius", "P1AZ", "pad-1 azimuth",
-                                 ", 1 null\n", "GR", "other", "bit size:  215.9 mm", "(file unit FT)"})
+    for (const char* expected :
+         {"LAS 2", "TEST-1", "rows:      2", "R1", "radius", "P1AZ", "pad-1 azimuth", ", 1 null\n",
+          "GR", "other", "bit size:  215.9 mm", "(file unit FT)"})
         EXPECT_NE(out.find(expected), std::string::npos) << expected << "\n" << out;
 }
 
@@ -109,7 +112,8 @@ TEST(LogReaderTest, ALogWithoutCaliperCurvesIsRefusedByReadCaliperLog) {
         readCaliperLog(path, ReadOptions{}, nullptr);
         FAIL();
     } catch (const ParseError& e) {
-        EXPECT_NE(std::string(e.what()).find("expected caliper curves"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("expected caliper curves"), std::string::npos)
+            << e.what();
     }
 }
 
@@ -137,34 +141,42 @@ TEST(LogReaderTest, ASurveyJsonOrBinaryFileIsRefusedAsACaliperLogWithWhatItIs) {
     const std::string petrel =
         "# WELL TRACE FROM PETREL\n MD X Y Z TVD DX DY AZIM_TN INCL DLS AZIM_GN\n"
         "0 1 2 3 0 0 0 0 0 0 0\n10 1 2 3 10 0 0 5 1 0.1 4\n";
-    EXPECT_NE(refusal([&] { loadCaliperText(petrel, "trace.txt", ReadOptions{}); }).find("found a deviation survey"),
+    EXPECT_NE(refusal([&] {
+                  loadCaliperText(petrel, "trace.txt", ReadOptions{});
+              }).find("found a deviation survey"),
               std::string::npos);
-    EXPECT_NE(refusal([&] { loadCaliperText("MD,INC,AZI\n0,0,0\n10,1,2\n", "s.csv", ReadOptions{}); })
-                  .find("s.csv: expected a caliper log, found a deviation survey"),
+    EXPECT_NE(refusal([&] {
+                  loadCaliperText("MD,INC,AZI\n0,0,0\n10,1,2\n", "s.csv", ReadOptions{});
+              }).find("s.csv: expected a caliper log, found a deviation survey"),
               std::string::npos);
-    EXPECT_NE(refusal([&] { loadCaliperText("\n  {\"md\": [0, 10]}\n", "w.json", ReadOptions{}); })
-                  .find("w.json:2: expected a caliper log (LAS or column text), found JSON"),
+    EXPECT_NE(refusal([&] {
+                  loadCaliperText("\n  {\"md\": [0, 10]}\n", "w.json", ReadOptions{});
+              }).find("w.json:2: expected a caliper log (LAS or column text), found JSON"),
               std::string::npos);
     const std::string binary = std::string("1.0 2 2 2 2 2 2 0 0 0\n2.0 2 2\0 2", 30);
-    EXPECT_NE(refusal([&] { loadCaliperText(binary, "b.bin", ReadOptions{}); })
-                  .find("b.bin:2:8: expected text, found a NUL byte"),
+    EXPECT_NE(refusal([&] {
+                  loadCaliperText(binary, "b.bin", ReadOptions{});
+              }).find("b.bin:2:8: expected text, found a NUL byte"),
               std::string::npos);
     // A caliper text whose names line also names depth, deviation and azimuth is a log.
-    const LoadedLog log =
-        loadCaliperText("DEPTH R1 R2 R3 R4 R5 R6 P1AZ DEVI HAZI\n1.0 4 4 4 4 4 4 0 0 0\n", "c.txt", ReadOptions{});
+    const LoadedLog log = loadCaliperText(
+        "DEPTH R1 R2 R3 R4 R5 R6 P1AZ DEVI HAZI\n1.0 4 4 4 4 4 4 0 0 0\n", "c.txt", ReadOptions{});
     EXPECT_EQ(log.table.rowCount(), 1u);
 }
 
 TEST(LogReaderTest, InfoDescribesASurveyWithItsStationsAndColumns) {
     const std::string path = writeScratch(
-        "info_survey.csv", "Design Report\n\nMD,Inc,Azim.,TVD,N/S,E/W,DLS\n(ft),(Deg),(Deg),(ft),(ft),(ft),(dega/100ft)\n"
-                           "0,0,0,0,0,0,0\n100,1,10,99.99,0.86,0.15,1\n300,3,12,299.8,,,1\n\nEnd of report\n");
+        "info_survey.csv",
+        "Design "
+        "Report\n\nMD,Inc,Azim.,TVD,N/S,E/W,DLS\n(ft),(Deg),(Deg),(ft),(ft),(ft),(dega/100ft)\n"
+        "0,0,0,0,0,0,0\n100,1,10,99.99,0.86,0.15,1\n300,3,12,299.8,,,1\n\nEnd of report\n");
     const LogInfo info = describeLog(path, ReadOptions{});
     EXPECT_TRUE(info.survey);
     EXPECT_EQ(info.format, "deviation survey (comma-separated, column names on line 3)");
     EXPECT_EQ(info.rows, 3u);
     EXPECT_DOUBLE_EQ(info.bottom_m, 300 * 0.3048);
-    EXPECT_NEAR(info.step_m, 200 * 0.3048, 1e-9);  // median of 100 and 200 ft steps: the upper middle
+    EXPECT_NEAR(info.step_m, 200 * 0.3048,
+                1e-9);  // median of 100 and 200 ft steps: the upper middle
     EXPECT_EQ(info.depthUnit, "ft");
     ASSERT_EQ(info.curves.size(), 7u);
     EXPECT_EQ(info.curves[0].role, "measured depth");
@@ -188,9 +200,12 @@ TEST(LogReaderTest, InfoDescribesEveryReferenceFileOrSaysWhyNot) {
     CALIPER3D_REQUIRE_DATA(root / "las_edge_cases");
     const std::map<std::string, std::string> refused = {
         {"missing_a_section.las", ":20: expected data rows after ~A, found none"},
-        {"missing_well_curves_ascii_section.las", ": expected a ~C (curve information) section, found none"},
-        {"clearance_iscwsa_well_data.json", ":1: expected a caliper log (LAS or column text), found JSON"},
-        {"error_mwdrev5_1_iscwsa_data.json", ":1: expected a caliper log (LAS or column text), found JSON"},
+        {"missing_well_curves_ascii_section.las",
+         ": expected a ~C (curve information) section, found none"},
+        {"clearance_iscwsa_well_data.json",
+         ":1: expected a caliper log (LAS or column text), found JSON"},
+        {"error_mwdrev5_1_iscwsa_data.json",
+         ":1: expected a caliper log (LAS or column text), found JSON"},
     };
     const std::map<std::string, std::string> formats = {
         {"1AA072209208W400_WL_0477502_STAR_FIELD.las", "LAS 2.0"},
@@ -198,8 +213,10 @@ TEST(LogReaderTest, InfoDescribesEveryReferenceFileOrSaysWhyNot) {
         {"multifinger40_data.txt", "column text (40 radii per line, no depth)"},
         {"sample_3.0.las", "LAS 3.0"},
         {"sample_wrapped.las", "LAS 1.2, wrapped"},
-        {"100042209506W400.txt", "deviation survey (columns separated by spaces, column names on line 16)"},
-        {"iscwsa_clearance_wells_extracted.csv", "deviation survey (comma-separated, column names on line 2)"},
+        {"100042209506W400.txt",
+         "deviation survey (columns separated by spaces, column names on line 16)"},
+        {"iscwsa_clearance_wells_extracted.csv",
+         "deviation survey (comma-separated, column names on line 2)"},
         {"well9.csv", "deviation survey (comma-separated, column names on line 1)"},
     };
     int files = 0, surveys = 0;
@@ -210,8 +227,9 @@ TEST(LogReaderTest, InfoDescribesEveryReferenceFileOrSaysWhyNot) {
             ++files;
             const auto refusedIt = refused.find(name);
             if (refusedIt != refused.end()) {
-                EXPECT_NE(refusal([&] { describeLog(entry.path().string(), ReadOptions{}); })
-                              .find(entry.path().string() + refusedIt->second),
+                EXPECT_NE(refusal([&] {
+                              describeLog(entry.path().string(), ReadOptions{});
+                          }).find(entry.path().string() + refusedIt->second),
                           std::string::npos);
                 continue;
             }
@@ -236,9 +254,11 @@ namespace {
 std::string las3Array(const std::string& array) {
     std::string text =
         "~Version\n VERS. 3.0 : CWLS LAS 3.0\n WRAP. NO :\n DLM. COMMA : delimiter\n"
-        "~Well\n WELL. ARRAY-1 : well\n NULL. -999.25 :\n~Log_Parameter\n BS.MM 215.9 : bit size {F}\n"
+        "~Well\n WELL. ARRAY-1 : well\n NULL. -999.25 :\n~Log_Parameter\n BS.MM 215.9 : bit size "
+        "{F}\n"
         "~Log_Definition\n DEPT.M : depth {F}\n";
-    for (int k = 1; k <= 8; ++k) text += " " + array + "[" + std::to_string(k) + "].IN : finger radius {AF}\n";
+    for (int k = 1; k <= 8; ++k)
+        text += " " + array + "[" + std::to_string(k) + "].IN : finger radius {AF}\n";
     text += " LITH. : lithology {S}\n GR.GAPI : gamma ray {F}\n~Log_Data | Log_Definition\n";
     for (int r = 0; r < 3; ++r) {
         text += std::to_string(100.0 + 0.1 * r);
@@ -278,8 +298,10 @@ TEST(LogReaderTest, AnUnclosedQuoteInAStringColumnIsAnErrorAtItsColumn) {
     std::string text = las3Array("FING");
     text.replace(text.find("\"SAND, SHALY\""), 13, "\"SAND, SHALY");
     const std::string message = refusal([&] { loadCaliperText(text, "q.las", ReadOptions{}); });
-    EXPECT_NE(message.find("q.las:24:85: "), std::string::npos) << message;  // the second data row, at the quote
-    EXPECT_NE(message.find("expected a closing '\"' for the text of curve LITH, found the end of the line"),
+    EXPECT_NE(message.find("q.las:24:85: "), std::string::npos)
+        << message;  // the second data row, at the quote
+    EXPECT_NE(message.find(
+                  "expected a closing '\"' for the text of curve LITH, found the end of the line"),
               std::string::npos)
         << message;
 }
@@ -298,14 +320,70 @@ std::string utf16(const std::string& ascii, bool bigEndian) {
 TEST(LogReaderTest, Utf16WithAByteOrderMarkIsDecodedEitherWayAndABrokenOneRefusedAtItsLine) {
     for (bool bigEndian : {false, true}) {
         SCOPED_TRACE(bigEndian ? "big-endian" : "little-endian");
-        const LoadedLog log = loadCaliperText(utf16(kFeetInchesRadians, bigEndian), "u16.las", ReadOptions{});
+        const LoadedLog log =
+            loadCaliperText(utf16(kFeetInchesRadians, bigEndian), "u16.las", ReadOptions{});
         EXPECT_EQ(log.table.rowCount(), 2u);
         EXPECT_EQ(log.table.armCount, 4);
         EXPECT_TRUE(warned(log.info, "text is UTF-16; decoded"));
     }
     std::string broken = utf16("~Version\n VERS. 2.0 :\n", false);
     broken += std::string("\x00\xD8", 2);  // a high surrogate with no low one, on line 3
-    EXPECT_NE(refusal([&] { loadCaliperText(broken, "bad16.las", ReadOptions{}); })
-                  .find("bad16.las:3: expected UTF-16 text, found an unpaired surrogate"),
+    EXPECT_NE(refusal([&] {
+                  loadCaliperText(broken, "bad16.las", ReadOptions{});
+              }).find("bad16.las:3: expected UTF-16 text, found an unpaired surrogate"),
               std::string::npos);
+}
+
+TEST(LogReaderTest, ColumnTextNamesChooseRolesAndUnitsInAnyOrder) {
+    // Names with units in brackets or after '_'; columns in any order; GR kept.
+    const std::string text =
+        "DEPTH[ft] GR HAZI_deg DEVI_deg R1(mm) R2(mm) R3(mm) R4(mm) P1AZ_rad\n"
+        "1000 55 90 2 100 101 102 103 0\n"
+        "1000.5 56 90 2 110 111 112 113 3.14159265358979\n";
+    const LoadedLog log = loadCaliperText(text, "named.txt", ReadOptions{});
+    ASSERT_EQ(log.table.rowCount(), 2u);
+    EXPECT_EQ(log.table.armCount, 4);
+    EXPECT_DOUBLE_EQ(log.table.depth_m[1], 1000.5 * 0.3048);
+    EXPECT_DOUBLE_EQ(log.table.radii(1)[3], 113.0);
+    EXPECT_NEAR(log.table.p1az_deg[1], 180.0, 1e-9);
+    EXPECT_DOUBLE_EQ(log.table.hazi_deg[0], 90.0);
+    ASSERT_EQ(log.table.extraCurves.size(), 1u);
+    EXPECT_EQ(log.table.extraCurves[0].mnemonic, "GR");
+    EXPECT_EQ(log.table.extraCurves[0].values, (std::vector<double>{55.0, 56.0}));
+    EXPECT_EQ(log.info.format, "column text (9 named columns, names on line 1)");
+}
+
+TEST(LogReaderTest, ColumnTextNamesWithoutUnitsTakeTheTextDefaultsAndSaySo) {
+    // Ten columns, and the names say that three of them are not radii: without
+    // names this line would read as six radii (P1AZ, DEVI, HAZI as R4..R6).
+    const std::string text =
+        "# a comment\n"
+        "DEPTH R1 R2 R3 P1AZ DEVI HAZI RB BS GR\n"
+        "100 4 4 4 10 1 20 0 8.5 70\n";
+    const LoadedLog log = loadCaliperText(text, "units.txt", ReadOptions{});
+    EXPECT_EQ(log.table.armCount, 3);
+    EXPECT_DOUBLE_EQ(log.table.radii(0)[2], 4.0 * 25.4);  // inches, the text default
+    EXPECT_DOUBLE_EQ(log.table.bitSize_mm[0], 8.5 * 25.4);
+    EXPECT_DOUBLE_EQ(log.table.rb_deg[0], 0.0);
+    EXPECT_EQ(log.info.curves[1].unit, "in (assumed)");
+    EXPECT_NE(formatLogInfo(log.info).find("R1           in (assumed) radius"), std::string::npos)
+        << formatLogInfo(log.info);
+}
+
+TEST(LogReaderTest, ColumnTextCommentNamesCountOnlyWhenTheyFitTheData) {
+    // A '#' line of names right before the data, starting with a depth: used.
+    const LoadedLog named =
+        loadCaliperText("# depth_m R1_mm R2_mm R3_mm\n1 100 100 100\n", "c.txt", ReadOptions{});
+    EXPECT_EQ(named.table.armCount, 3);
+    EXPECT_DOUBLE_EQ(named.table.radii(0)[0], 100.0);
+    // A plain comment is a comment: the reference layout (6 arms) reads the row.
+    const LoadedLog plain =
+        loadCaliperText("# logged 2024\n1 4 4 4 4 4 4 0 0 0\n", "p.txt", ReadOptions{});
+    EXPECT_EQ(plain.table.armCount, 6);
+    // Names that do not fit the columns are ignored with a warning naming their line.
+    const LoadedLog misfit =
+        loadCaliperText("\nDEPTH R1 R2\n1 4 4 4 4 4 4 0 0 0\n", "m.txt", ReadOptions{});
+    EXPECT_EQ(misfit.table.armCount, 6);
+    EXPECT_TRUE(warned(misfit.info, "3 column names over 10 columns of numbers"));
+    EXPECT_EQ(misfit.info.diagnostics.warnings.at(0).line, 2u);
 }
