@@ -29,6 +29,10 @@ struct ClassificationRules {
     double rotationWindow_m = 5.0;       //     per this length
     double deviatedInclination_deg = 5.0;  // above this the high-side test applies
     double highSideTolerance_deg = 15.0;   // major axis within this of high/low side: keyseat
+    // Below this dmax - dmin the section is round: it has no major axis, and its
+    // major_azimuth_deg and major_from_high_side_deg are empty (a fit through six
+    // pads of a round hole 15 mm off the tool gives 0.13 mm of false elongation).
+    double axisMinElongation_mm = 0.5;
 };
 
 // What the classifier needs of one section.

@@ -25,6 +25,8 @@ const std::vector<RuleSetting>& ruleSettings() {
          &ClassificationRules::deviatedInclination_deg},
         {"high_side_tolerance_deg", "major axis within this of the high/low side: keyseat",
          &ClassificationRules::highSideTolerance_deg},
+        {"axis_min_elongation_mm", "below this dmax - dmin a section has no major-axis azimuth",
+         &ClassificationRules::axisMinElongation_mm},
     };
     return kSettings;
 }

@@ -48,7 +48,7 @@ struct WorldAngles {
 // other end from a formula that rounds differently; there the original
 // formulas decide, so that the report prints what they give.
 constexpr double kSeam_deg = 1e-9;
-constexpr double kUndefinedBelow_mm = 0.01;
+constexpr double kCentredBelow_mm = 0.01;
 bool nearSeam(double a, double period) {
     return a < kSeam_deg || a > period - kSeam_deg;
 }
@@ -57,13 +57,14 @@ bool nearSeam(double a, double period) {
 // inPlaneAzimuth_deg and angleFromHighSide_deg give (to rounding) without
 // their angle -> sin/cos -> atan2 round trips and the high side's own
 // trigonometry; one atan2 per angle remains.
-WorldAngles worldAngles(const SectionFrame& f, const PathPoint& p, const BatchShape& s) {
+WorldAngles worldAngles(const SectionFrame& f, const PathPoint& p, const BatchShape& s,
+                        double axisMinElongation_mm) {
     WorldAngles out;
-    // A round section has no major axis, and a centred tool no offset
-    // direction: what the fit gives there is the direction of rounding noise.
-    // Below a hundredth of a millimetre (what the report prints) both are NaN.
-    const bool round = !(s.dmax_mm - s.dmin_mm >= kUndefinedBelow_mm);
-    const bool centred = !(s.centreOffset_mm >= kUndefinedBelow_mm);
+    // A round section has no major axis (ClassificationRules::axisMinElongation_mm),
+    // and a centred tool no offset direction: below a hundredth of a millimetre
+    // (what the report prints) its direction is that of rounding noise.
+    const bool round = !(s.dmax_mm - s.dmin_mm >= axisMinElongation_mm);
+    const bool centred = !(s.centreOffset_mm >= kCentredBelow_mm);
     out.majorAzimuth_deg = out.majorFromHighSide_deg = out.centreOffsetAzimuth_deg = std::nan("");
     if (!round) {
         // Azimuth of the horizontal projection; none within 0.06 deg of vertical
@@ -193,7 +194,8 @@ WellAnalysis analyseWell(const WellGeometry& g, const AnalysisOptions& options) 
                 r.dmin_mm = shape.dmin_mm;
                 r.dmax_mm = shape.dmax_mm;
                 r.ellipticity = shape.ellipticity;
-                const WorldAngles w = worldAngles(g.frame(row), p, shape);
+                const WorldAngles w =
+                    worldAngles(g.frame(row), p, shape, options.rules.axisMinElongation_mm);
                 r.majorAzimuth_deg = w.majorAzimuth_deg;
                 r.majorFromHighSide_deg = w.majorFromHighSide_deg;
                 r.centreOffset_mm = shape.centreOffset_mm;

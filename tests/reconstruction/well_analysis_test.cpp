@@ -115,6 +115,15 @@ TEST(WellAnalysisTest, OffCentreToolReportsTheHoleCentreOffsetAndItsAzimuth) {
         EXPECT_NEAR(r.dmax_mm, 215.9, 0.5);
         EXPECT_EQ(r.cls, BoreholeClass::InGauge);
     }
+    // Six pads of the same round hole: the spline adds 0.13 mm of elongation whose
+    // axis turns with the tool; below axis_min_elongation_mm there is no axis to report.
+    const Analysed six = analyse("offcentre", 50.0, 0.5, 6);
+    for (const SectionResult& r : six.analysis.sections) {
+        EXPECT_LT(r.dmax_mm - r.dmin_mm, 0.5);
+        EXPECT_TRUE(std::isnan(r.majorAzimuth_deg)) << r.md_m;
+        EXPECT_NEAR(r.centreOffset_mm, 15.0, 0.2);
+        EXPECT_NEAR(r.centreOffsetAzimuth_deg, 90.0, 0.5);
+    }
 }
 
 TEST(WellAnalysisTest, StuckArmIsInterpolatedCountedAndLeavesNoSpike) {
@@ -300,8 +309,8 @@ TEST(WellAnalysisTest, ResultsAreTheOneSectionFunctionsResults) {
                   !same(r.centreOffset_mm, s.centreOffset_mm);
         const SectionFrame& f = g.frame(i);
         const PathPoint& p = g.path()[i];
-        // Round (to a hundredth of a millimetre): no major axis; centred: no offset direction.
-        if (s.dmax_mm - s.dmin_mm < 0.01) {
+        // Round: no major axis; centred (to a hundredth of a millimetre): no offset direction.
+        if (s.dmax_mm - s.dmin_mm < options.rules.axisMinElongation_mm) {
             EXPECT_TRUE(std::isnan(r.majorAzimuth_deg)) << i;
             EXPECT_TRUE(std::isnan(r.majorFromHighSide_deg)) << i;
         } else {
