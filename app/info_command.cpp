@@ -4,13 +4,16 @@
 #include "app/input_options.h"
 #include "app/verb_parser.h"
 #include "io/log_reader.h"
+#include "io/survey_reader.h"
+#include "reconstruction/survey_interpolation.h"
 
 namespace caliper3d::app {
 
 int runInfo(const QStringList& args) {
     return guardedVerb("info", [&]() -> int {
-        VerbParser verb("info", "FILE...",
-                        "Describe caliper logs: format, depth range, curves and their roles, nulls, warnings.");
+        VerbParser verb(
+            "info", "FILE...",
+            "Describe caliper logs: format, depth range, curves and their roles, nulls, warnings.");
         addInputOptions(verb.parser());
         if (!verb.parse(args, 1)) return kExitOk;
         const InputOptions options = inputOptionsFrom(verb.parser());
@@ -19,6 +22,14 @@ int runInfo(const QStringList& args) {
             try {
                 const io::LogInfo info = io::describeLog(file, options.read);
                 std::fputs(io::formatLogInfo(info).c_str(), stdout);
+                if (info.survey) {
+                    // The positions a survey writes, checked against minimum curvature.
+                    io::SurveyReadOptions survey;
+                    if (options.read.depthUnit) survey.depthUnit = options.read.depthUnit;
+                    const std::string check = reconstruction::describeSurveyPositionCheck(
+                        reconstruction::checkSurveyPositions(io::readSurvey(file, survey)));
+                    if (!check.empty()) std::printf("check:     %s\n", check.c_str());
+                }
             } catch (const std::exception& e) {
                 ++failures;
                 std::fprintf(stderr, "caliper3d info: %s\n", e.what());

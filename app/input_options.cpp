@@ -195,12 +195,25 @@ reconstruction::GeometryOptions geometryOptions(const InputOptions& options) {
 }
 
 reconstruction::GeometryOptions geometryOptions(const InputOptions& options, const WellSource& well,
-                                                const reconstruction::Wellhead& origin) {
+                                                const reconstruction::Wellhead& origin,
+                                                io::Diagnostics* diagnostics) {
     reconstruction::GeometryOptions g = geometryOptions(options);
     if (!well.surveyPath.empty()) {
         io::SurveyReadOptions survey;
         if (options.read.depthUnit) survey.depthUnit = options.read.depthUnit;
-        g.survey = reconstruction::surveyStations(io::readSurvey(well.surveyPath, survey));
+        const io::SurveyTable table = io::readSurvey(well.surveyPath, survey, diagnostics);
+        g.survey = reconstruction::surveyStations(table);
+        const reconstruction::SurveyPositionCheck check =
+            reconstruction::checkSurveyPositions(table);
+        if (diagnostics &&
+            (check.maxTvdDifference_m > reconstruction::kSurveyPositionTolerance_m ||
+             check.maxHorizontalDifference_m > reconstruction::kSurveyPositionTolerance_m))
+            diagnostics->warn(
+                well.surveyPath, table.headerLine,
+                "the positions the file writes disagree with minimum curvature from its own "
+                "MD, inclination and azimuth: " +
+                    reconstruction::describeSurveyPositionCheck(check) +
+                    " (the path drawn is the minimum-curvature one)");
     }
     if (well.wellhead) g.wellheadOffset = reconstruction::wellheadOffset(*well.wellhead, origin);
     return g;

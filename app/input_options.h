@@ -60,9 +60,11 @@ reconstruction::Wellhead parseWellhead(const std::string& text);
 reconstruction::GeometryOptions geometryOptions(const InputOptions& options);
 // Geometry options of one well of a scene whose origin is the wellhead
 // `origin`: reads the well's survey (throws io::ParseError naming the survey
-// file and line) and offsets it by its wellhead.
+// file and line) and offsets it by its wellhead. The survey's warnings, and one
+// when the positions it writes disagree with minimum curvature, go to `diagnostics`.
 reconstruction::GeometryOptions geometryOptions(const InputOptions& options, const WellSource& well,
-                                                const reconstruction::Wellhead& origin);
+                                                const reconstruction::Wellhead& origin,
+                                                io::Diagnostics* diagnostics = nullptr);
 // The scene origin: the first well's wellhead (zero when none is given).
 reconstruction::Wellhead sceneOrigin(const std::vector<WellSource>& wells);
 

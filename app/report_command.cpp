@@ -114,7 +114,7 @@ int runReport(const QStringList& args) {
         auto table = std::make_shared<const io::SectionTable>(
             readWellFile(well.path, options, &diagnostics));
         const reconstruction::WellGeometry geometry(
-            table, geometryOptions(options, well, sceneOrigin({well})));
+            table, geometryOptions(options, well, sceneOrigin({well}), &diagnostics));
         const reconstruction::WellAnalysis result = reconstruction::analyseWell(geometry, analysis);
 
         // Each output goes to its file, or to standard output for '-' (one of them at most).

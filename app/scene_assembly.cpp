@@ -29,7 +29,7 @@ AssembledScene assembleScene(const std::vector<WellSource>& wells, const InputOp
         try {
             io::Diagnostics diagnostics;
             const reconstruction::GeometryOptions geometryOpts =
-                geometryOptions(options, well, origin);
+                geometryOptions(options, well, origin, &diagnostics);
             auto table =
                 std::make_shared<const io::SectionTable>(readWellFile(file, options, &diagnostics));
             auto geometry =

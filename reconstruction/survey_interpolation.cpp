@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
+#include <cstdio>
 #include <stdexcept>
 
 #include <glm/geometric.hpp>
@@ -25,7 +27,8 @@ SurveyStation fromTangent(double md, const Ned& t, double fallbackAzi_deg) {
     const double inc = glm::degrees(std::atan2(horizontal, t.z));
     // A vertical tangent has no azimuth: keep the course's so that the
     // position formula (which multiplies it by sin inc = 0) is unaffected.
-    const double azi = horizontal < 1e-12 ? fallbackAzi_deg : wrap360(glm::degrees(std::atan2(t.y, t.x)));
+    const double azi =
+        horizontal < 1e-12 ? fallbackAzi_deg : wrap360(glm::degrees(std::atan2(t.y, t.x)));
     return {md, inc, azi};
 }
 }  // namespace
@@ -49,7 +52,8 @@ SurveyStation stationOnArc(const SurveyStation& a, const SurveyStation& b, doubl
 
 std::vector<PathPoint> interpolateSurveyPath(const std::vector<SurveyStation>& survey,
                                              const std::vector<double>& md) {
-    if (survey.size() < 2) throw std::invalid_argument("survey interpolation needs at least two stations");
+    if (survey.size() < 2)
+        throw std::invalid_argument("survey interpolation needs at least two stations");
     const std::vector<PathPoint> stations = minimumCurvaturePath(survey);
     std::vector<PathPoint> out(md.size());
     std::size_t course = 0;  // index of the station that starts the current course
@@ -74,7 +78,9 @@ std::vector<PathPoint> interpolateSurveyPath(const std::vector<SurveyStation>& s
             p.tvd = base.tvd + ds * t.z;
             p.inc_deg = s.inc_deg;
             p.azi_deg = s.azi_deg;
-            p.dls_degPer30m = (d == b.md || d == a.md) ? stations[below ? course + 1 : course].dls_degPer30m : 0.0;
+            p.dls_degPer30m = (d == b.md || d == a.md)
+                                  ? stations[below ? course + 1 : course].dls_degPer30m
+                                  : 0.0;
         } else {
             const SurveyStation here = stationOnArc(a, b, d);
             const MinimumCurvatureStep step = minimumCurvatureStep(a, here);
@@ -87,10 +93,103 @@ std::vector<PathPoint> interpolateSurveyPath(const std::vector<SurveyStation>& s
         }
         if (i > 0) {
             const PathPoint& q = out[i - 1];
-            const double c = glm::dot(holeTangent(q.inc_deg, q.azi_deg), holeTangent(p.inc_deg, p.azi_deg));
+            const double c =
+                glm::dot(holeTangent(q.inc_deg, q.azi_deg), holeTangent(p.inc_deg, p.azi_deg));
             p.dogleg_deg = glm::degrees(std::acos(std::clamp(c, -1.0, 1.0)));
         }
         out[i] = p;
+    }
+    return out;
+}
+
+SurveyPositionCheck checkSurveyPositions(const io::SurveyTable& survey) {
+    SurveyPositionCheck check;
+    const std::vector<PathPoint> path = minimumCurvaturePath(surveyStations(survey));
+    auto have = [](const std::vector<double>& v, std::size_t i) {
+        return i < v.size() && std::isfinite(v[i]);
+    };
+    std::size_t tvd0 = path.size(), ne0 = path.size();
+    for (std::size_t i = 0; i < path.size(); ++i) {
+        if (have(survey.tvd_m, i)) {
+            if (tvd0 == path.size()) tvd0 = i;
+            const double d =
+                std::abs((survey.tvd_m[i] - survey.tvd_m[tvd0]) - (path[i].tvd - path[tvd0].tvd));
+            ++check.tvdStations;
+            if (d > check.maxTvdDifference_m) {
+                check.maxTvdDifference_m = d;
+                check.maxTvdAt_m = path[i].md;
+            }
+        }
+        if (have(survey.north_m, i) && have(survey.east_m, i)) {
+            if (ne0 == path.size()) ne0 = i;
+            const double d = std::hypot(
+                (survey.north_m[i] - survey.north_m[ne0]) - (path[i].north - path[ne0].north),
+                (survey.east_m[i] - survey.east_m[ne0]) - (path[i].east - path[ne0].east));
+            ++check.horizontalStations;
+            if (d > check.maxHorizontalDifference_m) {
+                check.maxHorizontalDifference_m = d;
+                check.maxHorizontalAt_m = path[i].md;
+            }
+        }
+    }
+    if (check.horizontalStations > 1) {
+        // Least-squares similarity (turn and scale) of the computed displacements
+        // onto the file's, as complex numbers east + i north: file ~ k * computed.
+        using Complex = std::complex<double>;
+        Complex num(0.0, 0.0);
+        double den = 0.0;
+        auto displacements = [&](std::size_t i) {
+            return std::pair<Complex, Complex>{
+                {path[i].east - path[ne0].east, path[i].north - path[ne0].north},
+                {survey.east_m[i] - survey.east_m[ne0], survey.north_m[i] - survey.north_m[ne0]}};
+        };
+        for (std::size_t i = ne0; i < path.size(); ++i) {
+            if (!have(survey.north_m, i) || !have(survey.east_m, i)) continue;
+            const auto [ours, theirs] = displacements(i);
+            num += std::conj(ours) * theirs;
+            den += std::norm(ours);
+        }
+        if (den > 0.0) {
+            const Complex k = num / den;
+            check.rotation_deg =
+                -glm::degrees(std::arg(k));  // counter-clockwise in (east, north) = anticlockwise
+            check.scale = std::abs(k);
+            for (std::size_t i = ne0; i < path.size(); ++i) {
+                if (!have(survey.north_m, i) || !have(survey.east_m, i)) continue;
+                const auto [ours, theirs] = displacements(i);
+                check.maxHorizontalAfterFit_m =
+                    std::max(check.maxHorizontalAfterFit_m, std::abs(k * ours - theirs));
+            }
+        }
+    }
+    return check;
+}
+
+std::string describeSurveyPositionCheck(const SurveyPositionCheck& c) {
+    char buf[256];
+    std::string out;
+    if (c.tvdStations > 0) {
+        std::snprintf(
+            buf, sizeof buf,
+            "TVD within %.3f m of minimum curvature over %zu stations (largest at MD %.2f m)",
+            c.maxTvdDifference_m, c.tvdStations, c.maxTvdAt_m);
+        out += buf;
+    }
+    if (c.horizontalStations > 0) {
+        std::snprintf(buf, sizeof buf,
+                      "%snorth/east within %.3f m over %zu stations (largest at MD %.2f m)",
+                      out.empty() ? "" : "; ", c.maxHorizontalDifference_m, c.horizontalStations,
+                      c.maxHorizontalAt_m);
+        out += buf;
+        if (c.maxHorizontalDifference_m > kSurveyPositionTolerance_m &&
+            c.maxHorizontalAfterFit_m <= kSurveyPositionTolerance_m) {
+            std::snprintf(
+                buf, sizeof buf,
+                ", within %.3f m once turned %.4f deg clockwise and scaled by %.6f (grid north "
+                "and grid scale?)",
+                c.maxHorizontalAfterFit_m, c.rotation_deg, c.scale);
+            out += buf;
+        }
     }
     return out;
 }

@@ -145,6 +145,31 @@ TEST(ReportCommandTest, SurveyReplacesTheLogsPathAndMatchesTheExactArc) {
     EXPECT_NEAR(report.number(10, "inc_deg"), 0.5, 1e-3);  // 5 m
 }
 
+TEST(ReportCommandTest, ASurveyWhoseTvdDisagreesWithItsAnglesIsWarnedAbout) {
+    // The 3 deg/30 m build of the test above, with a TVD column that ignores the
+    // build (TVD = MD): minimum curvature gives 99.493 m at 100 m, 0.507 m less.
+    const std::string log = synth("circle", 100.0, 0.5);
+    const auto survey = scratch("report_tvd_survey.csv");
+    {
+        std::ofstream out(survey);
+        out << "MD,Inc,Azi,TVD\n";
+        for (int md = 0; md <= 100; md += 10) out << md << "," << md * 0.1 << ",90," << md << "\n";
+    }
+    const CommandRun r = runCaliper3d("report " + log + " -o " + scratch("report_tvd.csv").string() +
+                                      " --survey " + survey.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find(survey.string() + ":1: warning: the positions the file writes disagree with "
+                                              "minimum curvature"),
+              std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("TVD within 0.507 m of minimum curvature over 11 stations (largest at MD 100.00 m)"),
+              std::string::npos)
+        << r.output;
+    const CommandRun info = runCaliper3d("info " + survey.string());
+    EXPECT_EQ(info.status, 0) << info.output;
+    EXPECT_NE(info.output.find("check:     TVD within 0.507 m"), std::string::npos) << info.output;
+}
+
 TEST(ReportCommandTest, WellheadLasAndStandardOutput) {
     const std::string log = synth("example", 100.0, 0.5);
     const auto las = scratch("report_example.las");

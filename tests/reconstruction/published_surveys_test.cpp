@@ -125,3 +125,18 @@ TEST(PublishedSurveysTest, InterpolatingIscwsaOneAtItsOwnStationsReproducesThem)
         EXPECT_NEAR(interpolated[i].east, exact[i].east, 1e-6);
     }
 }
+
+// The Petrel trace writes DX/DY in grid north (UTM zone 12, its header says so) and
+// azimuths in true north: the check finds the grid convergence (AZIM_TN - AZIM_GN =
+// 0.0721 deg in the file) and a grid scale factor, and nothing else left over.
+TEST(PublishedSurveysTest, PositionCheckFindsThePetrelTracesGridNorthAndScale) {
+    const auto file = surveys() / "100042209506W400.txt";
+    CALIPER3D_REQUIRE_DATA(file);
+    const SurveyPositionCheck check = checkSurveyPositions(io::readSurvey(file.string(), {}));
+    EXPECT_EQ(check.tvdStations, 391u);
+    EXPECT_LT(check.maxTvdDifference_m, 0.001);
+    EXPECT_GT(check.maxHorizontalDifference_m, 2.0);
+    EXPECT_NEAR(check.rotation_deg, -0.0721, 0.0005);
+    EXPECT_NEAR(check.scale, 0.9996, 0.00005);
+    EXPECT_LT(check.maxHorizontalAfterFit_m, 0.01);
+}
