@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <exception>
 #include <memory>
+#include <vector>
 
 #include <Inventor/nodes/SoSeparator.h>
 
@@ -44,6 +45,20 @@ AssembledScene assembleScene(const std::vector<WellSource>& wells, const InputOp
                 file.c_str(), table->rowCount(), scene.segmentCount(), scene.fullDetailTriangles(),
                 diagnostics.warningCount);
             printWarnings(diagnostics);
+            // Arms the sections were drawn without (null, closed, beyond reach): say so, as report
+            // does.
+            std::size_t repairedArms = 0, repairedSections = 0;
+            std::vector<double> radii(static_cast<std::size_t>(table->armCount));
+            for (std::size_t row = 0; row < table->rowCount(); ++row) {
+                const int repaired = geometry->repairRadii(row, radii.data());
+                repairedArms += static_cast<std::size_t>(repaired);
+                repairedSections += repaired > 0;
+            }
+            if (repairedSections > 0)
+                std::fprintf(stderr,
+                             "%s: warning: %zu arms interpolated on %zu sections (missing, closed "
+                             "or beyond reach)\n",
+                             file.c_str(), repairedArms, repairedSections);
         } catch (const std::exception& e) {
             ++out.failures;
             std::fprintf(stderr, "caliper3d: %s\n", e.what());

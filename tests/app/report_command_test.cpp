@@ -155,15 +155,19 @@ TEST(ReportCommandTest, ASurveyWhoseTvdDisagreesWithItsAnglesIsWarnedAbout) {
         out << "MD,Inc,Azi,TVD\n";
         for (int md = 0; md <= 100; md += 10) out << md << "," << md * 0.1 << ",90," << md << "\n";
     }
-    const CommandRun r = runCaliper3d("report " + log + " -o " + scratch("report_tvd.csv").string() +
-                                      " --survey " + survey.string());
+    const CommandRun r =
+        runCaliper3d("report " + log + " -o " + scratch("report_tvd.csv").string() + " --survey " +
+                     survey.string());
     ASSERT_EQ(r.status, 0) << r.output;
-    EXPECT_NE(r.output.find(survey.string() + ":1: warning: the positions the file writes disagree with "
-                                              "minimum curvature"),
-              std::string::npos)
+    EXPECT_NE(
+        r.output.find(survey.string() + ":1: warning: the positions the file writes disagree with "
+                                        "minimum curvature"),
+        std::string::npos)
         << r.output;
-    EXPECT_NE(r.output.find("TVD within 0.507 m of minimum curvature over 11 stations (largest at MD 100.00 m)"),
-              std::string::npos)
+    EXPECT_NE(
+        r.output.find(
+            "TVD within 0.507 m of minimum curvature over 11 stations (largest at MD 100.00 m)"),
+        std::string::npos)
         << r.output;
     const CommandRun info = runCaliper3d("info " + survey.string());
     EXPECT_EQ(info.status, 0) << info.output;
@@ -261,4 +265,19 @@ TEST(ReportCommandTest, RealFmiLogReportsPadAzimuthOffsetNearZero) {
     const std::size_t at = r.output.find(key);
     ASSERT_NE(at, std::string::npos) << r.output;
     EXPECT_LT(std::abs(std::stod(r.output.substr(at + key.size()))), 1.5) << r.output;
+}
+
+TEST(ReportCommandTest, ReportAndExportBothSayHowManyArmsWereInterpolated) {
+    // synth profile "stuck-arm": arm 3 reads nothing over 0.4-0.6 L.
+    const std::string log = synth("stuck-arm", 20.0, 0.5);
+    const CommandRun report =
+        runCaliper3d("report " + log + " -o " + scratch("report_stuck.csv").string());
+    ASSERT_EQ(report.status, 0) << report.output;
+    const std::string counted = "9 arms interpolated on 9 sections";  // 8.0, 8.5, ..., 12.0 m
+    EXPECT_NE(report.output.find(counted), std::string::npos) << report.output;
+    const CommandRun exported =
+        runCaliper3d("export " + log + " -o " + scratch("report_stuck.iv").string());
+    ASSERT_EQ(exported.status, 0) << exported.output;
+    EXPECT_NE(exported.output.find(log + ": warning: " + counted), std::string::npos)
+        << exported.output;
 }
