@@ -61,8 +61,8 @@ io::LengthUnit unit(const QCommandLineParser& parser, const char* name) {
 InputOptions inputOptionsFrom(const QCommandLineParser& parser) {
     InputOptions o;
     const double arms = number(parser, "arms");
-    if (arms < 3 || arms > 256 || arms != std::floor(arms))
-        throw UsageError("--arms: expected a whole number from 3 to 256");
+    if (arms < 2 || arms > 256 || arms != std::floor(arms))
+        throw UsageError("--arms: expected a whole number from 2 to 256");
     o.read.armCount = static_cast<int>(arms);
     if (parser.isSet("depth-unit")) o.read.depthUnit = unit(parser, "depth-unit");
     if (parser.isSet("radius-unit")) o.read.radiusUnit = unit(parser, "radius-unit");

@@ -1,3 +1,4 @@
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -17,9 +18,10 @@ int runSynth(const QStringList& args) {
         VerbParser verb("synth", "-o OUT", "Write a synthetic caliper log with known features.");
         QCommandLineParser& p = verb.parser();
         p.addOption({{"o", "output"},
-                     "Output log: LAS 2.0 when the name ends in .las, otherwise column text (depth "
-                     "R1..RN P1AZ DEVI HAZI).",
+                     "Output log: LAS 2.0 when the name ends in .las, otherwise named column text "
+                     "(depth R1..RN P1AZ DEVI HAZI RB BS).",
                      "OUT"});
+        p.addOption({"arms", "Caliper arms, 2 to 256 (default 6; 2 = one diameter).", "N", "6"});
         p.addOption({"length", "Well length in metres (default 300).", "M", "300"});
         p.addOption({"step", "Sampling step in metres (default 0.05).", "M", "0.05"});
         std::string names;
@@ -46,6 +48,11 @@ int runSynth(const QStringList& args) {
         } catch (const std::invalid_argument& e) {
             throw UsageError(std::string("caliper3d synth: ") + e.what());
         }
+        double arms = 0;
+        if (!io::parseNumber(verb.value("arms"), arms) || arms < 2 || arms > 256 ||
+            arms != std::floor(arms))
+            throw UsageError("caliper3d synth: --arms takes a whole number from 2 to 256");
+        spec.armCount = static_cast<int>(arms);
         const io::SectionTable table = reconstruction::makeSyntheticWell(spec);
         const std::string out = verb.value("output");
         const std::string ext = std::filesystem::path(out).extension().string();

@@ -130,9 +130,14 @@ CurvePlan makeCurvePlan(const std::vector<ColumnSpec>& columns, const LasHeader*
         info.armSource = "none: no caliper curves found (name them with --radii or --diameters)";
     }
     plan.armCount = static_cast<int>(plan.armColumn.size());
-    if (plan.armCount > 0 && plan.armCount < 3)
-        throw ParseError(file, 0, 0,
-                         "expected at least 3 arm radii, found " + std::to_string(plan.armCount));
+    if (plan.armCount == 1)
+        throw ParseError(file, spec(plan.armColumn.front()).line, 0,
+                         "expected at least 2 arm radii (or one diameter), found 1: " +
+                             spec(plan.armColumn.front()).mnemonic);
+    if (plan.armCount == 2)
+        diagnostics.warn(
+            file, spec(plan.armColumn.front()).line,
+            "two pads measure one diameter: each section is drawn as the circle through both");
 
     const int angleRoles[4] = {roles.padAzimuth, roles.deviation, roles.holeAzimuth,
                                roles.relativeBearing};

@@ -95,7 +95,8 @@ SectionTable readCaliperLog(const std::string& path, const ReadOptions& options,
     LoadedLog loaded = loadCaliperLog(path, options);
     if (loaded.table.armCount == 0)
         throw ParseError(path, 0, 0,
-                         "expected caliper curves (radii R1..Rn, RAD1..n, fingers F01..Fnn, or diameters C1, C2), "
+                         "expected caliper curves (radii R1..Rn, RAD1..n, fingers F01..Fnn, diameters C1, C2, or one "
+                         "diameter CALI), "
                          "found none among " + std::to_string(loaded.info.curves.size()) +
                              " curves; name them with --radii or --diameters");
     if (diagnostics) {

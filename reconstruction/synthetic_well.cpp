@@ -128,8 +128,8 @@ double rayToEllipse(double phi, double a, double b, double theta, glm::dvec2 c) 
 io::SectionTable makeSyntheticWell(const SyntheticWellSpec& spec) {
     if (!(spec.step_m > 0.0) || !(spec.length_m > spec.step_m))
         throw std::invalid_argument("synthetic well: need length > step > 0");
-    if (spec.armCount < 3 || spec.armCount > 256)
-        throw std::invalid_argument("synthetic well: arm count must be 3..256");
+    if (spec.armCount < 2 || spec.armCount > 256)
+        throw std::invalid_argument("synthetic well: arm count must be 2..256");
     io::SectionTable t;
     t.source = "synthetic";
     t.armCount = spec.armCount;

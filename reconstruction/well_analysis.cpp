@@ -136,7 +136,7 @@ WellAnalysis analyseWell(const WellGeometry& g, const AnalysisOptions& options) 
     prefaultPages(a.sections.data(), rows * sizeof(SectionResult), threads);
     a.sections.resize(rows);
     if (rows == 0) return a;
-    const SectionBatchAnalyzer analyzer(t.armCount, g.options().splinePoints);
+    const SectionBatchAnalyzer analyzer(g.knotCount(), g.options().splinePoints);
     const int knots = analyzer.knots();
     const double bitOverride = options.bitSize_mm;
 
@@ -170,7 +170,7 @@ WellAnalysis analyseWell(const WellGeometry& g, const AnalysisOptions& options) 
             for (std::size_t l = 0; l < kLanes; ++l) {
                 // A short last group repeats its last section in the spare lanes.
                 const std::size_t row = group + std::min(l, n - 1);
-                repaired[l] = g.repairRadii(row, s.row.data());
+                repaired[l] = g.sectionKnots(row, s.row.data());
                 for (int k = 0; k < knots; ++k)
                     s.pads[static_cast<std::size_t>(k) * kLanes + l] = s.row[k];
             }

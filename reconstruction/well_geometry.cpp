@@ -54,11 +54,13 @@ WellGeometry::WellGeometry(std::shared_ptr<const io::SectionTable> table,
                            const GeometryOptions& options)
     : m_table(std::move(table)),
       m_options(options),
-      m_sampler(std::max(3, m_table ? m_table->armCount : 3), options.splinePoints) {
+      m_sampler(sectionKnotCount(m_table ? m_table->armCount : 3), options.splinePoints) {
     const io::SectionTable& t = *m_table;
     const std::size_t rows = t.rowCount();
-    if (t.armCount < 3) throw std::invalid_argument(t.source + ": need at least 3 arms to draw a section");
-    if (rows < 2) throw std::invalid_argument(t.source + ": need at least 2 sections to draw a hole");
+    if (t.armCount < 2)
+        throw std::invalid_argument(t.source + ": need at least 2 arms to draw a section");
+    if (rows < 2)
+        throw std::invalid_argument(t.source + ": need at least 2 sections to draw a hole");
     for (std::size_t i = 1; i < rows; ++i) {
         if (!(t.depth_m[i] > t.depth_m[i - 1]))
             throw std::invalid_argument(t.source + ": depths must increase (row " +
@@ -218,9 +220,34 @@ int WellGeometry::repairRadii(std::size_t row, double* out) const {
     return n - good;
 }
 
+int sectionKnotCount(int armCount) {
+    return armCount == 2 ? kTwoPadKnots : armCount;
+}
+
+void twoPadCircle(double r1_mm, double r2_mm, double* knots) {
+    // The circle through both pads, centred half-way between them: centre c
+    // along arm 1, radius R; seen from the tool axis at angle phi from arm 1
+    // its radius is c cos phi + sqrt(R^2 - c^2 sin^2 phi) (phi = 0 gives r1,
+    // 180 deg gives r2). Symmetric about the arm line, so either sense of phi.
+    const double c = (r1_mm - r2_mm) / 2.0, R = (r1_mm + r2_mm) / 2.0;
+    for (int j = 0; j < kTwoPadKnots; ++j) {
+        const double phi = glm::two_pi<double>() * j / kTwoPadKnots;
+        const double s = c * std::sin(phi);
+        knots[j] = c * std::cos(phi) + std::sqrt(std::max(0.0, R * R - s * s));
+    }
+}
+
+int WellGeometry::sectionKnots(std::size_t row, double* out) const {
+    if (m_table->armCount != 2) return repairRadii(row, out);
+    double pads[2];
+    const int repaired = repairRadii(row, pads);
+    twoPadCircle(pads[0], pads[1], out);
+    return repaired;
+}
+
 void WellGeometry::appendRing(Mesh& mesh, std::size_t row, bool spline) const {
-    const int n = m_table->armCount;
-    const std::vector<double> pads = repairedRadii(row);
+    std::vector<double> pads(static_cast<std::size_t>(knotCount()));
+    sectionKnots(row, pads.data());
     std::vector<double> radii;
     if (spline) {
         radii.resize(static_cast<std::size_t>(m_sampler.samples()));
@@ -235,7 +262,8 @@ void WellGeometry::appendRing(Mesh& mesh, std::size_t row, bool spline) const {
     const std::size_t base = mesh.positions.size();
     for (int j = 0; j < points; ++j) {
         const double phi = glm::two_pi<double>() * j / points;
-        const double drawn_m = radii[static_cast<std::size_t>(j)] / 1000.0 * m_options.radialExaggeration;
+        const double drawn_m =
+            radii[static_cast<std::size_t>(j)] / 1000.0 * m_options.radialExaggeration;
         const Ned p = c + drawn_m * f.direction(phi);
         mesh.positions.emplace_back(toScene(p));
         mesh.colours.push_back(gaugeColour(radii[static_cast<std::size_t>(j)], bitRadius));
@@ -243,18 +271,19 @@ void WellGeometry::appendRing(Mesh& mesh, std::size_t row, bool spline) const {
     // Outward normals: in-plane tangent (clockwise) crossed with the hole axis.
     for (int j = 0; j < points; ++j) {
         const glm::vec3& next = mesh.positions[base + static_cast<std::size_t>((j + 1) % points)];
-        const glm::vec3& prev = mesh.positions[base + static_cast<std::size_t>((j + points - 1) % points)];
+        const glm::vec3& prev =
+            mesh.positions[base + static_cast<std::size_t>((j + points - 1) % points)];
         const glm::dvec3 d = glm::dvec3(next - prev);
         glm::dvec3 normal = glm::cross(d, toScene(f.tangent));
         const double len = glm::length(normal);
-        mesh.normals.emplace_back(len > 0 ? normal / len : toScene(f.direction(glm::two_pi<double>() * j / points)));
+        mesh.normals.emplace_back(
+            len > 0 ? normal / len : toScene(f.direction(glm::two_pi<double>() * j / points)));
     }
-    (void)n;
 }
 
 Mesh WellGeometry::buildLevel(const std::vector<std::size_t>& rows, bool spline) const {
     Mesh mesh;
-    const int points = spline ? m_sampler.samples() : m_table->armCount;
+    const int points = spline ? m_sampler.samples() : knotCount();
     mesh.positions.reserve(rows.size() * static_cast<std::size_t>(points));
     for (std::size_t i = 0; i < rows.size(); ++i) {
         appendRing(mesh, rows[i], spline);

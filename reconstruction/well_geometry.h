@@ -17,10 +17,10 @@
 namespace caliper3d::reconstruction {
 
 struct GeometryOptions {
-    int splinePoints = 48;            // M: samples of the closed spline per section
-    double segmentLength_m = 10.0;    // the well is cut into segments of this length
-    double coarseSpacing_m = 0.5;     // level 1: raw N-gon every this many metres
-    double coarsestSpacing_m = 2.5;   // level 2: raw N-gon, sparser still
+    int splinePoints = 48;               // M: samples of the closed spline per section
+    double segmentLength_m = 10.0;       // the well is cut into segments of this length
+    double coarseSpacing_m = 0.5;        // level 1: raw N-gon every this many metres
+    double coarsestSpacing_m = 2.5;      // level 2: raw N-gon, sparser still
     double steepInclination_deg = 15.0;  // above this, arm 1 comes from RB when present
     // Display only: radii drawn this many times larger around the true path, so
     // that a long well seen whole is more than a line. Analysis never uses it.
@@ -31,8 +31,8 @@ struct GeometryOptions {
     std::vector<SurveyStation> survey;
     // Arm readings outside [minArmRadius_mm, maxArmRadius_mm] (a closed,
     // stuck or over-reaching arm) are treated as missing and interpolated.
-    double minArmRadius_mm = 0.0;           // readings <= this are missing
-    double maxArmRadius_mm = 1.0e9;         // the tool's reach; no limit by default
+    double minArmRadius_mm = 0.0;    // readings <= this are missing
+    double maxArmRadius_mm = 1.0e9;  // the tool's reach; no limit by default
     // Workers that compute the path and the section frames (the result does
     // not depend on it).
     int threads = 1;
@@ -45,10 +45,21 @@ struct SegmentMesh {
     std::size_t lastRow = 0;
     double top_m = 0.0;
     double bottom_m = 0.0;
-    glm::vec3 centre{0.0f};    // scene frame, for LOD distances
-    float radius = 0.0f;       // bounding sphere radius, scene units (metres)
+    glm::vec3 centre{0.0f};  // scene frame, for LOD distances
+    float radius = 0.0f;     // bounding sphere radius, scene units (metres)
     std::vector<Mesh> levels;
 };
+
+// Two pads measure one diameter: their section is drawn and analysed as the
+// circle through both, from this many knots (a 200 mm circle seen from 10 mm
+// off its centre: equivalent diameter within 0.05 mm of the exact 48-gon's,
+// WellAnalysisTest.TwoPadsAreTheCircleThroughBothCentredHalfWay).
+constexpr int kTwoPadKnots = 8;
+// Spline knots per section for a tool of `armCount` arms.
+int sectionKnotCount(int armCount);
+// The kTwoPadKnots radii, from the tool axis at equal angles from arm 1, of the
+// circle through two opposite pads at radii r1 and r2.
+void twoPadCircle(double r1_mm, double r2_mm, double* knots);
 
 // The well's path, section frames and segment layout, computed once from a
 // section table; segment meshes are built on demand (a worker can build them
@@ -71,6 +82,13 @@ public:
     std::vector<double> repairedRadii(std::size_t row) const;
     // The same into `out` (armCount values); returns how many arms were repaired.
     int repairRadii(std::size_t row, double* out) const;
+
+    // The spline knots of a row's section: knotCount() radii at equal angles
+    // clockwise from arm 1, the repaired pads themselves for three or more arms;
+    // for two pads (one diameter) the circle through both, centred half-way
+    // between them (docs/conventions.md). Returns how many arms were repaired.
+    int knotCount() const { return sectionKnotCount(m_table->armCount); }
+    int sectionKnots(std::size_t row, double* out) const;
 
     // Which reading placed arm 1 on each row.
     enum class Orientation : unsigned char { PadAzimuth, RelativeBearing, Unoriented };

@@ -281,3 +281,27 @@ TEST(ReportCommandTest, ReportAndExportBothSayHowManyArmsWereInterpolated) {
     EXPECT_NE(exported.output.find(log + ": warning: " + counted), std::string::npos)
         << exported.output;
 }
+
+TEST(ReportCommandTest, ATwoPadWellReportsRoundSectionsEndToEnd) {
+    // synth --arms 2 of the washout profile: one diameter, 215.9 mm, 255.9 mm over 0.4-0.6 L.
+    const auto log = scratch("report_two_pads.las");
+    const CommandRun made = runCaliper3d("synth -o " + log.string() +
+                                         " --profile washout --length 50 --step 0.5 --arms 2");
+    ASSERT_EQ(made.status, 0) << made.output;
+    const auto csv = scratch("report_two_pads.csv");
+    const CommandRun r =
+        runCaliper3d("report " + log.string() + " -o " + csv.string() + " --zones -", false);
+    ASSERT_EQ(r.status, 0) << r.output;
+    std::istringstream zonesText(r.output);
+    const Csv zones = parseCsv(zonesText);
+    ASSERT_EQ(zones.rows.size(), 1u) << r.output;
+    EXPECT_EQ(zones.rows[0].at("kind"), "washout");
+    EXPECT_NEAR(zones.number(0, "mean_dmax_mm"), 255.9, 0.01);
+    const Csv report = readCsv(csv);
+    ASSERT_EQ(report.rows.size(), 101u);
+    EXPECT_NEAR(report.number(0, "dmin_mm"), 215.9, 0.01);
+    EXPECT_NEAR(report.number(0, "dmax_mm"), 215.9, 0.01);
+    EXPECT_EQ(report.rows[0].at("major_azimuth_deg"), "");
+    EXPECT_EQ(report.rows[0].at("class"), "in_gauge");
+    EXPECT_EQ(runCaliper3d("synth -o " + log.string() + " --arms 1").status, 2);
+}

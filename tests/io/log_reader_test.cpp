@@ -387,3 +387,33 @@ TEST(LogReaderTest, ColumnTextCommentNamesCountOnlyWhenTheyFitTheData) {
     EXPECT_TRUE(warned(misfit.info, "3 column names over 10 columns of numbers"));
     EXPECT_EQ(misfit.info.diagnostics.warnings.at(0).line, 2u);
 }
+
+TEST(LogReaderTest, TwoPadToolsReadAsTwoArmsFromOneDiameterOrTwoRadii) {
+    // One diameter (CALI, the density tool's caliper; or C1 alone): pads 1 and 2, each half of it.
+    for (const char* name : {"CALI", "C1", "HCAL"}) {
+        SCOPED_TRACE(name);
+        const std::string text =
+            std::string("~V\n VERS. 2.0 :\n WRAP. NO :\n~C\n DEPT.M :\n GR.GAPI :\n ") + name +
+            ".IN :\n~A\n10 50 8.5\n10.5 55 9\n";
+        const LoadedLog log = loadCaliperText(text, "one.las", ReadOptions{});
+        ASSERT_EQ(log.table.armCount, 2);
+        EXPECT_DOUBLE_EQ(log.table.radii(1)[0], 4.5 * 25.4);
+        EXPECT_DOUBLE_EQ(log.table.radii(1)[1], 4.5 * 25.4);
+        EXPECT_TRUE(warned(log.info, "two pads measure one diameter"));
+        EXPECT_EQ(log.table.extraCurves.size(), 1u);  // GR kept
+    }
+    // Two named radii in column text.
+    const LoadedLog two =
+        loadCaliperText("depth_m R1_mm R2_mm\n1 110 90\n2 111 91\n", "two.txt", ReadOptions{});
+    ASSERT_EQ(two.table.armCount, 2);
+    EXPECT_DOUBLE_EQ(two.table.radii(1)[1], 91.0);
+    // A single radius is no section: not taken as a caliper, and refused naming the curve when
+    // asked for.
+    EXPECT_EQ(loadCaliperText("depth_m R1_mm\n1 110\n", "r1.txt", ReadOptions{}).table.armCount, 0);
+    ReadOptions one;
+    one.roles.radii = {"R1"};
+    EXPECT_NE(refusal([&] {
+                  loadCaliperText("depth_m R1_mm\n1 110\n", "r1.txt", one);
+              }).find("expected at least 2 arm radii (or one diameter), found 1: R1"),
+              std::string::npos);
+}

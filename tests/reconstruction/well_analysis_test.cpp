@@ -7,8 +7,8 @@
 
 #include <cstring>
 
-#include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/trigonometric.hpp>
 
 #include "reconstruction/section_analysis.h"
 #include "reconstruction/synthetic_well.h"
@@ -24,8 +24,8 @@ struct Analysed {
     WellAnalysis analysis;
 };
 
-Analysed analyse(const std::string& profile, double length = 100.0, double step = 0.05, int arms = 6,
-                 AnalysisOptions options = {}) {
+Analysed analyse(const std::string& profile, double length = 100.0, double step = 0.05,
+                 int arms = 6, AnalysisOptions options = {}) {
     Analysed a;
     a.spec = syntheticProfile(profile, length, step);
     a.spec.armCount = arms;
@@ -36,9 +36,9 @@ Analysed analyse(const std::string& profile, double length = 100.0, double step 
 }
 
 std::size_t count(const WellAnalysis& a, BoreholeClass c, double top = -1, double bottom = 1e9) {
-    return static_cast<std::size_t>(std::count_if(a.sections.begin(), a.sections.end(), [&](const SectionResult& r) {
-        return r.cls == c && r.md_m >= top && r.md_m <= bottom;
-    }));
+    return static_cast<std::size_t>(std::count_if(
+        a.sections.begin(), a.sections.end(),
+        [&](const SectionResult& r) { return r.cls == c && r.md_m >= top && r.md_m <= bottom; }));
 }
 
 }  // namespace
@@ -102,7 +102,8 @@ TEST(WellAnalysisTest, KeyseatOnTheHighSideOfABuildIsNotABreakout) {
     EXPECT_GT(inFeature, 590u);  // every section of 180-240 m
     for (const SectionResult& r : k.analysis.sections) {
         if (r.md_m < 181.0 || r.md_m > 239.0) continue;
-        EXPECT_NEAR(std::min(r.majorFromHighSide_deg, 180.0 - r.majorFromHighSide_deg), 0.0, 3.0);  // six pads
+        EXPECT_NEAR(std::min(r.majorFromHighSide_deg, 180.0 - r.majorFromHighSide_deg), 0.0,
+                    3.0);                   // six pads
         EXPECT_GT(r.centreOffset_mm, 8.0);  // asymmetric: the centre moves towards the groove
     }
 }
@@ -181,7 +182,8 @@ TEST(WellAnalysisTest, VolumesOfAGaugeHoleMatchTheCylinder) {
     const double cylinder = M_PI / 4 * 0.2159 * 0.2159 * 100.0;
     EXPECT_NEAR(a.analysis.volume.gaugeHole_m3, cylinder, 1e-9);
     EXPECT_NEAR(a.analysis.volume.hole_m3, cylinder, cylinder * 0.003);  // inscribed 48-gon
-    EXPECT_NEAR(a.analysis.volume.gaugeAnnulus_m3, cylinder - M_PI / 4 * 0.1778 * 0.1778 * 100.0, 1e-9);
+    EXPECT_NEAR(a.analysis.volume.gaugeAnnulus_m3, cylinder - M_PI / 4 * 0.1778 * 0.1778 * 100.0,
+                1e-9);
 }
 
 namespace {
@@ -314,11 +316,13 @@ TEST(WellAnalysisTest, ResultsAreTheOneSectionFunctionsResults) {
             EXPECT_TRUE(std::isnan(r.majorAzimuth_deg)) << i;
             EXPECT_TRUE(std::isnan(r.majorFromHighSide_deg)) << i;
         } else {
-            EXPECT_LT(axisDistance(r.majorAzimuth_deg, inPlaneAzimuth_deg(f, s.majorAngle_deg)), 1e-9)
-                << i;
-            EXPECT_LT(axisDistance(r.majorFromHighSide_deg,
-                                   angleFromHighSide_deg(f, p.inc_deg, p.azi_deg, s.majorAngle_deg)),
+            EXPECT_LT(axisDistance(r.majorAzimuth_deg, inPlaneAzimuth_deg(f, s.majorAngle_deg)),
                       1e-9)
+                << i;
+            EXPECT_LT(
+                axisDistance(r.majorFromHighSide_deg,
+                             angleFromHighSide_deg(f, p.inc_deg, p.azi_deg, s.majorAngle_deg)),
+                1e-9)
                 << i;
             EXPECT_GE(r.majorFromHighSide_deg, 0.0);
             EXPECT_LT(r.majorFromHighSide_deg, 180.0);
@@ -388,4 +392,56 @@ TEST(WellAnalysisTest, WithoutAnyBitSizeTheMedianDiameterIsTheGaugeOnEveryThread
         ASSERT_EQ(a.sections[i].bit_mm, b.sections[i].bit_mm);
     }
     EXPECT_TRUE(same(a.volume.gaugeHole_m3, b.volume.gaugeHole_m3));
+}
+
+namespace {
+// A vertical two-pad log: pad 1 at 110 mm, pad 2 at 90 mm, pad 1 towards azimuth 30.
+std::shared_ptr<const io::SectionTable> twoPadLog(double bit_mm) {
+    io::SectionTable t;
+    t.armCount = 2;
+    for (int i = 0; i < 41; ++i) {
+        t.depth_m.push_back(100.0 + 0.5 * i);
+        t.radius_mm.push_back(110.0);
+        t.radius_mm.push_back(90.0);
+        t.p1az_deg.push_back(30.0);
+        t.devi_deg.push_back(0.0);
+        t.hazi_deg.push_back(0.0);
+        t.bitSize_mm.push_back(bit_mm);
+    }
+    return std::make_shared<const io::SectionTable>(std::move(t));
+}
+}  // namespace
+
+TEST(WellAnalysisTest, TwoPadsAreTheCircleThroughBothCentredHalfWay) {
+    // One diameter of 200 mm, the tool 10 mm off its middle towards pad 1.
+    const WellGeometry g(twoPadLog(200.0), GeometryOptions{});
+    ASSERT_EQ(g.knotCount(), kTwoPadKnots);
+    std::vector<double> knots(kTwoPadKnots);
+    g.sectionKnots(0, knots.data());
+    EXPECT_DOUBLE_EQ(knots[0], 110.0);  // pad 1
+    EXPECT_DOUBLE_EQ(knots[4], 90.0);   // pad 2, 180 deg on
+    // 90 deg on: the circle of radius 100 centred 10 mm out, seen from the tool: sqrt(100^2 -
+    // 10^2).
+    EXPECT_NEAR(knots[2], std::sqrt(100.0 * 100.0 - 10.0 * 10.0), 1e-9);
+    const WellAnalysis a = analyseWell(g, AnalysisOptions{});
+    // The 48-gon inscribed in a 200 mm circle: 200 sqrt(48/(2 pi) sin(2 pi/48)) = 199.715 mm.
+    const double polygon = 200.0 * std::sqrt(48.0 / (2.0 * M_PI) * std::sin(2.0 * M_PI / 48.0));
+    for (const SectionResult& r : a.sections) {
+        EXPECT_NEAR(r.equivalentDiameter_mm, polygon, 0.05) << r.md_m;
+        EXPECT_NEAR(r.dmax_mm, 200.0, 0.2) << r.md_m;
+        EXPECT_NEAR(r.dmin_mm, 200.0, 0.2) << r.md_m;
+        // The centroid of 48 points at equal angles from an off-centre tool sits
+        // a little towards the tool (9.965 mm), as for the off-centre profile.
+        EXPECT_NEAR(r.centreOffset_mm, 10.0, 0.05) << r.md_m;
+        EXPECT_NEAR(r.centreOffsetAzimuth_deg, 30.0, 0.01) << r.md_m;
+        EXPECT_TRUE(std::isnan(r.majorAzimuth_deg)) << r.md_m;  // a circle has no major axis
+        EXPECT_EQ(r.cls, BoreholeClass::InGauge) << r.md_m;
+    }
+    // The same hole drilled with a 7 in (177.8 mm) bit: 200 > 177.8 + 12.7, a washout.
+    const WellGeometry small(twoPadLog(177.8), GeometryOptions{});
+    const WellAnalysis w = analyseWell(small, AnalysisOptions{});
+    ASSERT_EQ(w.zones.size(), 1u);
+    EXPECT_EQ(w.zones[0].kind, BoreholeClass::Washout);
+    // Two pads can never show a breakout or keyseat: their section is round.
+    EXPECT_EQ(count(w, BoreholeClass::Breakout) + count(w, BoreholeClass::Keyseat), 0u);
 }
