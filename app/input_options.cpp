@@ -17,7 +17,9 @@ void addInputOptions(QCommandLineParser& parser) {
         {"radius-unit", "Radius unit: in, mm or cm (default: the file's; in for column text).",
          "UNIT"},
         {"radii", "Curves holding the arm radii, in arm order (e.g. RAD1,RAD2,...).", "MNEM,..."},
-        {"diameters", "Curves holding opposite-pad diameters (e.g. C1,C2).", "MNEM,..."},
+        {"diameters",
+         "Curves holding opposite-pad diameters (e.g. C1,C2; one, e.g. CALI, for a two-pad tool).",
+         "MNEM,..."},
         {"row-step", "Depth step per row of a radii-only text file, metres (default 0.01).",
          "METRES", "0.01"},
         {"nulls",
@@ -74,11 +76,14 @@ InputOptions inputOptionsFrom(const QCommandLineParser& parser) {
     };
     if (parser.isSet("radii")) o.read.roles.radii = list("radii");
     if (parser.isSet("diameters")) o.read.roles.diameters = list("diameters");
-    if (o.read.roles.radii.size() == 1 || o.read.roles.radii.size() > 256)
-        throw UsageError("--radii: expected 3 to 256 curve names separated by commas");
-    if (!o.read.roles.diameters.empty() &&
-        (o.read.roles.diameters.size() < 2 || o.read.roles.diameters.size() > 4))
-        throw UsageError("--diameters: expected 2 to 4 curve names separated by commas");
+    const bool wholeArray =
+        o.read.roles.radii.size() == 1 && o.read.roles.radii.front().size() > 2 &&
+        o.read.roles.radii.front().compare(o.read.roles.radii.front().size() - 2, 2, "[]") == 0;
+    if ((o.read.roles.radii.size() == 1 && !wholeArray) || o.read.roles.radii.size() > 256)
+        throw UsageError(
+            "--radii: expected 2 to 256 curve names separated by commas, or one array NAME[]");
+    if (o.read.roles.diameters.size() > 4)
+        throw UsageError("--diameters: expected 1 to 4 curve names separated by commas");
     o.read.rowStep_m = number(parser, "row-step");
     if (!(o.read.rowStep_m > 0.0))
         throw UsageError("--row-step: expected a positive number of metres");

@@ -137,6 +137,7 @@ WellAnalysis analyseWell(const WellGeometry& g, const AnalysisOptions& options) 
     a.sections.resize(rows);
     if (rows == 0) return a;
     const SectionBatchAnalyzer analyzer(g.knotCount(), g.options().splinePoints);
+    a.twoPads = t.armCount == 2;
     const int knots = analyzer.knots();
     const double bitOverride = options.bitSize_mm;
 

@@ -303,5 +303,26 @@ TEST(ReportCommandTest, ATwoPadWellReportsRoundSectionsEndToEnd) {
     EXPECT_NEAR(report.number(0, "dmax_mm"), 215.9, 0.01);
     EXPECT_EQ(report.rows[0].at("major_azimuth_deg"), "");
     EXPECT_EQ(report.rows[0].at("class"), "in_gauge");
+    const CommandRun summary = runCaliper3d("report " + log.string() + " -o " + csv.string());
+    EXPECT_NE(summary.output.find("breakouts: not seen by a two-pad tool"), std::string::npos)
+        << summary.output;
     EXPECT_EQ(runCaliper3d("synth -o " + log.string() + " --arms 1").status, 2);
+}
+
+TEST(ReportCommandTest, RadiiOptionTakesTwoOrMoreNamesOrOneWholeArray) {
+    const auto las = scratch("report_array.las");
+    {
+        std::ofstream out(las);
+        out << "~V\n VERS. 2.0 :\n WRAP. NO :\n~C\n DEPT.M :\n MFC[1].IN :\n MFC[2].IN :\n "
+               "MFC[3].IN :\n"
+               "~A\n10 4 4.5 4\n10.5 4 4.5 4\n";
+    }
+    const CommandRun array = runCaliper3d("info " + las.string() + " --radii 'MFC[]'");
+    EXPECT_EQ(array.status, 0) << array.output;
+    EXPECT_NE(array.output.find("arms:      3 from radii MFC[1] MFC[2] MFC[3]"), std::string::npos)
+        << array.output;
+    const CommandRun two = runCaliper3d("info " + las.string() + " --radii 'MFC[1],MFC[3]'");
+    EXPECT_NE(two.output.find("arms:      2 from radii MFC[1] MFC[3]"), std::string::npos)
+        << two.output;
+    EXPECT_EQ(runCaliper3d("info " + las.string() + " --radii 'MFC[1]'").status, 2);
 }
