@@ -177,6 +177,18 @@ WellAnalysis analyseWell(const WellGeometry& g, const AnalysisOptions& options) 
             }
             BatchShape shapes[kLanes];
             analyzer.analyse(s.pads.data(), shapes, s.workspace);
+            if (a.twoPads) {
+                // One diameter measured: the circle's own figures, not the fit's
+                // (which the spline leaves a few hundredths off). Knot 0 is pad 1 and
+                // the opposite knot pad 2, so the diameter is r1 + r2 and the centre
+                // (r1 - r2)/2 from the tool; area and centroid direction stay the samples'.
+                for (std::size_t l = 0; l < kLanes; ++l) {
+                    const double r1 = s.pads[l], r2 = s.pads[static_cast<std::size_t>(knots / 2) * kLanes + l];
+                    shapes[l].dmax_mm = shapes[l].dmin_mm = r1 + r2;
+                    shapes[l].ellipticity = 1.0;
+                    shapes[l].centreOffset_mm = std::abs(r1 - r2) / 2.0;
+                }
+            }
             for (std::size_t l = 0; l < n; ++l) {
                 const std::size_t row = group + l;
                 const BatchShape& shape = shapes[l];

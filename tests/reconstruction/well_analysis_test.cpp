@@ -428,11 +428,10 @@ TEST(WellAnalysisTest, TwoPadsAreTheCircleThroughBothCentredHalfWay) {
     const double polygon = 200.0 * std::sqrt(48.0 / (2.0 * M_PI) * std::sin(2.0 * M_PI / 48.0));
     for (const SectionResult& r : a.sections) {
         EXPECT_NEAR(r.equivalentDiameter_mm, polygon, 0.05) << r.md_m;
-        EXPECT_NEAR(r.dmax_mm, 200.0, 0.2) << r.md_m;
-        EXPECT_NEAR(r.dmin_mm, 200.0, 0.2) << r.md_m;
-        // The centroid of 48 points at equal angles from an off-centre tool sits
-        // a little towards the tool (9.965 mm), as for the off-centre profile.
-        EXPECT_NEAR(r.centreOffset_mm, 10.0, 0.05) << r.md_m;
+        EXPECT_NEAR(r.dmax_mm, 200.0, 1e-9) << r.md_m;  // the diameter measured: r1 + r2
+        EXPECT_NEAR(r.dmin_mm, 200.0, 1e-9) << r.md_m;
+        EXPECT_EQ(r.ellipticity, 1.0) << r.md_m;
+        EXPECT_NEAR(r.centreOffset_mm, 10.0, 1e-9) << r.md_m;  // (r1 - r2) / 2 towards pad 1
         EXPECT_NEAR(r.centreOffsetAzimuth_deg, 30.0, 0.01) << r.md_m;
         EXPECT_TRUE(std::isnan(r.majorAzimuth_deg)) << r.md_m;  // a circle has no major axis
         EXPECT_EQ(r.cls, BoreholeClass::InGauge) << r.md_m;
