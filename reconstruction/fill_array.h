@@ -37,9 +37,19 @@ public:
     // Constructs element i.
     void set(std::size_t i, const T& value) { ::new (static_cast<void*>(m_data + i)) T(value); }
 
+    // Element access, once constructed.
     const T& operator[](std::size_t i) const { return m_data[i]; }
+    T& operator[](std::size_t i) { return m_data[i]; }
     T* data() { return m_data; }
+    const T* data() const { return m_data; }
     std::size_t size() const { return m_size; }
+    bool empty() const { return m_size == 0; }
+    const T* begin() const { return m_data; }
+    const T* end() const { return m_data + m_size; }
+    T* begin() { return m_data; }
+    T* end() { return m_data + m_size; }
+    const T& front() const { return m_data[0]; }
+    const T& back() const { return m_data[m_size - 1]; }
 
 private:
     T* m_data = nullptr;

@@ -24,7 +24,7 @@ void number(std::string& line, double v, int decimals) {
 }  // namespace
 
 std::vector<std::size_t> reportedSections(const WellAnalysis& a, const ReportOptions& options) {
-    const std::vector<SectionResult>& s = a.sections;
+    const FillArray<SectionResult>& s = a.sections;
     const double step = options.step_m;
     std::vector<std::size_t> rows;
     if (s.empty()) return rows;

@@ -131,10 +131,10 @@ WellAnalysis analyseWell(const WellGeometry& g, const AnalysisOptions& options) 
     const int threads = std::max(1, options.threads);
     WellAnalysis a;
     // 144 bytes per row of fresh memory: its pages are faulted in on every
-    // worker at once, then the vector's value-initialisation runs at memset speed.
-    a.sections.reserve(rows);
+    // worker at once, and each result is constructed once, by the worker that
+    // computes it (no sequential value-initialisation first).
+    a.sections = FillArray<SectionResult>(rows);
     prefaultPages(a.sections.data(), rows * sizeof(SectionResult), threads);
-    a.sections.resize(rows);
     if (rows == 0) return a;
     const SectionBatchAnalyzer analyzer(g.knotCount(), g.options().splinePoints);
     a.twoPads = t.armCount == 2;
@@ -193,7 +193,7 @@ WellAnalysis analyseWell(const WellGeometry& g, const AnalysisOptions& options) 
                 const std::size_t row = group + l;
                 const BatchShape& shape = shapes[l];
                 const PathPoint& p = g.path()[row];
-                SectionResult& r = a.sections[row];
+                SectionResult r;
                 r.md_m = p.md;
                 r.tvd_m = p.tvd;
                 r.north_m = p.north;
@@ -219,6 +219,7 @@ WellAnalysis analyseWell(const WellGeometry& g, const AnalysisOptions& options) 
                                                options.rules)
                                : BoreholeClass::InGauge;
                 classes[row] = r.cls;
+                a.sections.set(row, r);
                 if (r.repairedArms > 0) {
                     ++count.repairedSections;
                     count.repairedArms += static_cast<std::size_t>(r.repairedArms);

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "reconstruction/borehole_classifier.h"
+#include "reconstruction/fill_array.h"
 #include "reconstruction/hole_volume.h"
 #include "reconstruction/orientation_check.h"
 #include "reconstruction/well_geometry.h"
@@ -37,7 +38,7 @@ struct AnalysisOptions {
 
 // The interval results and the counts the command reports as warnings.
 struct WellAnalysis {
-    std::vector<SectionResult> sections;
+    FillArray<SectionResult> sections;   // one per section, in depth order
     std::vector<Zone> zones;             // every class but in_gauge, in depth order
     BreakoutSummary breakouts;
     HoleVolume volume;
