@@ -3,6 +3,7 @@
 #include <atomic>
 #include <cmath>
 #include <string>
+#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -84,6 +85,31 @@ TEST(LogStreamTest, CancellationFromTheConsumerStopsTheRead) {
     EXPECT_GT(rows, 0u);
     EXPECT_LT(rows, 20000u);
     EXPECT_THROW(loadCaliperText(text, "c.txt", ReadOptions{}, s), ReadCancelled);
+}
+
+TEST(LogStreamTest, CancellationFromAnotherThreadStopsTheRead) {
+    // The reader's consumer waits, after its first chunk, until a second thread
+    // (a window's "stop" button, say) has set the flag; the read then ends there.
+    const std::string text = columnText(20000);
+    std::atomic<bool> cancel{false}, firstChunk{false};
+    StreamOptions s = smallBlocks();
+    s.cancel = &cancel;
+    std::thread stopper([&] {
+        while (!firstChunk.load()) std::this_thread::yield();
+        cancel.store(true);
+    });
+    std::size_t rows = 0;
+    const LogInfo info = streamCaliperText(text, "t.txt", ReadOptions{},
+                                           [&](const SectionTable& chunk) {
+                                               rows += chunk.rowCount();
+                                               firstChunk.store(true);
+                                               while (!cancel.load()) std::this_thread::yield();
+                                           },
+                                           s);
+    stopper.join();
+    EXPECT_TRUE(info.cancelled);
+    EXPECT_GT(rows, 0u);
+    EXPECT_LT(rows, 20000u);
 }
 
 TEST(LogStreamTest, OnStartReportsRolesAndARowEstimateBeforeData) {
