@@ -36,12 +36,13 @@ TEST(LogStreamTest, ChunksArriveInDepthOrderAndMatchASingleThreadRead) {
     const std::string text = columnText(20000);
     std::vector<std::size_t> sizes;
     std::vector<double> depths;
-    const LogInfo info = streamCaliperText(text, "s.txt", ReadOptions{},
-                                           [&](const SectionTable& chunk) {
-                                               sizes.push_back(chunk.rowCount());
-                                               depths.insert(depths.end(), chunk.depth_m.begin(), chunk.depth_m.end());
-                                           },
-                                           smallBlocks());
+    const LogInfo info = streamCaliperText(
+        text, "s.txt", ReadOptions{},
+        [&](const SectionTable& chunk) {
+            sizes.push_back(chunk.rowCount());
+            depths.insert(depths.end(), chunk.depth_m.begin(), chunk.depth_m.end());
+        },
+        smallBlocks());
     EXPECT_EQ(info.rows, 20000u);
     ASSERT_GT(sizes.size(), 3u);
     for (std::size_t i = 0; i + 1 < sizes.size(); ++i) EXPECT_GE(sizes[i], 1000u);
@@ -65,7 +66,9 @@ TEST(LogStreamTest, AnErrorLateInASplitBlockNamesItsExactLine) {
     } catch (const ParseError& e) {
         EXPECT_EQ(e.line(), 11500u);
         EXPECT_EQ(e.column(), 1u);
-        EXPECT_NE(std::string(e.what()).find("expected a number for depth, found '1x00"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("expected a number for depth, found '1x00"),
+                  std::string::npos)
+            << e.what();
     }
 }
 
@@ -75,12 +78,13 @@ TEST(LogStreamTest, CancellationFromTheConsumerStopsTheRead) {
     StreamOptions s = smallBlocks();
     s.cancel = &cancel;
     std::size_t rows = 0;
-    const LogInfo info = streamCaliperText(text, "c.txt", ReadOptions{},
-                                           [&](const SectionTable& chunk) {
-                                               rows += chunk.rowCount();
-                                               cancel = true;
-                                           },
-                                           s);
+    const LogInfo info = streamCaliperText(
+        text, "c.txt", ReadOptions{},
+        [&](const SectionTable& chunk) {
+            rows += chunk.rowCount();
+            cancel = true;
+        },
+        s);
     EXPECT_TRUE(info.cancelled);
     EXPECT_GT(rows, 0u);
     EXPECT_LT(rows, 20000u);
@@ -99,13 +103,14 @@ TEST(LogStreamTest, CancellationFromAnotherThreadStopsTheRead) {
         cancel.store(true);
     });
     std::size_t rows = 0;
-    const LogInfo info = streamCaliperText(text, "t.txt", ReadOptions{},
-                                           [&](const SectionTable& chunk) {
-                                               rows += chunk.rowCount();
-                                               firstChunk.store(true);
-                                               while (!cancel.load()) std::this_thread::yield();
-                                           },
-                                           s);
+    const LogInfo info = streamCaliperText(
+        text, "t.txt", ReadOptions{},
+        [&](const SectionTable& chunk) {
+            rows += chunk.rowCount();
+            firstChunk.store(true);
+            while (!cancel.load()) std::this_thread::yield();
+        },
+        s);
     stopper.join();
     EXPECT_TRUE(info.cancelled);
     EXPECT_GT(rows, 0u);
@@ -121,14 +126,17 @@ TEST(LogStreamTest, OnStartReportsRolesAndARowEstimateBeforeData) {
         estimate = rows;
         arms = static_cast<int>(info.curves.size());
     };
-    streamCaliperText(text, "e.txt", ReadOptions{}, [](const SectionTable&) {}, s);
+    streamCaliperText(
+        text, "e.txt", ReadOptions{}, [](const SectionTable&) {}, s);
     EXPECT_EQ(arms, 10);
     EXPECT_GE(estimate, 5000u);
     EXPECT_LT(estimate, 5300u);
 }
 
 TEST(LogStreamTest, BackwardRowsInADownwardLogAreSkippedOrRejected) {
-    const std::string text = "1.0 1 1 1 1 1 1 0 0 0\n2.0 1 1 1 1 1 1 0 0 0\n1.5 1 1 1 1 1 1 0 0 0\n3.0 1 1 1 1 1 1 0 0 0\n";
+    const std::string text =
+        "1.0 1 1 1 1 1 1 0 0 0\n2.0 1 1 1 1 1 1 0 0 0\n1.5 1 1 1 1 1 1 0 0 0\n3.0 1 1 1 1 1 1 0 0 "
+        "0\n";
     const LoadedLog log = loadCaliperText(text, "b.txt", ReadOptions{});
     EXPECT_EQ(log.table.depth_m, (std::vector<double>{1.0, 2.0, 3.0}));
     ReadOptions reject;
@@ -157,9 +165,11 @@ TEST(LogStreamTest, AnUpwardLogWhoseFirstTwoRowsGoDownIsStillSortedWhole) {
     ASSERT_EQ(log.table.rowCount(), 42u);
     EXPECT_DOUBLE_EQ(log.table.depth_m.front(), 90.0);
     EXPECT_DOUBLE_EQ(log.table.depth_m.back(), 100.5);
-    for (std::size_t i = 1; i < log.table.rowCount(); ++i) ASSERT_LT(log.table.depth_m[i - 1], log.table.depth_m[i]);
+    for (std::size_t i = 1; i < log.table.rowCount(); ++i)
+        ASSERT_LT(log.table.depth_m[i - 1], log.table.depth_m[i]);
     bool warned = false;
     for (const Warning& w : log.info.diagnostics.warnings)
-        warned = warned || w.message.find("log recorded upwards with 1 rows out of order") != std::string::npos;
+        warned = warned || w.message.find("log recorded upwards with 1 rows out of order") !=
+                               std::string::npos;
     EXPECT_TRUE(warned);
 }

@@ -4,9 +4,9 @@
 #include <memory>
 #include <vector>
 
+#include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
-#include <gtest/gtest.h>
 
 #include "reconstruction/synthetic_well.h"
 
@@ -68,8 +68,9 @@ TEST(WellGeometryTest, MissingArmIsFilledFromNeighbours) {
 TEST(WellGeometryTest, RejectsDepthsThatDoNotIncrease) {
     auto table = makeSyntheticWell(syntheticProfile("circle", 2.0, 0.5));
     table.depth_m[2] = table.depth_m[1];
-    EXPECT_THROW(WellGeometry(std::make_shared<const caliper3d::io::SectionTable>(table), GeometryOptions{}),
-                 std::invalid_argument);
+    EXPECT_THROW(
+        WellGeometry(std::make_shared<const caliper3d::io::SectionTable>(table), GeometryOptions{}),
+        std::invalid_argument);
 }
 
 TEST(WellGeometryTest, RadialExaggerationScalesTheDrawnRadiusOnly) {
@@ -78,9 +79,10 @@ TEST(WellGeometryTest, RadialExaggerationScalesTheDrawnRadiusOnly) {
     WellGeometry g(circleWell(10.0, 0.5), options);
     const SegmentMesh segment = g.buildSegment(0);
     const Mesh& m = segment.levels[0];
-    for (const glm::vec3& p : m.positions) EXPECT_NEAR(std::hypot(p.x, p.z), 20.0f * 0.21590f / 2, 1e-4f);
+    for (const glm::vec3& p : m.positions)
+        EXPECT_NEAR(std::hypot(p.x, p.z), 20.0f * 0.21590f / 2, 1e-4f);
     for (double r : g.repairedRadii(3)) EXPECT_NEAR(r, 215.9 / 2, 1e-9);  // the data stay true
-    EXPECT_NEAR(m.positions.back().y, -10.0f, 1e-4f);                    // and so does the path
+    EXPECT_NEAR(m.positions.back().y, -10.0f, 1e-4f);                     // and so does the path
 }
 
 namespace {
@@ -147,4 +149,55 @@ TEST(WellGeometryTest, PathFromASurveyGetsItsFramesInParallelToo) {
         ASSERT_EQ(one.frame(i).arm1, two.frame(i).arm1);
         ASSERT_EQ(one.frame(i).tangent, holeTangent(one.path()[i].inc_deg, one.path()[i].azi_deg));
     }
+}
+
+// Design section 3: arm 1 from P1AZ in near-vertical holes, from RB (relative to the
+// high side) in steep ones (above steepInclination_deg, default 15) or where P1AZ is
+// missing; P1AZ where RB is missing; neither: arm 1 north, counted as unoriented.
+TEST(WellGeometryTest, ArmOneComesFromPadAzimuthOrRelativeBearingByInclination) {
+    caliper3d::io::SectionTable t;
+    t.armCount = 3;
+    // Constant hole direction per row group: 10 deg (shallow) then 20 deg (steep), azimuth 40.
+    // P1AZ is written 30 deg away from what HAZI + RB give, so the two sources differ visibly.
+    struct Row {
+        double inc, p1az, rb;
+    };
+    const double kNaN = std::nan("");
+    const std::vector<Row> rows = {{10, 100, 30},    {10, kNaN, 30}, {10, 100, kNaN},
+                                   {10, kNaN, kNaN}, {20, 100, 30},  {20, 100, kNaN}};
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        t.depth_m.push_back(100.0 + i);
+        for (int k = 0; k < 3; ++k) t.radius_mm.push_back(100.0);
+        t.devi_deg.push_back(rows[i].inc);
+        t.hazi_deg.push_back(40.0);
+        t.p1az_deg.push_back(rows[i].p1az);
+        t.rb_deg.push_back(rows[i].rb);
+    }
+    GeometryOptions options;
+    options.survey = {
+        {0.0, 10.0, 40.0}, {103.5, 10.0, 40.0}, {103.6, 20.0, 40.0}, {200.0, 20.0, 40.0}};
+    const WellGeometry g(std::make_shared<const caliper3d::io::SectionTable>(t), options);
+    using O = WellGeometry::Orientation;
+    const O expected[] = {O::PadAzimuth, O::RelativeBearing, O::PadAzimuth,
+                          O::Unoriented, O::RelativeBearing, O::PadAzimuth};
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        SCOPED_TRACE(i);
+        EXPECT_EQ(g.orientation(i), expected[i]);
+        const PathPoint& p = g.path()[i];
+        ASSERT_NEAR(p.inc_deg, rows[i].inc, 1e-9);
+        const SectionFrame want =
+            expected[i] == O::RelativeBearing
+                ? frameFromRelativeBearing(p.inc_deg, p.azi_deg, rows[i].rb)
+                : frameFromPadAzimuth(p.inc_deg, p.azi_deg,
+                                      expected[i] == O::Unoriented ? 0.0 : rows[i].p1az);
+        EXPECT_LT(glm::length(g.frame(i).arm1 - want.arm1), 1e-9);
+    }
+    // The two sources really differ by the 30 deg written into P1AZ.
+    const SectionFrame a = frameFromPadAzimuth(10.0, 40.0, 100.0),
+                       b = frameFromRelativeBearing(10.0, 40.0, 30.0);
+    EXPECT_GT(glm::length(a.arm1 - b.arm1), 0.4);
+    // A lower threshold turns the shallow rows to RB too.
+    options.steepInclination_deg = 5.0;
+    const WellGeometry low(std::make_shared<const caliper3d::io::SectionTable>(t), options);
+    EXPECT_EQ(low.orientation(0), O::RelativeBearing);
 }
