@@ -702,31 +702,15 @@ private:
         if (!anyUnit) {
             if (!options.depthUnit) options.depthUnit = LengthUnit::Metre;
             if (!options.radiusUnit) {
-                options.radiusUnit = LengthUnit::Inch;
-                // Radii over kMaxPlausibleRadius_in inches are far likelier millimetres.
-                std::vector<double> values;
+                std::vector<double> radii;
                 for (std::size_t c = 0; c < names.size() && c < firstRow.size(); ++c) {
                     const CurveRole role = guessRole(m_columns[c].mnemonic).role;
                     double v = 0.0;
                     if ((role == CurveRole::Radius || role == CurveRole::Finger) &&
                         parseNumber(firstRow[c], v))
-                        values.push_back(v);
+                        radii.push_back(v);
                 }
-                if (!values.empty()) {
-                    std::nth_element(
-                        values.begin(),
-                        values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2),
-                        values.end());
-                    if (values[values.size() / 2] > kMaxPlausibleRadius_in) {
-                        options.radiusUnit = LengthUnit::Millimetre;
-                        m_info.diagnostics.warn(
-                            m_name, line,
-                            "columns carry no units and radii near " +
-                                std::to_string(values[values.size() / 2]) +
-                                " would be inches, far too large: read as millimetres (give "
-                                "--radius-unit to choose)");
-                    }
-                }
+                options.radiusUnit = unitlessRadiusUnit(std::move(radii), line);
             }
         }
         m_plan = makeCurvePlan(m_columns, nullptr, options, m_name, m_info, m_info.diagnostics);
@@ -754,6 +738,23 @@ private:
         m_format.layout = std::to_string(m_columns.size()) + " named columns";
         m_format.depthColumn = m_plan.depthColumn;
         m_format.plan = &m_plan;
+    }
+
+    // Column text without units: radii in inches, unless the first row's median
+    // radius is over kMaxPlausibleRadius_in inches (a 1.5 m wide hole): those are
+    // far likelier millimetres, read so with a warning.
+    LengthUnit unitlessRadiusUnit(std::vector<double> radii, std::size_t line) {
+        if (radii.empty()) return LengthUnit::Inch;
+        std::nth_element(radii.begin(),
+                         radii.begin() + static_cast<std::ptrdiff_t>(radii.size() / 2),
+                         radii.end());
+        const double median = radii[radii.size() / 2];
+        if (!(median > kMaxPlausibleRadius_in)) return LengthUnit::Inch;
+        m_info.diagnostics.warn(m_name, line,
+                                "radii near " + std::to_string(median) +
+                                    " would be inches, far too large: read as millimetres (give "
+                                    "--radius-unit to choose)");
+        return LengthUnit::Millimetre;
     }
 
     void prepareColumnText(std::string_view run, std::size_t offset) {
@@ -828,8 +829,6 @@ private:
                                         std::to_string(found) + " radii per row, depth = row x " +
                                         std::to_string(m_options.rowStep_m) + " m");
         }
-        // Column text carries no units. Radii over kMaxPlausibleRadius_in inches (a
-        // 1.5 m wide hole) are far likelier millimetres: read them so, and say so.
         LengthUnit radiusUnit = m_options.radiusUnit.value_or(LengthUnit::Inch);
         if (!m_options.radiusUnit && !tokens.empty()) {
             std::vector<double> radii;
@@ -838,20 +837,7 @@ private:
                 double v = 0.0;
                 if (at < tokens.size() && parseNumber(tokens[at], v)) radii.push_back(v);
             }
-            if (!radii.empty()) {
-                std::nth_element(radii.begin(),
-                                 radii.begin() + static_cast<std::ptrdiff_t>(radii.size() / 2),
-                                 radii.end());
-                const double median = radii[radii.size() / 2];
-                if (median > kMaxPlausibleRadius_in) {
-                    radiusUnit = LengthUnit::Millimetre;
-                    m_info.diagnostics.warn(
-                        m_name, line,
-                        "radii near " + std::to_string(median) +
-                            " would be inches, far too large: read as millimetres (give "
-                            "--radius-unit to choose)");
-                }
-            }
+            radiusUnit = unitlessRadiusUnit(std::move(radii), line);
         }
         const LengthUnit depthUnit = m_options.depthUnit.value_or(LengthUnit::Metre);
         const std::string radiusUnitName(unitName(radiusUnit));
