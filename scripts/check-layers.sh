@@ -1,0 +1,75 @@
+#!/usr/bin/env bash
+# Fails when an #include goes up a layer (app -> scenegraph -> reconstruction -> io), or when io/
+# or reconstruction/ reach Coin, Qt or OpenGL, or scenegraph/ reaches Qt. The CMake targets cannot
+# enforce this on their own: Debian installs Coin's headers on the default include path, and every
+# target sees the project root. Each module's tests follow the module's rule.
+#   scripts/check-layers.sh [ROOT]      check the tree at ROOT (default: this checkout)
+#   scripts/check-layers.sh --self-test  prove that the check catches each kind of violation
+set -euo pipefail
+
+# What each module may not include, as an extended regular expression on the included path.
+coinQtGl='Inventor/|Q[A-Za-z]+($|/|\.h)|Qt[A-Za-z]*/|GL/|EGL/|GLES'
+declare -A forbidden=(
+  [io]="^(reconstruction|scenegraph|app)/|^(${coinQtGl})"
+  [reconstruction]="^(scenegraph|app)/|^(${coinQtGl})"
+  [scenegraph]="^app/|^(Q[A-Za-z]+($|/|\.h)|Qt[A-Za-z]*/|Inventor/Qt/)"
+)
+
+# Prints "file:line: includes X" for each violation under ROOT; returns 1 if any.
+check() {
+  local root=$1 status=0 module dir file line path
+  for module in io reconstruction scenegraph; do
+    for dir in "$root/$module" "$root/tests/$module"; do
+      [ -d "$dir" ] || continue
+      while IFS= read -r -d '' file; do
+        while IFS=: read -r line path; do
+          if [[ $path == ../* || $path =~ ${forbidden[$module]} ]]; then
+            echo "${file#"$root"/}:$line: $module may not include $path" >&2
+            status=1
+          fi
+        done < <(grep -nE '^[[:space:]]*#[[:space:]]*include[[:space:]]*[<"]' "$file" |
+                 sed -E 's/^([0-9]+):[^<"]*[<"]([^>"]+)[>"].*/\1:\2/')
+      done < <(find "$dir" -type f \( -name '*.h' -o -name '*.hpp' -o -name '*.cpp' \) -print0)
+    done
+  done
+  return $status
+}
+
+selfTest() {
+  local tmp
+  tmp=$(mktemp -d)
+  trap 'rm -rf "$tmp"' RETURN
+  mkdir -p "$tmp/io" "$tmp/reconstruction" "$tmp/scenegraph" "$tmp/tests/io"
+  printf '#include <vector>\n#include "io/a.h"\n' >"$tmp/io/ok.cpp"
+  printf '#include "reconstruction/mesh.h"\n#include <glm/vec3.hpp>\n#include <Inventor/SoDB.h>\n' \
+    >"$tmp/scenegraph/ok.cpp"
+  check "$tmp" 2>/dev/null || { echo "self-test: a clean tree was refused" >&2; return 1; }
+  local bad
+  for bad in 'io/x.cpp:#include "reconstruction/mesh.h"' \
+             'io/x.h:#include <Inventor/SoDB.h>' \
+             'reconstruction/x.cpp:#include <QString>' \
+             'reconstruction/x.cpp:#include <QtCore/QString>' \
+             'reconstruction/x.cpp:#include "scenegraph/well_scene.h"' \
+             'reconstruction/x.cpp:#include <GL/gl.h>' \
+             'scenegraph/x.cpp:#include "app/commands.h"' \
+             'scenegraph/x.cpp:#include <Inventor/Qt/SoQt.h>' \
+             'scenegraph/x.cpp:#include <QImage>' \
+             'tests/io/x_test.cpp:#include "scenegraph/iv_export.h"' \
+             'io/x.cpp:  #  include "../app/commands.h"'; do
+    local file=${bad%%:*} text=${bad#*:}
+    printf '%s\n' "$text" >"$tmp/$file"
+    if check "$tmp" 2>/dev/null; then
+      echo "self-test: not caught: $file: $text" >&2
+      return 1
+    fi
+    rm "$tmp/$file"
+  done
+  echo "self-test: every violation caught"
+}
+
+if [ "${1:-}" = "--self-test" ]; then
+  selfTest
+else
+  root=${1:-$(cd "$(dirname "$0")/.." && pwd)}
+  check "$root" && echo "layers: every include points down (app -> scenegraph -> reconstruction -> io)"
+fi
