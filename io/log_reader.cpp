@@ -165,6 +165,7 @@ std::string formatLogInfo(const LogInfo& info) {
     out << "file:      " << info.file << "\n";
     out << "format:    " << info.format << "\n";
     if (!info.wellName.empty()) out << "well:      " << info.wellName << "\n";
+    out << formatWellLocation(info.location);
     out << "rows:      " << info.rows << (info.survey ? " stations\n" : " sections\n");
     out.setf(std::ios::fixed);
     out.precision(4);
@@ -179,6 +180,7 @@ std::string formatLogInfo(const LogInfo& info) {
         out << "bit size:  " << info.bitSize_mm << " to " << info.bitSizeMax_mm << " mm\n";
     else if (std::isfinite(info.bitSize_mm)) out << "bit size:  " << info.bitSize_mm << " mm\n";
     else out << "bit size:  unknown (give --bit-size)\n";
+    if (!info.holeAzimuth.empty()) out << "hole azi:  " << info.holeAzimuth << "\n";
     out << (info.survey ? "columns:\n" : "curves:\n");
     // Characters, not bytes: a decoded UTF-16 header may hold non-ASCII mnemonics.
     auto shown = [](const std::string& s) {
