@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "io/hole_azimuth_plan.h"
 #include "io/parse_error.h"
 #include "io/survey_reader.h"
 #include "io/text_encoding.h"
@@ -157,7 +158,14 @@ LogInfo describeSurvey(const std::string& path, const ReadOptions& options) {
 LogInfo describeLog(const std::string& path, const ReadOptions& options) {
     const std::string head = fileHead(path);
     if (!hasUtf16Mark(head) && looksLikeSurvey(head)) return describeSurvey(path, options);
-    return streamCaliperLog(path, options, [](const SectionTable&) {});
+    LogInfo info = streamCaliperLog(path, options, [](const SectionTable&) {});
+    const HoleAzimuthPlan plan = holeAzimuthPlan(info);
+    info.holeAzimuth = plan.description;
+    if (plan.kind == SectionTable::HoleAzimuth::Unknown)
+        info.diagnostics.warn(path, 0,
+                              "hole azimuth unknown: north, east and azimuth are not known where "
+                              "the hole is inclined (give --survey)");
+    return info;
 }
 
 std::string formatLogInfo(const LogInfo& info) {
