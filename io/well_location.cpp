@@ -138,8 +138,10 @@ WellLocation readWellLocation(const LasHeader& h, const std::string& file,
         w.referenceElevation_m = eref;
         w.elevationSource = "EREF";
     } else {
-        const char* named = code == "KB" ? "EKB" : code == "DF" ? "EDF" : code == "GL" ? "EGL"
-                                                                                     : nullptr;
+        const char* named = code == "KB"   ? "EKB"
+                            : code == "DF" ? "EDF"
+                            : code == "GL" ? "EGL"
+                                           : nullptr;
         const double e = named ? metres(h, named, file, diagnostics) : kNaN;
         if (std::isfinite(e)) {
             w.referenceElevation_m = e;
@@ -162,8 +164,10 @@ WellLocation readWellLocation(const LasHeader& h, const std::string& file,
     w.groundElevation_m = metres(h, "EGL", file, diagnostics);
     if (!std::isfinite(w.groundElevation_m)) w.groundElevation_m = metres(h, "GL", file, nullptr);
 
-    static const char* const kProjected[][2] = {{"XWELL", "YWELL"}, {"XCOORD", "YCOORD"},
-                                                {"EASTING", "NORTHING"}, {"UTMX", "UTMY"},
+    static const char* const kProjected[][2] = {{"XWELL", "YWELL"},
+                                                {"XCOORD", "YCOORD"},
+                                                {"EASTING", "NORTHING"},
+                                                {"UTMX", "UTMY"},
                                                 {"X", "Y"}};
     for (const auto& pair : kProjected) {
         if (!item(h, pair[0]) || !item(h, pair[1])) continue;
@@ -234,7 +238,8 @@ std::string formatWellLocation(const WellLocation& w) {
                degrees(w.longitude_deg, w.longitudeText) + "\n";
     }
     if (std::isfinite(w.referenceElevation_m) || w.hasProjected() || !w.latitudeText.empty())
-        out += "placement: by --wellhead E,N,ELEV only (the header's location is shown, not used)\n";
+        out +=
+            "placement: by --wellhead E,N,ELEV only (the header's location is shown, not used)\n";
     return out;
 }
 

@@ -21,7 +21,9 @@ std::vector<SurveyStation> surveyStations(const io::SurveyTable& survey) {
     return out;
 }
 
-SurveyStation surfaceTieIn(const SurveyStation& first) { return {0.0, 0.0, first.azi_deg}; }
+SurveyStation surfaceTieIn(const SurveyStation& first) {
+    return {0.0, 0.0, first.azi_deg};
+}
 
 std::vector<SurveyStation> tiedToSurface(std::vector<SurveyStation> stations) {
     if (!stations.empty() && stations.front().md > 0.0)

@@ -152,8 +152,8 @@ void WellGeometry::computeSteps(std::size_t first, std::size_t last, double inc,
             // first section is tied to a vertical station there (docs/conventions.md,
             // "Tie-in"), so a log starting at 27 m starts 27 m down, not at the origin.
             const SurveyStation top = surfaceTieIn({p.md, inc, azi});
-            const MinimumCurvatureStep s =
-                minimumCurvatureStep(top.md, HoleDirection(top.inc_deg, top.azi_deg), p.md, current);
+            const MinimumCurvatureStep s = minimumCurvatureStep(
+                top.md, HoleDirection(top.inc_deg, top.azi_deg), p.md, current);
             p.north = s.dNorth;
             p.east = s.dEast;
             p.tvd = s.dTvd;

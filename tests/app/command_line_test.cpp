@@ -84,8 +84,7 @@ TEST(CommandLineTest, AnglesOutOfRangeExitOneNamingFileAndLine) {
 TEST(CommandLineTest, InfoShowsDepthReferenceLocationAndHoleAzimuth) {
     const auto star =
         caliper3d::test::sharedData() / "real" / "1AA072209208W400_WL_0477502_STAR_FIELD.las";
-    const auto fmi =
-        caliper3d::test::sharedData() / "real" / "1AA063409108W400_FMI_SONIC_MAIN.las";
+    const auto fmi = caliper3d::test::sharedData() / "real" / "1AA063409108W400_FMI_SONIC_MAIN.las";
     CALIPER3D_REQUIRE_DATA(star);
     CALIPER3D_REQUIRE_DATA(fmi);
     const CommandRun r = run("info " + star.string() + " " + fmi.string());

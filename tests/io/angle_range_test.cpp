@@ -28,9 +28,9 @@ std::string las(const std::string& p1az, const std::string& devi, const std::str
                        " :\n~Well\n NULL. -999.25 :\n~Curve\n DEPT.M :\n R1.IN :\n R2.IN :\n"
                        " R3.IN :\n R4.IN :\n P1AZ.DEG :\n DEVI.DEG :\n HAZI.DEG :\n~A\n";
     // Wrapped: the depth on a line of its own, then the other values.
-    const std::string rows[] = {"10.0", "4 4 4 4 10 1 20", "10.1",
-                                "4 4 4 4 " + p1az + " " + devi + " " + hazi, "10.2",
-                                "4 4 4 4 10 1 20"};
+    const std::string rows[] = {"10.0", "4 4 4 4 10 1 20",
+                                "10.1", "4 4 4 4 " + p1az + " " + devi + " " + hazi,
+                                "10.2", "4 4 4 4 10 1 20"};
     for (int i = 0; i < 6; ++i) text += rows[i] + (wrapped || i % 2 == 1 ? "\n" : " ");
     return text;  // unwrapped, the second data row is line 17
 }

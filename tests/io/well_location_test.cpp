@@ -20,8 +20,8 @@ WellLocation locationOf(const std::string& header, Diagnostics* diagnostics = nu
 }
 
 TEST(WellLocationTest, StarLogGivesKellyBushingElevationAndLatitudeLongitude) {
-    const auto file = caliper3d::test::sharedData() / "real" /
-                      "1AA072209208W400_WL_0477502_STAR_FIELD.las";
+    const auto file =
+        caliper3d::test::sharedData() / "real" / "1AA072209208W400_WL_0477502_STAR_FIELD.las";
     CALIPER3D_REQUIRE_DATA(file);
     const LogInfo info = describeLog(file.string(), ReadOptions{});
     const WellLocation& w = info.location;

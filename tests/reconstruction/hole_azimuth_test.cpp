@@ -23,11 +23,10 @@ double circularDifference(double a, double b) {
 
 io::SectionTable withoutHoleAzimuth(io::SectionTable t) {
     t.hazi_deg.clear();
-    t.extraCurves.erase(std::remove_if(t.extraCurves.begin(), t.extraCurves.end(),
-                                       [](const io::ExtraCurve& c) {
-                                           return c.mnemonic.rfind("HAZ", 0) == 0;
-                                       }),
-                        t.extraCurves.end());
+    t.extraCurves.erase(
+        std::remove_if(t.extraCurves.begin(), t.extraCurves.end(),
+                       [](const io::ExtraCurve& c) { return c.mnemonic.rfind("HAZ", 0) == 0; }),
+        t.extraCurves.end());
     return t;
 }
 
@@ -129,8 +128,10 @@ TEST(HoleAzimuthTest, StarLogHasNoHoleAzimuthAndTheReportSaysNoData) {
 
 TEST(HoleAzimuthTest, PlanNamesTheSourceForInfo) {
     io::LogInfo info;
-    info.curves = {{"DEPT", "M", "depth", 0}, {"P1AZ", "DEG", "pad-1 azimuth", 0},
-                   {"DEVI", "DEG", "deviation", 0}, {"RB", "DEG", "relative bearing", 0}};
+    info.curves = {{"DEPT", "M", "depth", 0},
+                   {"P1AZ", "DEG", "pad-1 azimuth", 0},
+                   {"DEVI", "DEG", "deviation", 0},
+                   {"RB", "DEG", "relative bearing", 0}};
     info.location.serviceCompany = "Schlumberger";
     EXPECT_EQ(io::holeAzimuthPlan(info).kind, io::SectionTable::HoleAzimuth::Derived);
     EXPECT_EQ(io::holeAzimuthPlan(info, true).kind, io::SectionTable::HoleAzimuth::Read);
