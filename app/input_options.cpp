@@ -7,6 +7,7 @@
 #include "io/survey_reader.h"
 #include "io/units.h"
 #include "reconstruction/survey_interpolation.h"
+#include "reconstruction/well_input.h"
 
 namespace caliper3d::app {
 
@@ -237,9 +238,15 @@ void printWarnings(const io::Diagnostics& diagnostics) {
                      diagnostics.warningCount - diagnostics.warnings.size());
 }
 
+io::SectionTable readWellFile(const WellSource& well, const InputOptions& options,
+                              io::Diagnostics* diagnostics) {
+    return reconstruction::loadWellTable(well.path, options.read, !well.surveyPath.empty(),
+                                         diagnostics);
+}
+
 io::SectionTable readWellFile(const std::string& path, const InputOptions& options,
                               io::Diagnostics* diagnostics) {
-    return io::readCaliperLog(path, options.read, diagnostics);
+    return readWellFile(WellSource{path, {}, {}}, options, diagnostics);
 }
 
 }  // namespace caliper3d::app

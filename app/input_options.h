@@ -72,8 +72,12 @@ reconstruction::Wellhead sceneOrigin(const std::vector<WellSource>& wells);
 // many more there were than the diagnostics kept.
 void printWarnings(const io::Diagnostics& diagnostics);
 
-// Reads a caliper log in any supported format (io::readCaliperLog). Throws
-// io::ParseError (file, line, what was expected) on bad input.
+// Reads a well's caliper log in any supported format and settles its hole
+// azimuth (reconstruction::loadWellTable; a --survey gives the azimuth).
+// Throws io::ParseError (file, line, what was expected) on bad input.
+io::SectionTable readWellFile(const WellSource& well, const InputOptions& options,
+                              io::Diagnostics* diagnostics);
+// The same for a log without a survey.
 io::SectionTable readWellFile(const std::string& path, const InputOptions& options,
                               io::Diagnostics* diagnostics);
 

@@ -112,9 +112,9 @@ void MainWindow::addWell(const WellSource& source, const InputOptions& options) 
         surveyError = e.what();
     }
     w.pipeline = std::make_unique<reconstruction::WellLoadPipeline>(
-        [file, options, surveyError] {
+        [source, options, surveyError] {
             if (!surveyError.empty()) throw std::runtime_error(surveyError);
-            return readWellFile(file, options, nullptr);
+            return readWellFile(source, options, nullptr);
         },
         geometry);
     m_status->setText("Loading " + name + "...");

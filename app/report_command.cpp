@@ -111,8 +111,8 @@ int runReport(const QStringList& args) {
         }
 
         io::Diagnostics diagnostics;
-        auto table = std::make_shared<const io::SectionTable>(
-            readWellFile(well.path, options, &diagnostics));
+        auto table =
+            std::make_shared<const io::SectionTable>(readWellFile(well, options, &diagnostics));
         const reconstruction::WellGeometry geometry(
             table, geometryOptions(options, well, sceneOrigin({well}), &diagnostics));
         const reconstruction::WellAnalysis result = reconstruction::analyseWell(geometry, analysis);

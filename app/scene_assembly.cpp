@@ -32,7 +32,7 @@ AssembledScene assembleScene(const std::vector<WellSource>& wells, const InputOp
             const reconstruction::GeometryOptions geometryOpts =
                 geometryOptions(options, well, origin, &diagnostics);
             auto table =
-                std::make_shared<const io::SectionTable>(readWellFile(file, options, &diagnostics));
+                std::make_shared<const io::SectionTable>(readWellFile(well, options, &diagnostics));
             auto geometry =
                 std::make_shared<const reconstruction::WellGeometry>(table, geometryOpts);
             scenegraph::WellScene scene;

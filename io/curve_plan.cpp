@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 
 #include "io/number_parsing.h"
 #include "io/parse_error.h"
@@ -55,6 +56,23 @@ void CurvePlan::mapRow(const double* raw, SectionTable& out) const {
         out.bitSize_mm.push_back(bitSizeConstant);
     for (std::size_t e = 0; e < extraColumns.size(); ++e)
         out.extraCurves[e].values.push_back(raw[extraColumns[e]]);
+}
+
+void CurvePlan::checkAngles(const double* raw, const std::string& file, std::size_t line) const {
+    // P1AZ, DEVI, HAZI (RB is left alone, see the header).
+    static constexpr double kMax[3] = {360.0, 180.0, 360.0};
+    static constexpr const char* kWhat[3] = {"a pad azimuth", "an inclination", "a hole azimuth"};
+    for (int a = 0; a < 3; ++a) {
+        if (angleColumn[a] < 0) continue;
+        const double v = raw[angleColumn[a]] * angleScale[a];
+        if (std::isnan(v) || (v >= 0.0 && v <= kMax[a])) continue;
+        char value[64];
+        std::snprintf(value, sizeof value, "%g", v);
+        throw ParseError(file, line, 0,
+                         "expected " + std::string(kWhat[a]) + " from 0 to " +
+                             std::to_string(static_cast<int>(kMax[a])) + " degrees in " +
+                             angleName[a] + ", found " + value);
+    }
 }
 
 CurvePlan makeCurvePlan(const std::vector<ColumnSpec>& columns, const LasHeader* header,
@@ -151,6 +169,7 @@ CurvePlan makeCurvePlan(const std::vector<ColumnSpec>& columns, const LasHeader*
                                  ", found '" + spec(c).unit + "'");
         plan.angleColumn[a] = c;
         plan.angleScale[a] = scale;
+        plan.angleName[a] = spec(c).mnemonic;
     }
 
     if (options.bitSize_mm) {

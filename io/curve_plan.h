@@ -36,6 +36,7 @@ struct CurvePlan {
     std::vector<double> armScale; // file unit -> millimetres of radius (diameters halved)
     int angleColumn[4] = {-1, -1, -1, -1};  // P1AZ, DEVI, HAZI, RB
     double angleScale[4] = {1.0, 1.0, 1.0, 1.0};
+    std::string angleName[4];  // the mnemonics, for messages
     int bitSizeColumn = -1;
     double bitSizeScale = 1.0;
     double bitSizeConstant = kNaN;  // from a parameter or an override
@@ -46,6 +47,11 @@ struct CurvePlan {
     SectionTable emptyTable(const std::vector<ColumnSpec>& columns) const;
     // Appends one row; `raw` holds one value per column, as written, NaN where null.
     void mapRow(const double* raw, SectionTable& out) const;
+    // Throws ParseError naming `file` and `line` when an inclination lies
+    // outside [0, 180] degrees or a pad or hole azimuth outside [0, 360]: such a
+    // reading is bad input, not a well that turns back on itself. RB is not
+    // checked (vendors write it in [0, 360) or in (-180, 180]).
+    void checkAngles(const double* raw, const std::string& file, std::size_t line) const;
 };
 
 // Chooses roles and unit factors for `columns` (refusing, with the header

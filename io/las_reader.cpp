@@ -151,8 +151,9 @@ LasLog readLas(std::string_view text, const std::string& file, const LasReadOpti
     row.reserve(declared);
     std::size_t rowLine = 0;
 
-    auto storeRow = [&]() {
+    auto storeRow = [&](std::size_t line) {
         for (std::size_t c = 0; c < declared; ++c) log.curves[c].values.push_back(c < row.size() ? row[c] : kNull);
+        log.rowLines.push_back(line);
         row.clear();
     };
     auto valueOf = [&](std::string_view token, std::size_t curve, std::size_t lineNo, std::size_t column) {
@@ -196,7 +197,7 @@ LasLog readLas(std::string_view text, const std::string& file, const LasReadOpti
                                      "expected " + std::to_string(declared) + " values per depth in wrapped data, found more");
                 row.push_back(valueOf(tokens[t], row.size(), lineNumber, tokenColumns[t]));
             }
-            if (row.size() == declared) storeRow();
+            if (row.size() == declared) storeRow(rowLine);
             continue;
         }
 
@@ -236,7 +237,7 @@ LasLog readLas(std::string_view text, const std::string& file, const LasReadOpti
             ++log.curves[row.size()].nulls;
             row.push_back(kNull);
         }
-        storeRow();
+        storeRow(lineNumber);
     }
     if (h.wrap && !row.empty())
         warn(rowLine, "last depth holds " + std::to_string(row.size()) + " of " + std::to_string(declared) +

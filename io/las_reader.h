@@ -31,6 +31,7 @@ struct LasCurve {
 struct LasLog {
     LasHeader header;
     std::vector<LasCurve> curves;
+    std::vector<std::size_t> rowLines;  // 1-based line where each row starts
     std::size_t rowCount() const { return curves.empty() ? 0 : curves.front().values.size(); }
 };
 

@@ -6,6 +6,7 @@
 
 #include "io/diagnostics.h"
 #include "io/section_table.h"
+#include "io/well_location.h"
 
 namespace caliper3d::io {
 
@@ -22,6 +23,8 @@ struct LogInfo {
     std::string file;
     std::string format;       // "LAS 2.0", "column text (depth R1..R6 P1AZ DEVI HAZI)", ...
     std::string wellName;
+    WellLocation location;    // from the LAS header (empty for column text)
+    std::string holeAzimuth;  // where the hole azimuth comes from (io::holeAzimuthPlan)
     std::string depthUnit;    // as written in the file
     std::size_t rows = 0;     // sections read
     double top_m = 0.0;

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "io/hole_azimuth_plan.h"
 #include "io/parse_error.h"
 #include "io/survey_reader.h"
 #include "io/text_encoding.h"
@@ -157,7 +158,14 @@ LogInfo describeSurvey(const std::string& path, const ReadOptions& options) {
 LogInfo describeLog(const std::string& path, const ReadOptions& options) {
     const std::string head = fileHead(path);
     if (!hasUtf16Mark(head) && looksLikeSurvey(head)) return describeSurvey(path, options);
-    return streamCaliperLog(path, options, [](const SectionTable&) {});
+    LogInfo info = streamCaliperLog(path, options, [](const SectionTable&) {});
+    const HoleAzimuthPlan plan = holeAzimuthPlan(info);
+    info.holeAzimuth = plan.description;
+    if (plan.kind == SectionTable::HoleAzimuth::Unknown)
+        info.diagnostics.warn(path, 0,
+                              "hole azimuth unknown: north, east and azimuth are not known where "
+                              "the hole is inclined (give --survey)");
+    return info;
 }
 
 std::string formatLogInfo(const LogInfo& info) {
@@ -165,6 +173,7 @@ std::string formatLogInfo(const LogInfo& info) {
     out << "file:      " << info.file << "\n";
     out << "format:    " << info.format << "\n";
     if (!info.wellName.empty()) out << "well:      " << info.wellName << "\n";
+    out << formatWellLocation(info.location);
     out << "rows:      " << info.rows << (info.survey ? " stations\n" : " sections\n");
     out.setf(std::ios::fixed);
     out.precision(4);
@@ -179,6 +188,7 @@ std::string formatLogInfo(const LogInfo& info) {
         out << "bit size:  " << info.bitSize_mm << " to " << info.bitSizeMax_mm << " mm\n";
     else if (std::isfinite(info.bitSize_mm)) out << "bit size:  " << info.bitSize_mm << " mm\n";
     else out << "bit size:  unknown (give --bit-size)\n";
+    if (!info.holeAzimuth.empty()) out << "hole azi:  " << info.holeAzimuth << "\n";
     out << (info.survey ? "columns:\n" : "curves:\n");
     // Characters, not bytes: a decoded UTF-16 header may hold non-ASCII mnemonics.
     auto shown = [](const std::string& s) {

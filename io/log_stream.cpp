@@ -464,6 +464,7 @@ void parseRows(const RowFormat& f, std::string_view text, std::size_t firstLine,
                 // Vendors round a second depth curve differently: only a centimetre or more counts.
                 if (std::abs(other - depth) * plan.depthScale >= 0.01) ++out.depthDiffer[k];
             }
+            plan.checkAngles(raw.data(), f.file, lineNumber);
             plan.mapRow(raw.data(), out.table);
             out.lines.push_back(lineNumber);
         }
@@ -617,6 +618,7 @@ private:
         const LasHeader& h = m_header;
         m_info.format = lasVersionText(h);
         if (const LasItem* well = h.wellItem("WELL")) m_info.wellName = well->value;
+        m_info.location = readWellLocation(h, m_name, &m_info.diagnostics);
         if (h.curves.empty())
             throw ParseError(m_name, 0, 0, "expected a ~C (curve information) section, found none");
         m_columns = lasColumns(h, &m_info.diagnostics);
@@ -1136,8 +1138,9 @@ private:
         std::vector<double> raw(m_columns.size());
         for (std::size_t r = 0; r < las.rowCount(); ++r) {
             for (std::size_t c = 0; c < raw.size(); ++c) raw[c] = las.curves[c].values[r];
+            m_plan.checkAngles(raw.data(), m_name, las.rowLines[r]);
             m_plan.mapRow(raw.data(), part.table);
-            part.lines.push_back(m_lineNumber + 1);
+            part.lines.push_back(las.rowLines[r]);
         }
         for (std::size_t c = 0; c < raw.size(); ++c) part.nulls[c] = las.curves[c].nulls;
         if (m_stream.onStart) m_stream.onStart(m_info, las.rowCount());

@@ -35,6 +35,13 @@ struct SectionTable {
     std::vector<double> rb_deg;     // relative bearing of arm 1 from the high side
     std::vector<double> bitSize_mm; // bit size per row (from a parameter or a curve)
     std::vector<ExtraCurve> extraCurves;
+    // Where hole_azimuth came from (docs/conventions.md, "Hole azimuth"):
+    // read from the log (or not needed: no HAZI and no inclination), derived
+    // from P1AZ and RB by a known tool's convention, or unknown (the log is
+    // inclined but gives no azimuth: the path is drawn leaning north and the
+    // report leaves what depends on it empty).
+    enum class HoleAzimuth : unsigned char { Read, Derived, Unknown };
+    HoleAzimuth holeAzimuth = HoleAzimuth::Read;
 
     std::size_t rowCount() const { return depth_m.size(); }
     const double* radii(std::size_t row) const { return radius_mm.data() + row * armCount; }

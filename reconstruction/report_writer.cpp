@@ -157,6 +157,9 @@ std::string formatAnalysisSummary(const WellAnalysis& a) {
                       a.unorientedSections);
         s += buf;
     }
+    if (a.holeAzimuthUnknown)
+        s += "warning: hole azimuth unknown (no HAZI, no known tool convention, no --survey): "
+             "north, east and azimuth are left empty where they depend on it\n";
     if (a.bitSizeFromSections)
         s += "warning: no bit size given: the median equivalent diameter is used as gauge\n";
     return s;

@@ -21,6 +21,16 @@ std::vector<SurveyStation> surveyStations(const io::SurveyTable& survey) {
     return out;
 }
 
+SurveyStation surfaceTieIn(const SurveyStation& first) {
+    return {0.0, 0.0, first.azi_deg};
+}
+
+std::vector<SurveyStation> tiedToSurface(std::vector<SurveyStation> stations) {
+    if (!stations.empty() && stations.front().md > 0.0)
+        stations.insert(stations.begin(), surfaceTieIn(stations.front()));
+    return stations;
+}
+
 namespace {
 SurveyStation fromTangent(double md, const Ned& t, double fallbackAzi_deg) {
     const double horizontal = std::hypot(t.x, t.y);

@@ -11,6 +11,16 @@ namespace caliper3d::reconstruction {
 // The stations of a read survey (metres, degrees).
 std::vector<SurveyStation> surveyStations(const io::SurveyTable& survey);
 
+// Tie-in (docs/conventions.md): measured depth counts from the depth
+// reference at the wellhead, where the hole is taken as vertical. The station
+// there, for a path whose first station is `first`: MD 0, inclination 0, and
+// `first`'s azimuth, so that the minimum-curvature step down to `first` builds
+// straight towards it (and is a vertical drop when `first` is vertical).
+SurveyStation surfaceTieIn(const SurveyStation& first);
+// `stations` with surfaceTieIn prepended when the first lies below MD 0;
+// unchanged when it is at (or above) MD 0 or there are none.
+std::vector<SurveyStation> tiedToSurface(std::vector<SurveyStation> stations);
+
 // The well path at each measured depth of `md` (ascending), from the survey's
 // stations: between two stations the point lies on the minimum-curvature arc
 // that joins them (its tangent turns at a constant rate in the plane of the

@@ -138,6 +138,7 @@ WellAnalysis analyseWell(const WellGeometry& g, const AnalysisOptions& options) 
     if (rows == 0) return a;
     const SectionBatchAnalyzer analyzer(g.knotCount(), g.options().splinePoints);
     a.twoPads = t.armCount == 2;
+    const bool azimuthKnown = g.holeAzimuthKnown();
     const int knots = analyzer.knots();
     const double bitOverride = options.bitSize_mm;
 
@@ -200,6 +201,12 @@ WellAnalysis analyseWell(const WellGeometry& g, const AnalysisOptions& options) 
                 r.east_m = p.east;
                 r.inc_deg = p.inc_deg;
                 r.azi_deg = p.azi_deg;
+                if (!azimuthKnown) {
+                    // No data, not north: the azimuth, and the departure wherever
+                    // the path above has leaned at all (docs/conventions.md).
+                    r.azi_deg = io::kNaN;
+                    if (p.north != 0.0 || p.east != 0.0) r.north_m = r.east_m = io::kNaN;
+                }
                 r.dls_degPer30m = p.dls_degPer30m;
                 r.bit_mm = std::isfinite(bitOverride) ? bitOverride : 2.0 * g.bitRadius_mm(row);
                 r.area_mm2 = shape.area_mm2;
@@ -219,6 +226,13 @@ WellAnalysis analyseWell(const WellGeometry& g, const AnalysisOptions& options) 
                                                options.rules)
                                : BoreholeClass::InGauge;
                 classes[row] = r.cls;
+                if (!azimuthKnown && p.inc_deg > 0.0) {
+                    // Arm 1 placed from RB has no true azimuth; from P1AZ, no high side.
+                    if (g.orientation(row) == WellGeometry::Orientation::RelativeBearing)
+                        r.majorAzimuth_deg = r.centreOffsetAzimuth_deg = io::kNaN;
+                    else
+                        r.majorFromHighSide_deg = io::kNaN;
+                }
                 a.sections.set(row, r);
                 if (r.repairedArms > 0) {
                     ++count.repairedSections;
@@ -280,7 +294,10 @@ WellAnalysis analyseWell(const WellGeometry& g, const AnalysisOptions& options) 
     a.volume = volume.result();
     PadAzimuthSums orientation;
     for (const PadAzimuthSums& s : orientationSums) orientation.add(s);
-    a.padAzimuthOffset = padAzimuthOffset(orientation);
+    // A HAZI derived from P1AZ - RB agrees with P1AZ and RB by construction.
+    if (g.table().holeAzimuth != io::SectionTable::HoleAzimuth::Derived)
+        a.padAzimuthOffset = padAzimuthOffset(orientation);
+    a.holeAzimuthUnknown = !g.holeAzimuthKnown();
     for (const BlockCounts& c : counts) {
         a.repairedSections += c.repairedSections;
         a.repairedArms += c.repairedArms;

@@ -47,6 +47,7 @@ struct WellAnalysis {
     std::size_t repairedArms = 0;
     std::size_t unorientedSections = 0;  // no P1AZ nor RB: arm 1 assumed north
     bool bitSizeFromSections = false;    // no bit size anywhere: median equivalent diameter used
+    bool holeAzimuthUnknown = false;     // inclined, no HAZI nor survey: see docs/conventions.md
     bool twoPads = false;                // a two-pad tool: round sections, no breakout nor keyseat seen
 };
 

@@ -72,7 +72,7 @@ WellGeometry::WellGeometry(std::shared_ptr<const io::SectionTable> table,
     // faulted in on every worker at once first, not by the first writer.
     const int threads = std::max(1, m_options.threads);
     if (fromSurvey) {
-        m_path = interpolateSurveyPath(m_options.survey, t.depth_m);
+        m_path = interpolateSurveyPath(tiedToSurface(m_options.survey), t.depth_m);
     } else {
         m_path.reserve(rows);
         prefaultPages(m_path.data(), rows * sizeof(PathPoint), threads);
@@ -147,6 +147,16 @@ void WellGeometry::computeSteps(std::size_t first, std::size_t last, double inc,
             p.tvd = s.dTvd;
             p.dogleg_deg = glm::degrees(s.dogleg_rad);
             p.dls_degPer30m = doglegSeverity_degPer30m(p.dogleg_deg, p.md - mdBefore);
+        } else {
+            // Measured depth counts from the depth reference at the wellhead: the
+            // first section is tied to a vertical station there (docs/conventions.md,
+            // "Tie-in"), so a log starting at 27 m starts 27 m down, not at the origin.
+            const SurveyStation top = surfaceTieIn({p.md, inc, azi});
+            const MinimumCurvatureStep s = minimumCurvatureStep(
+                top.md, HoleDirection(top.inc_deg, top.azi_deg), p.md, current);
+            p.north = s.dNorth;
+            p.east = s.dEast;
+            p.tvd = s.dTvd;
         }
         previous = current;
     }

@@ -94,6 +94,14 @@ public:
     enum class Orientation : unsigned char { PadAzimuth, RelativeBearing, Unoriented };
     Orientation orientation(std::size_t row) const { return m_orientation[row]; }
 
+    // False when the log is inclined but gives no hole azimuth and no survey
+    // replaces it: the path then leans north only because an azimuth is needed
+    // to draw it, and north, east and azimuth are not known.
+    bool holeAzimuthKnown() const {
+        return !m_options.survey.empty() ||
+               m_table->holeAzimuth != io::SectionTable::HoleAzimuth::Unknown;
+    }
+
     // Bit radius of a row, millimetres (NaN when unknown).
     double bitRadius_mm(std::size_t row) const;
 

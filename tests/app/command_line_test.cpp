@@ -56,3 +56,43 @@ TEST(CommandLineTest, BadUsageExitsTwo) {
     EXPECT_EQ(run("export x.txt -o x.iv --arms 1").status, 2);
     EXPECT_EQ(run("--help").status, 0);
 }
+
+TEST(CommandLineTest, AnglesOutOfRangeExitOneNamingFileAndLine) {
+    const auto text = caliper3d::test::scratch("cli_inc181.txt");
+    {
+        std::ofstream(text) << "1 4 4 4 4 4 4 10 1 20\n2 4 4 4 4 4 4 10 181 20\n"
+                               "3 4 4 4 4 4 4 10 1 20\n";
+    }
+    CommandRun r = run("report " + text.string() + " -o " +
+                       caliper3d::test::scratch("cli_inc181.csv").string());
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find(text.string() + ":2: expected an inclination from 0 to 180 degrees"),
+              std::string::npos)
+        << r.output;
+    const auto las = caliper3d::test::scratch("cli_azi361.las");
+    {
+        std::ofstream(las) << "~V\n VERS. 2.0 :\n WRAP. NO :\n~C\n DEPT.M :\n R1.MM :\n R2.MM :\n"
+                              " R3.MM :\n HAZI.DEG :\n~A\n1 100 100 100 10\n2 100 100 100 361\n";
+    }
+    r = run("export " + las.string() + " -o " + caliper3d::test::scratch("cli_azi361.iv").string());
+    EXPECT_EQ(r.status, 1) << r.output;
+    EXPECT_NE(r.output.find(las.string() + ":12: expected a hole azimuth from 0 to 360 degrees"),
+              std::string::npos)
+        << r.output;
+}
+
+TEST(CommandLineTest, InfoShowsDepthReferenceLocationAndHoleAzimuth) {
+    const auto star =
+        caliper3d::test::sharedData() / "real" / "1AA072209208W400_WL_0477502_STAR_FIELD.las";
+    const auto fmi = caliper3d::test::sharedData() / "real" / "1AA063409108W400_FMI_SONIC_MAIN.las";
+    CALIPER3D_REQUIRE_DATA(star);
+    CALIPER3D_REQUIRE_DATA(fmi);
+    const CommandRun r = run("info " + star.string() + " " + fmi.string());
+    EXPECT_EQ(r.status, 0) << r.output;
+    for (const char* shown :
+         {"depth ref: K.B., elevation 440.70 m from EKB", "lat/long:  57.017500, -111.419000",
+          "UWI:       1AA072209208W400", "hole azi:  unknown: no HAZI curve",
+          "depth ref: KB, elevation 449.00 m from EREF", "lat/long:  56.934500, -111.205400",
+          "UWI:       1AA063409108W400", "hole azi:  from HAZI"})
+        EXPECT_NE(r.output.find(shown), std::string::npos) << shown << "\n" << r.output;
+}

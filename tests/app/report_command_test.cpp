@@ -326,3 +326,51 @@ TEST(ReportCommandTest, RadiiOptionTakesTwoOrMoreNamesOrOneWholeArray) {
         << two.output;
     EXPECT_EQ(runCaliper3d("info " + las.string() + " --radii 'MFC[1]'").status, 2);
 }
+
+TEST(ReportCommandTest, StarLogIsMeasuredFromTheWellheadAndLeavesUnknownAzimuthEmpty) {
+    // The STAR log starts at MD 26.97 m below its kelly bushing and has no HAZI:
+    // TVD counts from the wellhead, and north, east and azimuth are no data.
+    const auto star =
+        caliper3d::test::sharedData() / "real" / "1AA072209208W400_WL_0477502_STAR_FIELD.las";
+    CALIPER3D_REQUIRE_DATA(star);
+    const auto csv = scratch("report_star.csv");
+    const CommandRun r = runCaliper3d("report " + star.string() + " -o " + csv.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("hole azimuth unknown"), std::string::npos) << r.output;
+    const Csv report = readCsv(csv);
+    ASSERT_GT(report.rows.size(), 1000u);
+    EXPECT_NEAR(report.number(0, "md_m"), 26.9748, 1e-4);
+    EXPECT_NEAR(report.number(0, "tvd_m"), 26.9748, 1e-4);  // vertical at the top
+    const std::size_t last = report.rows.size() - 1;
+    EXPECT_TRUE(std::isnan(report.number(last, "north_m")));
+    EXPECT_TRUE(std::isnan(report.number(last, "east_m")));
+    EXPECT_TRUE(std::isnan(report.number(last, "azi_deg")));
+    EXPECT_LT(report.number(last, "md_m") - report.number(last, "tvd_m"), 0.01);
+}
+
+TEST(ReportCommandTest, TieInGivesTheSameTvdWithAndWithoutASurvey) {
+    // A vertical log from 27 m, with and without a survey from the wellhead:
+    // the same TVD (= MD) on every row.
+    const std::string log = scratch("report_tie_in.txt").string();
+    {
+        std::ofstream out(log);
+        for (int i = 0; i <= 40; ++i)
+            out << 27.0 + 0.5 * i << " 4.25 4.25 4.25 4.25 4.25 4.25 10 0 0\n";
+    }
+    const auto survey = scratch("report_tie_in_survey.csv");
+    { std::ofstream(survey) << "MD,INC,AZI\n0,0,0\n100,0,0\n"; }
+    const auto plain = scratch("report_tie_in.csv"), surveyed = scratch("report_tie_in_s.csv");
+    ASSERT_EQ(runCaliper3d("report " + log + " -o " + plain.string()).status, 0);
+    const CommandRun r =
+        runCaliper3d("report " + log + " -o " + surveyed.string() + " --survey " + survey.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    const Csv a = readCsv(plain), b = readCsv(surveyed);
+    ASSERT_EQ(a.rows.size(), 41u);
+    ASSERT_EQ(b.rows.size(), 41u);
+    for (std::size_t i = 0; i < a.rows.size(); ++i) {
+        EXPECT_DOUBLE_EQ(a.number(i, "tvd_m"), a.number(i, "md_m"));
+        EXPECT_DOUBLE_EQ(b.number(i, "tvd_m"), a.number(i, "tvd_m"));
+        EXPECT_DOUBLE_EQ(b.number(i, "north_m"), a.number(i, "north_m"));
+        EXPECT_DOUBLE_EQ(b.number(i, "east_m"), a.number(i, "east_m"));
+    }
+}

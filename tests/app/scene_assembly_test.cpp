@@ -1,5 +1,7 @@
 #include "app/scene_assembly.h"
 
+#include <fstream>
+
 #include <gtest/gtest.h>
 
 #include "io/column_text_writer.h"
@@ -41,4 +43,30 @@ TEST(SceneAssemblyTest, AMissingSurveyFailsThatWellOnly) {
     const app::AssembledScene scene = app::assembleScene({bad, good}, app::InputOptions{});
     EXPECT_EQ(scene.wells, 1);
     EXPECT_EQ(scene.failures, 1);
+}
+
+TEST(SceneAssemblyTest, WellsWithDifferentLogTopsArePlacedAtTheirTrueDepths) {
+    // Two vertical wells at the same elevation, one logged from 0 m and one
+    // from 27.7 m: their tops are 27.7 m apart in depth, not level.
+    scenegraph::initCoin();
+    const auto fromSurface = test::scratch("assembly_top0.txt");
+    const auto fromBelow = test::scratch("assembly_top27.txt");
+    {
+        std::ofstream a(fromSurface), b(fromBelow);
+        for (int i = 0; i <= 40; ++i) {
+            a << 0.5 * i << " 4.25 4.25 4.25 4.25 4.25 4.25 10 0 0\n";
+            b << 27.7 + 0.5 * i << " 4.25 4.25 4.25 4.25 4.25 4.25 10 0 0\n";
+        }
+    }
+    app::WellSource first{fromSurface.string(), {}, reconstruction::Wellhead{1000.0, 2000.0, 50.0}};
+    app::WellSource second{fromBelow.string(), {}, reconstruction::Wellhead{1030.0, 2000.0, 50.0}};
+    const app::AssembledScene scene = app::assembleScene({first, second}, app::InputOptions{});
+    ASSERT_EQ(scene.wells, 2);
+    const reconstruction::Ned a = scene.geometries[0]->centre(0);
+    const reconstruction::Ned b = scene.geometries[1]->centre(0);
+    EXPECT_DOUBLE_EQ(a.z, 0.0);
+    EXPECT_NEAR(b.z, 27.7, 1e-9);
+    EXPECT_NEAR(b.y, 30.0, 1e-9);  // 30 m east
+    // Row for row the deeper log lies 27.7 m lower.
+    EXPECT_NEAR(scene.geometries[1]->centre(10).z - scene.geometries[0]->centre(10).z, 27.7, 1e-9);
 }

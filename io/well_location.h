@@ -1,0 +1,55 @@
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+#include "io/diagnostics.h"
+#include "io/las_header.h"
+#include "io/section_table.h"
+
+namespace caliper3d::io {
+
+// Where a log says its well is, read from the LAS ~Well and ~Parameter
+// sections (docs/conventions.md, "Depth reference and well location").
+// Everything is optional: NaN or empty when the header does not say.
+struct WellLocation {
+    std::string uwi;             // UWI (or API)
+    std::string serviceCompany;  // SRVC, else LCNM, else PROD
+    // The depth reference, as the file names it (LMF, else DREF, else DMF):
+    // "KB", "K.B.", "KELLY BUSHING", ...
+    std::string depthReference;
+    // Elevation of the depth reference above the permanent datum, metres,
+    // and which items gave it ("EKB (LMF K.B.)", "EREF", "EPD + APD").
+    double referenceElevation_m = kNaN;
+    std::string elevationSource;
+    double groundElevation_m = kNaN;  // EGL, else GL
+    // Projected map coordinates, metres, and the items that gave them.
+    double easting_m = kNaN;
+    double northing_m = kNaN;
+    std::string projectedSource;
+    // Geographic coordinates, decimal degrees (south and west negative), and
+    // the text they were read from.
+    double latitude_deg = kNaN;
+    double longitude_deg = kNaN;
+    std::string latitudeText;
+    std::string longitudeText;
+
+    bool hasProjected() const;
+    bool empty() const;
+};
+
+// Reads the well's location and depth reference from a LAS header. Items in
+// a length unit the product does not know, or whose value is not a number,
+// are skipped with a warning; a depth reference elevation that disagrees with
+// EPD + APD by more than 5 cm is kept and warned about.
+WellLocation readWellLocation(const LasHeader& header, const std::string& file,
+                              Diagnostics* diagnostics);
+
+// "57.0175 N", "-111.419 W", "56.934500 degrees", "57 1 3.0 N" as decimal
+// degrees (south and west negative); NaN when the text is none of these.
+double parseGeographicDegrees(const std::string& text);
+
+// The lines `caliper3d info` prints ("" when the location is empty).
+std::string formatWellLocation(const WellLocation& location);
+
+}  // namespace caliper3d::io

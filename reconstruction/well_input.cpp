@@ -1,0 +1,28 @@
+#include "reconstruction/well_input.h"
+
+#include "io/log_reader.h"
+#include "io/parse_error.h"
+#include "reconstruction/hole_azimuth.h"
+
+namespace caliper3d::reconstruction {
+
+io::SectionTable loadWellTable(const std::string& path, const io::ReadOptions& options,
+                               bool surveyGiven, io::Diagnostics* diagnostics) {
+    io::LoadedLog loaded = io::loadCaliperLog(path, options);
+    if (loaded.table.armCount == 0)
+        throw io::ParseError(path, 0, 0,
+                             "expected caliper curves (radii R1..Rn, RAD1..n, fingers F01..Fnn, "
+                             "diameters C1, C2, or one diameter CALI), found none among " +
+                                 std::to_string(loaded.info.curves.size()) +
+                                 " curves; name them with --radii or --diameters");
+    if (diagnostics) {
+        for (const io::Warning& w : loaded.info.diagnostics.warnings)
+            diagnostics->warn(w.file, w.line, w.message);
+        diagnostics->warningCount +=
+            loaded.info.diagnostics.warningCount - loaded.info.diagnostics.warnings.size();
+    }
+    resolveHoleAzimuth(loaded.table, io::holeAzimuthPlan(loaded.info, surveyGiven), diagnostics);
+    return std::move(loaded.table);
+}
+
+}  // namespace caliper3d::reconstruction

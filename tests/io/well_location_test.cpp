@@ -1,0 +1,104 @@
+// Depth reference elevation and well location from the LAS header
+// (docs/conventions.md, "Depth reference and well location").
+#include "io/well_location.h"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "io/log_reader.h"
+#include "test_support.h"
+
+using namespace caliper3d::io;
+
+namespace {
+
+WellLocation locationOf(const std::string& header, Diagnostics* diagnostics = nullptr) {
+    const std::string text = "~Version\n VERS. 2.0 :\n WRAP. NO :\n" + header +
+                             "~Curve\n DEPT.M :\n R1.IN :\n R2.IN :\n R3.IN :\n~A\n1 4 4 4\n";
+    return readWellLocation(parseLasHeader(text, "h.las", nullptr), "h.las", diagnostics);
+}
+
+TEST(WellLocationTest, StarLogGivesKellyBushingElevationAndLatitudeLongitude) {
+    const auto file =
+        caliper3d::test::sharedData() / "real" / "1AA072209208W400_WL_0477502_STAR_FIELD.las";
+    CALIPER3D_REQUIRE_DATA(file);
+    const LogInfo info = describeLog(file.string(), ReadOptions{});
+    const WellLocation& w = info.location;
+    EXPECT_EQ(w.uwi, "1AA072209208W400");
+    EXPECT_EQ(w.serviceCompany, "Baker Hughes");
+    EXPECT_EQ(w.depthReference, "K.B.");
+    EXPECT_DOUBLE_EQ(w.referenceElevation_m, 440.70);  // EKB, = EPD 438.50 + APD 2.20
+    EXPECT_EQ(w.elevationSource, "EKB");
+    EXPECT_DOUBLE_EQ(w.groundElevation_m, 438.50);
+    EXPECT_DOUBLE_EQ(w.latitude_deg, 57.0175);
+    EXPECT_DOUBLE_EQ(w.longitude_deg, -111.419);  // "-111.419 W": west once
+    EXPECT_FALSE(w.hasProjected());
+    const std::string shown = formatLogInfo(info);
+    EXPECT_NE(shown.find("depth ref: K.B., elevation 440.70 m from EKB"), std::string::npos)
+        << shown;
+    EXPECT_NE(shown.find("lat/long:  57.017500, -111.419000"), std::string::npos) << shown;
+    EXPECT_NE(shown.find("UWI:       1AA072209208W400"), std::string::npos) << shown;
+}
+
+TEST(WellLocationTest, FmiLogGivesItsReferenceElevationFromEref) {
+    const auto file =
+        caliper3d::test::sharedData() / "real" / "1AA063409108W400_FMI_SONIC_MAIN.las";
+    CALIPER3D_REQUIRE_DATA(file);
+    const LogInfo info = describeLog(file.string(), ReadOptions{});
+    const WellLocation& w = info.location;
+    EXPECT_EQ(w.uwi, "1AA063409108W400");
+    EXPECT_EQ(w.serviceCompany, "Schlumberger");
+    EXPECT_EQ(w.depthReference, "KB");
+    EXPECT_DOUBLE_EQ(w.referenceElevation_m, 449.0);
+    EXPECT_EQ(w.elevationSource, "EREF");
+    EXPECT_DOUBLE_EQ(w.groundElevation_m, 445.0);
+    EXPECT_DOUBLE_EQ(w.latitude_deg, 56.9345);
+    EXPECT_DOUBLE_EQ(w.longitude_deg, -111.2054);
+    EXPECT_NE(formatLogInfo(info).find("depth ref: KB, elevation 449.00 m from EREF"),
+              std::string::npos);
+}
+
+TEST(WellLocationTest, ElevationFollowsTheNamedReferenceThenPermanentDatumPlusApd) {
+    // LMF names the drill floor: EDF, not EKB.
+    EXPECT_DOUBLE_EQ(
+        locationOf("~Parameter\n LMF. DF :\n EKB.M 101.0 :\n EDF.M 100.5 :\n").referenceElevation_m,
+        100.5);
+    // No named elevation: the permanent datum plus the reference's height above it, in feet.
+    const WellLocation feet = locationOf("~Parameter\n LMF. KB :\n EPD.F 1000 :\n APD.F 20 :\n");
+    EXPECT_NEAR(feet.referenceElevation_m, 1020 * 0.3048, 1e-9);
+    EXPECT_EQ(feet.elevationSource, "EPD + APD");
+    // Nothing says where the depths are measured from: no elevation.
+    EXPECT_TRUE(std::isnan(locationOf("~Parameter\n EKB.M 101.0 :\n").referenceElevation_m));
+    // A named elevation that disagrees with EPD + APD is used, and warned about.
+    Diagnostics d;
+    const WellLocation odd =
+        locationOf("~Parameter\n LMF. KB :\n EKB.M 101.0 :\n EPD.M 90 :\n APD.M 10 :\n", &d);
+    EXPECT_DOUBLE_EQ(odd.referenceElevation_m, 101.0);
+    ASSERT_EQ(d.warningCount, 1u);
+    EXPECT_NE(d.warnings[0].message.find("differs from EPD + APD = 100.00 m"), std::string::npos);
+}
+
+TEST(WellLocationTest, ProjectedCoordinatesNeedALengthUnit) {
+    const WellLocation w = locationOf("~Well\n XWELL.M 512300.5 :\n YWELL.M 6801200.25 :\n");
+    EXPECT_TRUE(w.hasProjected());
+    EXPECT_DOUBLE_EQ(w.easting_m, 512300.5);
+    EXPECT_DOUBLE_EQ(w.northing_m, 6801200.25);
+    EXPECT_EQ(w.projectedSource, "XWELL, YWELL");
+    // X and Y in degrees are geographic, not a map grid.
+    Diagnostics d;
+    EXPECT_FALSE(locationOf("~Well\n X.DEG -111.4 :\n Y.DEG 57.0 :\n", &d).hasProjected());
+    EXPECT_EQ(d.warningCount, 2u);
+}
+
+TEST(WellLocationTest, GeographicDegreesReadHemispheresAndMinutes) {
+    EXPECT_DOUBLE_EQ(parseGeographicDegrees("57.0175 N"), 57.0175);
+    EXPECT_DOUBLE_EQ(parseGeographicDegrees("56.934500 degrees"), 56.9345);
+    EXPECT_DOUBLE_EQ(parseGeographicDegrees("111.419 W"), -111.419);
+    EXPECT_DOUBLE_EQ(parseGeographicDegrees("-111.419 W"), -111.419);
+    EXPECT_DOUBLE_EQ(parseGeographicDegrees("57 1 3.0 N"), 57.0 + 1.0 / 60.0 + 3.0 / 3600.0);
+    EXPECT_DOUBLE_EQ(parseGeographicDegrees("33\xC2\xB0 30' S"), -33.5);
+    EXPECT_TRUE(std::isnan(parseGeographicDegrees("unknown")));
+}
+
+}  // namespace
