@@ -160,6 +160,13 @@ LogInfo describeLog(const std::string& path, const ReadOptions& options) {
     return streamCaliperLog(path, options, [](const SectionTable&) {});
 }
 
+LogInfo describeLog(const std::string& path, const ReadOptions& options,
+                    const std::function<void(const SectionTable&)>& onRows) {
+    const std::string head = fileHead(path);
+    if (!hasUtf16Mark(head) && looksLikeSurvey(head)) return describeSurvey(path, options);
+    return streamCaliperLog(path, options, onRows);
+}
+
 std::string formatLogInfo(const LogInfo& info) {
     std::ostringstream out;
     out << "file:      " << info.file << "\n";
