@@ -5,6 +5,7 @@
 #include "app/verb_parser.h"
 #include "io/log_reader.h"
 #include "io/survey_reader.h"
+#include "reconstruction/section_coverage.h"
 #include "reconstruction/survey_interpolation.h"
 
 namespace caliper3d::app {
@@ -20,8 +21,33 @@ int runInfo(const QStringList& args) {
         int failures = 0;
         for (const std::string& file : verb.positional()) {
             try {
-                const io::LogInfo info = io::describeLog(file, options.read);
+                // Rows with a section shape, by the rule the other verbs draw and analyse with.
+                const reconstruction::GeometryOptions geometry = geometryOptions(options);
+                std::size_t measured = 0;
+                int needed = 0, arms = 0;
+                const io::LogInfo info =
+                    io::describeLog(file, options.read, [&](const io::SectionTable& rows) {
+                        arms = rows.armCount;
+                        needed = reconstruction::minValidArms(arms, geometry.minValidArmFraction);
+                        for (std::size_t i = 0; i < rows.rowCount(); ++i)
+                            measured += reconstruction::countValidArms(
+                                            rows.radii(i), arms, geometry.minArmRadius_mm,
+                                            geometry.maxArmRadius_mm) >= needed;
+                    });
                 std::fputs(io::formatLogInfo(info).c_str(), stdout);
+                if (!info.survey) {
+                    std::printf(
+                        "caliper:   %zu of %zu sections measured (at least %d of %d arms valid)\n",
+                        measured, info.rows, needed, arms);
+                    if (measured == 0) {
+                        // Described, but every other verb refuses it: say so and fail.
+                        ++failures;
+                        std::fprintf(stderr,
+                                     "caliper3d info: %s: no usable caliper data: no section has "
+                                     "at least %d of its %d arms with a valid reading\n",
+                                     file.c_str(), needed, arms);
+                    }
+                }
                 if (info.survey) {
                     // The positions a survey writes, checked against minimum curvature.
                     io::SurveyReadOptions survey;

@@ -231,8 +231,13 @@ reconstruction::Wellhead sceneOrigin(const std::vector<WellSource>& wells) {
 }
 
 void printWarnings(const io::Diagnostics& diagnostics) {
-    for (const io::Warning& w : diagnostics.warnings)
-        std::fprintf(stderr, "%s:%zu: warning: %s\n", w.file.c_str(), w.line, w.message.c_str());
+    for (const io::Warning& w : diagnostics.warnings) {
+        if (w.line > 0)
+            std::fprintf(stderr, "%s:%zu: warning: %s\n", w.file.c_str(), w.line,
+                         w.message.c_str());
+        else  // about the whole well, not one line of it
+            std::fprintf(stderr, "%s: warning: %s\n", w.file.c_str(), w.message.c_str());
+    }
     if (diagnostics.warningCount > diagnostics.warnings.size())
         std::fprintf(stderr, "... and %zu more warnings\n",
                      diagnostics.warningCount - diagnostics.warnings.size());

@@ -14,6 +14,7 @@
 #include "reconstruction/report_writer.h"
 #include "reconstruction/rule_settings.h"
 #include "reconstruction/well_analysis.h"
+#include "reconstruction/well_warnings.h"
 
 namespace caliper3d::app {
 
@@ -113,8 +114,10 @@ int runReport(const QStringList& args) {
         io::Diagnostics diagnostics;
         auto table =
             std::make_shared<const io::SectionTable>(readWellFile(well, options, &diagnostics));
-        const reconstruction::WellGeometry geometry(
-            table, geometryOptions(options, well, sceneOrigin({well}), &diagnostics));
+        reconstruction::GeometryOptions geometryOpts =
+            geometryOptions(options, well, sceneOrigin({well}), &diagnostics);
+        geometryOpts.minValidArmFraction = analysis.rules.minValidArmFraction;
+        const reconstruction::WellGeometry geometry(table, geometryOpts);
         const reconstruction::WellAnalysis result = reconstruction::analyseWell(geometry, analysis);
 
         // Each output goes to its file, or to standard output for '-' (one of them at most).
@@ -142,9 +145,12 @@ int runReport(const QStringList& args) {
 
         // With the report on standard output, everything else goes to standard error.
         FILE* info = toStdout ? stderr : stdout;
-        std::fprintf(info, "%s: %zu sections, %zu reported, %zu zones%s\n", well.path.c_str(),
-                     result.sections.size(),
+        reconstruction::warnAnalysis(geometry, result, diagnostics);
+        std::fprintf(info,
+                     "%s: %zu sections, %zu reported, %zu zones, %zu no data, %zu warnings%s\n",
+                     well.path.c_str(), result.sections.size(),
                      reconstruction::reportedSections(result, report).size(), result.zones.size(),
+                     result.noDataSections, diagnostics.warningCount,
                      well.surveyPath.empty() ? "" : (", path from " + well.surveyPath).c_str());
         std::fputs(reconstruction::formatAnalysisSummary(result).c_str(), info);
         printWarnings(diagnostics);

@@ -10,6 +10,7 @@
 
 #include "io/parse_error.h"
 #include "reconstruction/well_geometry.h"
+#include "reconstruction/well_warnings.h"
 #include "scenegraph/well_scene.h"
 
 namespace caliper3d::app {
@@ -40,25 +41,14 @@ AssembledScene assembleScene(const std::vector<WellSource>& wells, const InputOp
             out.geometries.push_back(geometry);
             out.root->addChild(scene.root());
             ++out.wells;
+            // No-data intervals and interpolated arms join the reader's warnings,
+            // so that the count printed is the count of the warnings printed.
+            reconstruction::warnGeometry(*geometry, diagnostics);
             std::printf(
                 "%s: %zu sections, %zu segments, %zu triangles at full detail, %zu warnings\n",
                 file.c_str(), table->rowCount(), scene.segmentCount(), scene.fullDetailTriangles(),
                 diagnostics.warningCount);
             printWarnings(diagnostics);
-            // Arms the sections were drawn without (null, closed, beyond reach): say so, as report
-            // does.
-            std::size_t repairedArms = 0, repairedSections = 0;
-            std::vector<double> radii(static_cast<std::size_t>(table->armCount));
-            for (std::size_t row = 0; row < table->rowCount(); ++row) {
-                const int repaired = geometry->repairRadii(row, radii.data());
-                repairedArms += static_cast<std::size_t>(repaired);
-                repairedSections += repaired > 0;
-            }
-            if (repairedSections > 0)
-                std::fprintf(stderr,
-                             "%s: warning: %zu arms interpolated on %zu sections (missing, closed "
-                             "or beyond reach)\n",
-                             file.c_str(), repairedArms, repairedSections);
         } catch (const std::exception& e) {
             ++out.failures;
             std::fprintf(stderr, "caliper3d: %s\n", e.what());

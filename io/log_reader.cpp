@@ -156,9 +156,14 @@ LogInfo describeSurvey(const std::string& path, const ReadOptions& options) {
 }  // namespace
 
 LogInfo describeLog(const std::string& path, const ReadOptions& options) {
+    return describeLog(path, options, [](const SectionTable&) {});
+}
+
+LogInfo describeLog(const std::string& path, const ReadOptions& options,
+                    const std::function<void(const SectionTable&)>& onRows) {
     const std::string head = fileHead(path);
     if (!hasUtf16Mark(head) && looksLikeSurvey(head)) return describeSurvey(path, options);
-    LogInfo info = streamCaliperLog(path, options, [](const SectionTable&) {});
+    LogInfo info = streamCaliperLog(path, options, onRows);
     const HoleAzimuthPlan plan = holeAzimuthPlan(info);
     info.holeAzimuth = plan.description;
     if (plan.kind == SectionTable::HoleAzimuth::Unknown)

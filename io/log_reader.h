@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -41,6 +42,10 @@ LoadedLog loadCaliperText(std::string_view text, const std::string& name, const 
 // MD range and columns with the role each is read in. Throws ParseError for
 // what is neither (JSON, binary) or cannot be read.
 LogInfo describeLog(const std::string& path, const ReadOptions& options);
+// The same, handing each chunk of a caliper log's rows to `onRows` (never
+// called for a survey), for a caller that checks the data as it streams by.
+LogInfo describeLog(const std::string& path, const ReadOptions& options,
+                    const std::function<void(const SectionTable&)>& onRows);
 std::string formatLogInfo(const LogInfo& info);
 
 }  // namespace caliper3d::io

@@ -12,6 +12,7 @@ std::string_view className(BoreholeClass c) {
         case BoreholeClass::Washout: return "washout";
         case BoreholeClass::Breakout: return "breakout";
         case BoreholeClass::Keyseat: return "keyseat";
+        case BoreholeClass::NoData: return "no_data";
     }
     return "in_gauge";
 }

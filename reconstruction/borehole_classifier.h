@@ -5,11 +5,22 @@
 #include <string_view>
 #include <vector>
 
+#include "reconstruction/section_coverage.h"
+
 namespace caliper3d::reconstruction {
 
-enum class BoreholeClass : unsigned char { InGauge, Undergauge, Washout, Breakout, Keyseat };
+// NoData: too few valid arms to define the section (never a shape class;
+// WellAnalysis sets it, and it is left out of zones, statistics and volumes).
+enum class BoreholeClass : unsigned char {
+    InGauge,
+    Undergauge,
+    Washout,
+    Breakout,
+    Keyseat,
+    NoData
+};
 
-// "in_gauge", "undergauge", "washout", "breakout", "keyseat": the report's names.
+// "in_gauge", "undergauge", "washout", "breakout", "keyseat", "no_data": the report's names.
 std::string_view className(BoreholeClass c);
 
 // Every threshold of the classification (design section 7), with the
@@ -33,6 +44,9 @@ struct ClassificationRules {
     // major_azimuth_deg and major_from_high_side_deg are empty (a fit through six
     // pads of a round hole 15 mm off the tool gives 0.13 mm of false elongation).
     double axisMinElongation_mm = 0.5;
+    // A section with fewer valid arms than this fraction of its arms (at least
+    // 2) has no data (section_coverage.h, docs/analysis.md).
+    double minValidArmFraction = kDefaultMinValidArmFraction;
 };
 
 // What the classifier needs of one section.

@@ -40,6 +40,17 @@ void HoleVolumeAccumulator::addStep(double md0, double area0, double bit0, doubl
     m_volume.gaugeAnnulus_m3 += std::max(0.0, nominal - m_casing_m2 * len);
 }
 
+void HoleVolumeAccumulator::addUncoveredStep(double md0, double md1) {
+    const double a = std::max(md0, m_volume.top_m), b = std::min(md1, m_volume.bottom_m);
+    if (!(b > a)) return;
+    m_volume.uncovered_m += b - a;
+    auto& gaps = m_volume.uncovered;
+    if (!gaps.empty() && gaps.back().second >= a)
+        gaps.back().second = b;
+    else
+        gaps.emplace_back(a, b);
+}
+
 HoleVolume HoleVolumeAccumulator::result() const {
     HoleVolume v = m_volume;
     v.casingOd_mm = m_options.casingOd_mm;

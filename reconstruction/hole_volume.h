@@ -1,5 +1,6 @@
 #pragma once
 
+#include <utility>
 #include <vector>
 
 namespace caliper3d::reconstruction {
@@ -23,6 +24,11 @@ struct HoleVolume {
     double gaugeCement_m3 = 0.0;    // gaugeAnnulus * (1 + excess)
     double casingOd_mm = 0.0;       // as asked for
     double excess = 0.0;
+    // Where a step touches a section without data neither volume is
+    // integrated: these [top, bottom] MD intervals (clipped to the interval,
+    // in depth order) are not in any figure above, gauge ones included.
+    std::vector<std::pair<double, double>> uncovered;
+    double uncovered_m = 0.0;  // their combined length
 };
 
 // md ascending; area_mm2 and bit_mm one per section (bit NaN: the section
@@ -40,6 +46,8 @@ public:
     // The step from one section (md, area, bit size) to the next.
     void addStep(double md0_m, double area0_mm2, double bit0_mm, double md1_m, double area1_mm2,
                  double bit1_mm);
+    // A step from or to a section without data: not integrated, recorded as uncovered.
+    void addUncoveredStep(double md0_m, double md1_m);
     HoleVolume result() const;
 
 private:

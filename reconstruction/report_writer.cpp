@@ -72,7 +72,7 @@ void writeSectionReport(std::ostream& out, const WellAnalysis& a, const ReportOp
             number(line, extra[k], extraDecimals[k]);
         }
         line += ',';
-        line += std::to_string(r.repairedArms);
+        if (r.cls != BoreholeClass::NoData) line += std::to_string(r.repairedArms);
         if (const auto& w = options.wellhead) {
             const double map[] = {w->easting_m + r.east_m, w->northing_m + r.north_m,
                                   r.tvd_m - w->elevation_m};
@@ -128,6 +128,18 @@ std::string formatAnalysisSummary(const WellAnalysis& a) {
                   "hole volume %.2f-%.2f m: %.4f m3 (bit size %.4f m3, %+.1f %%)\n", v.top_m,
                   v.bottom_m, v.hole_m3, v.gaugeHole_m3, excessPercent);
     s += buf;
+    if (!v.uncovered.empty()) {
+        // The volumes above leave these out: say where, so no one reads them as the whole hole.
+        s += "hole volume not covered (no caliper data):";
+        for (std::size_t k = 0; k < v.uncovered.size(); ++k) {
+            std::snprintf(buf, sizeof buf, "%s %.2f-%.2f m", k ? "," : "", v.uncovered[k].first,
+                          v.uncovered[k].second);
+            s += buf;
+        }
+        std::snprintf(buf, sizeof buf, " (%.2f m in all; no volume figure includes it)\n",
+                      v.uncovered_m);
+        s += buf;
+    }
     if (v.casingOd_mm > 0.0 || v.excess > 0.0) {
         std::snprintf(
             buf, sizeof buf,
@@ -144,24 +156,6 @@ std::string formatAnalysisSummary(const WellAnalysis& a) {
                       a.padAzimuthOffset.samples);
         s += buf;
     }
-    if (a.repairedSections > 0) {
-        std::snprintf(
-            buf, sizeof buf,
-            "warning: %zu arms interpolated on %zu sections (missing, closed or beyond reach)\n",
-            a.repairedArms, a.repairedSections);
-        s += buf;
-    }
-    if (a.unorientedSections > 0) {
-        std::snprintf(buf, sizeof buf,
-                      "warning: %zu sections without P1AZ or RB: arm 1 assumed north\n",
-                      a.unorientedSections);
-        s += buf;
-    }
-    if (a.holeAzimuthUnknown)
-        s += "warning: hole azimuth unknown (no HAZI, no known tool convention, no --survey): "
-             "north, east and azimuth are left empty where they depend on it\n";
-    if (a.bitSizeFromSections)
-        s += "warning: no bit size given: the median equivalent diameter is used as gauge\n";
     return s;
 }
 
@@ -212,10 +206,14 @@ void writeAnalysisLas(std::ostream& out, const WellAnalysis& a, const ReportOpti
          [](const SectionResult& r) { return r.centreOffset_mm; }},
         {"CENAZ", "DEG", "azimuth from tool axis to hole centre", 2,
          [](const SectionResult& r) { return r.centreOffsetAzimuth_deg; }},
-        {"CLASS", "", "0 in_gauge 1 undergauge 2 washout 3 breakout 4 keyseat", 0,
-         [](const SectionResult& r) { return static_cast<double>(r.cls); }},
+        {"CLASS", "", "0 in_gauge 1 undergauge 2 washout 3 breakout 4 keyseat; null no_data", 0,
+         [](const SectionResult& r) {
+             return r.cls == BoreholeClass::NoData ? io::kNaN : static_cast<double>(r.cls);
+         }},
         {"REPAIRED", "", "arms interpolated on this section", 0,
-         [](const SectionResult& r) { return static_cast<double>(r.repairedArms); }},
+         [](const SectionResult& r) {
+             return r.cls == BoreholeClass::NoData ? io::kNaN : static_cast<double>(r.repairedArms);
+         }},
     };
     // The report's rows may be a subset (--step): gather each curve once.
     std::vector<std::vector<double>> values;
@@ -233,6 +231,7 @@ void writeAnalysisLas(std::ostream& out, const WellAnalysis& a, const ReportOpti
     for (int k = 0; k <= static_cast<int>(BoreholeClass::Keyseat); ++k)
         other +=
             " " + std::to_string(k) + " " + std::string(className(static_cast<BoreholeClass>(k)));
+    other += "; a section without caliper data (no_data) has CLASS and every measured curve null.";
     las.other = other + "\n" + formatAnalysisSummary(a);
     io::writeLasColumns(out, rows.size(), columns, las);
 }

@@ -30,7 +30,9 @@ struct ReportOptions {
 //   major_from_high_side_deg,centre_offset_azimuth_deg,repaired_arms
 // (and easting_m,northing_m,tvdss_m with a wellhead).
 // An undefined value (major azimuth of a vertical axis, unknown bit size) is
-// an empty field. Decimal point, no thousands separator, whatever the locale.
+// an empty field; a no_data section keeps its position, path and bit size and
+// leaves every measurement and repaired_arms empty. Decimal point, no thousands separator, whatever
+// the locale.
 void writeSectionReport(std::ostream& out, const WellAnalysis& analysis, const ReportOptions& options = {});
 
 // The sections a report lists (indices into analysis.sections, ascending).
@@ -51,8 +53,9 @@ void writeAnalysisLas(const std::string& path, const WellAnalysis& analysis, con
 // circular_sd_deg,mean_dmax_mm,mean_dmin_mm,sections.
 void writeZoneReport(std::ostream& out, const WellAnalysis& analysis);
 
-// Human-readable interval summary (breakouts with WSM quality, volumes,
-// orientation check, repaired arms), several "key: value" lines.
+// Human-readable interval summary (breakouts with WSM quality, volumes and
+// the interval they could not cover, orientation check), several "key: value"
+// lines. Warnings are not in it: reconstruction::warnAnalysis counts them.
 std::string formatAnalysisSummary(const WellAnalysis& analysis);
 
 // The same to files; throw std::runtime_error naming the file when it cannot be written.

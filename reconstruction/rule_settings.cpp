@@ -12,12 +12,15 @@ const std::vector<RuleSetting>& ruleSettings() {
     static const std::vector<RuleSetting> kSettings = {
         {"gauge_tolerance_mm", "in_gauge: dmin and dmax within this of bit size",
          &ClassificationRules::gaugeTolerance_mm},
-        {"undergauge_mm", "undergauge: dmax below bit size minus this", &ClassificationRules::undergauge_mm},
+        {"undergauge_mm", "undergauge: dmax below bit size minus this",
+         &ClassificationRules::undergauge_mm},
         {"washout_mm", "washout: dmin above bit size plus this", &ClassificationRules::washout_mm},
-        {"elongation_mm", "breakout/keyseat: dmax - dmin at least this", &ClassificationRules::elongation_mm},
+        {"elongation_mm", "breakout/keyseat: dmax - dmin at least this",
+         &ClassificationRules::elongation_mm},
         {"breakout_min_gauge_mm", "breakout: dmin within this of bit size",
          &ClassificationRules::breakoutMinGauge_mm},
-        {"min_breakout_length_m", "breakout zones at least this long", &ClassificationRules::minBreakoutLength_m},
+        {"min_breakout_length_m", "breakout zones at least this long",
+         &ClassificationRules::minBreakoutLength_m},
         {"max_tool_rotation_deg", "breakout: the tool turns less than this per window",
          &ClassificationRules::maxToolRotation_deg},
         {"rotation_window_m", "length of that window", &ClassificationRules::rotationWindow_m},
@@ -27,6 +30,9 @@ const std::vector<RuleSetting>& ruleSettings() {
          &ClassificationRules::highSideTolerance_deg},
         {"axis_min_elongation_mm", "below this dmax - dmin a section has no major-axis azimuth",
          &ClassificationRules::axisMinElongation_mm},
+        {"min_valid_arm_fraction",
+         "a section with fewer valid arms than this fraction of its arms (at least 2) is no_data",
+         &ClassificationRules::minValidArmFraction},
     };
     return kSettings;
 }

@@ -209,6 +209,16 @@ WellAnalysis analyseWell(const WellGeometry& g, const AnalysisOptions& options) 
                 }
                 r.dls_degPer30m = p.dls_degPer30m;
                 r.bit_mm = std::isfinite(bitOverride) ? bitOverride : 2.0 * g.bitRadius_mm(row);
+                if (!g.measured(row)) {
+                    // Where it is, but no shape: every measurement undefined.
+                    r.area_mm2 = r.equivalentDiameter_mm = r.dmin_mm = r.dmax_mm = io::kNaN;
+                    r.ellipticity = r.majorAzimuth_deg = r.majorFromHighSide_deg = io::kNaN;
+                    r.centreOffset_mm = r.centreOffsetAzimuth_deg = io::kNaN;
+                    r.cls = BoreholeClass::NoData;
+                    classes[row] = r.cls;
+                    a.sections.set(row, r);
+                    continue;
+                }
                 r.area_mm2 = shape.area_mm2;
                 r.equivalentDiameter_mm = shape.equivalentDiameter_mm;
                 r.dmin_mm = shape.dmin_mm;
@@ -244,31 +254,39 @@ WellAnalysis analyseWell(const WellGeometry& g, const AnalysisOptions& options) 
         }
         if (checkOrientation) orientationSums[block] = padAzimuthSums(t, first, last);
     };
+    // The step from section i - 1 to i, unless either has no data.
+    auto addVolumeStep = [&](std::size_t i) {
+        const SectionResult &r0 = a.sections[i - 1], &r1 = a.sections[i];
+        if (g.measured(i - 1) && g.measured(i))
+            volume.addStep(r0.md_m, r0.area_mm2, r0.bit_mm, r1.md_m, r1.area_mm2, r1.bit_mm);
+        else
+            volume.addUncoveredStep(r0.md_m, r1.md_m);
+    };
     auto sumVolume = [&](std::size_t block) {
         if (!anyBit) return;
         const std::size_t first = block * kBlockRows, last = std::min(rows, first + kBlockRows);
-        for (std::size_t i = std::max<std::size_t>(first, 1); i < last; ++i) {
-            const SectionResult &r0 = a.sections[i - 1], &r1 = a.sections[i];
-            volume.addStep(r0.md_m, r0.area_mm2, r0.bit_mm, r1.md_m, r1.area_mm2, r1.bit_mm);
-        }
+        for (std::size_t i = std::max<std::size_t>(first, 1); i < last; ++i) addVolumeStep(i);
     };
     forEachBlockInOrder(blocks, threads, analyseBlock, sumVolume);
 
     if (!anyBit) {
-        std::vector<double> d(rows);
-        for (std::size_t i = 0; i < rows; ++i) d[i] = a.sections[i].equivalentDiameter_mm;
-        std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(rows / 2), d.end());
+        // The median of the measured sections only (WellGeometry guarantees one).
+        std::vector<double> d;
+        d.reserve(g.measuredRows());
+        for (std::size_t i = 0; i < rows; ++i)
+            if (g.measured(i)) d.push_back(a.sections[i].equivalentDiameter_mm);
+        const std::size_t mid = d.size() / 2;
+        std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(mid), d.end());
         for (std::size_t i = 0; i < rows; ++i) {
             SectionResult& r = a.sections[i];
-            r.bit_mm = d[rows / 2];
-            r.cls = classifyShape({r.md_m, r.dmin_mm, r.dmax_mm, r.bit_mm, r.inc_deg,
-                                   r.majorFromHighSide_deg, io::kNaN},
-                                  options.rules);
-            classes[i] = r.cls;
-            if (i > 0) {
-                const SectionResult& q = a.sections[i - 1];
-                volume.addStep(q.md_m, q.area_mm2, q.bit_mm, r.md_m, r.area_mm2, r.bit_mm);
+            r.bit_mm = d[mid];
+            if (g.measured(i)) {
+                r.cls = classifyShape({r.md_m, r.dmin_mm, r.dmax_mm, r.bit_mm, r.inc_deg,
+                                       r.majorFromHighSide_deg, io::kNaN},
+                                      options.rules);
+                classes[i] = r.cls;
             }
+            if (i > 0) addVolumeStep(i);
         }
         a.bitSizeFromSections = true;
     }
@@ -298,6 +316,8 @@ WellAnalysis analyseWell(const WellGeometry& g, const AnalysisOptions& options) 
     if (g.table().holeAzimuth != io::SectionTable::HoleAzimuth::Derived)
         a.padAzimuthOffset = padAzimuthOffset(orientation);
     a.holeAzimuthUnknown = !g.holeAzimuthKnown();
+    a.noData = g.noDataIntervals();
+    for (const NoDataInterval& gap : a.noData) a.noDataSections += gap.sections();
     for (const BlockCounts& c : counts) {
         a.repairedSections += c.repairedSections;
         a.repairedArms += c.repairedArms;

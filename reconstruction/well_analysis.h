@@ -25,6 +25,7 @@ struct SectionResult {
     double centreOffset_mm = 0.0;        // tool axis to hole centre
     double centreOffsetAzimuth_deg = 0.0;  // direction from tool axis to hole centre, [0, 360)
     int repairedArms = 0;                // arms interpolated on this section
+    // NoData: too few valid arms; every measurement above from area_mm2 on is NaN.
     BoreholeClass cls = BoreholeClass::InGauge;
 };
 
@@ -45,7 +46,9 @@ struct WellAnalysis {
     OrientationOffset padAzimuthOffset;  // P1AZ - f(HAZI, DEVI, RB); samples 0 when not all present
     std::size_t repairedSections = 0;    // sections with at least one arm interpolated
     std::size_t repairedArms = 0;
-    std::size_t unorientedSections = 0;  // no P1AZ nor RB: arm 1 assumed north
+    std::size_t unorientedSections = 0;  // no P1AZ nor RB: arm 1 assumed north (measured sections)
+    std::vector<NoDataInterval> noData;  // runs of sections without data (class no_data)
+    std::size_t noDataSections = 0;
     bool bitSizeFromSections = false;    // no bit size anywhere: median equivalent diameter used
     bool holeAzimuthUnknown = false;     // inclined, no HAZI nor survey: see docs/conventions.md
     bool twoPads = false;                // a two-pad tool: round sections, no breakout nor keyseat seen

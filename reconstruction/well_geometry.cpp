@@ -67,6 +67,21 @@ WellGeometry::WellGeometry(std::shared_ptr<const io::SectionTable> table,
                                         std::to_string(i + 1) + ")");
     }
 
+    // Sections with too few valid arms have no shape: a log without any
+    // section that has one is bad input, not a hole of invented gauge.
+    const int needed = minValidArms(t.armCount, m_options.minValidArmFraction);
+    m_measured.resize(rows);
+    for (std::size_t i = 0; i < rows; ++i) {
+        m_measured[i] = countValidArms(t.radii(i), t.armCount, m_options.minArmRadius_mm,
+                                       m_options.maxArmRadius_mm) >= needed;
+        m_measuredRows += m_measured[i];
+    }
+    if (m_measuredRows == 0)
+        throw std::invalid_argument(t.source + ": no usable caliper data: none of its " +
+                                    std::to_string(rows) + " sections has at least " +
+                                    std::to_string(needed) + " of its " +
+                                    std::to_string(t.armCount) + " arms with a valid reading");
+
     const bool fromSurvey = !m_options.survey.empty();
     // The workers write ~140 bytes per row into fresh memory: its pages are
     // faulted in on every worker at once first, not by the first writer.
@@ -291,16 +306,36 @@ void WellGeometry::appendRing(Mesh& mesh, std::size_t row, bool spline) const {
     }
 }
 
+std::vector<NoDataInterval> WellGeometry::noDataIntervals() const {
+    return reconstruction::noDataIntervals(m_measured, m_table->depth_m);
+}
+
+bool WellGeometry::measuredThrough(std::size_t first, std::size_t last) const {
+    for (std::size_t r = first; r <= last; ++r)
+        if (!m_measured[r]) return false;
+    return true;
+}
+
+// Rings of the measured rows among `rows`; a strip joins two consecutive ones
+// only when every row between them is measured, so a no-data interval is a
+// gap in the wall at every level (the path line still crosses it).
 Mesh WellGeometry::buildLevel(const std::vector<std::size_t>& rows, bool spline) const {
     Mesh mesh;
     const int points = spline ? m_sampler.samples() : knotCount();
     mesh.positions.reserve(rows.size() * static_cast<std::size_t>(points));
+    std::int32_t rings = 0;
+    bool joinable = false;  // the last ring appended was rows[i - 1]
     for (std::size_t i = 0; i < rows.size(); ++i) {
-        appendRing(mesh, rows[i], spline);
-        if (i > 0) {
-            appendClosedStrip(mesh.stripIndices, static_cast<std::int32_t>((i - 1) * points),
-                              static_cast<std::int32_t>(i * points), points);
+        if (!m_measured[rows[i]]) {
+            joinable = false;
+            continue;
         }
+        appendRing(mesh, rows[i], spline);
+        ++rings;
+        if (joinable && measuredThrough(rows[i - 1], rows[i]))
+            appendClosedStrip(mesh.stripIndices, (rings - 2) * points, (rings - 1) * points,
+                              points);
+        joinable = true;
     }
     return mesh;
 }
@@ -324,7 +359,10 @@ SegmentMesh WellGeometry::buildSegment(std::size_t segment) const {
         std::vector<std::size_t> rows{first};
         double next = out.top_m + spacing;
         for (std::size_t r = first + 1; r < last; ++r) {
-            if (m_table->depth_m[r] >= next) {
+            // The measured rows next to a gap are kept too, so that the wall
+            // reaches the gap's edges as it does at full detail.
+            const bool gapEdge = m_measured[r] && (!m_measured[r - 1] || !m_measured[r + 1]);
+            if (m_table->depth_m[r] >= next || gapEdge) {
                 rows.push_back(r);
                 next = m_table->depth_m[r] + spacing;
             }

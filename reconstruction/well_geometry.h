@@ -12,6 +12,7 @@
 #include "reconstruction/mesh.h"
 #include "reconstruction/minimum_curvature.h"
 #include "reconstruction/periodic_spline.h"
+#include "reconstruction/section_coverage.h"
 #include "reconstruction/section_frame.h"
 
 namespace caliper3d::reconstruction {
@@ -33,6 +34,9 @@ struct GeometryOptions {
     // stuck or over-reaching arm) are treated as missing and interpolated.
     double minArmRadius_mm = 0.0;    // readings <= this are missing
     double maxArmRadius_mm = 1.0e9;  // the tool's reach; no limit by default
+    // A section with fewer valid arms than minValidArms(armCount, this) has no
+    // data: it is neither drawn nor analysed (docs/analysis.md, "No data").
+    double minValidArmFraction = kDefaultMinValidArmFraction;
     // Workers that compute the path and the section frames (the result does
     // not depend on it).
     int threads = 1;
@@ -77,8 +81,16 @@ public:
         return m_segments[segment];
     }
 
+    // Whether a row has enough valid arms to define its section's shape; a
+    // row without is drawn as a gap and analysed as no_data.
+    bool measured(std::size_t row) const { return m_measured[row] != 0; }
+    std::size_t measuredRows() const { return m_measuredRows; }
+    // The runs of rows without data, in depth order.
+    std::vector<NoDataInterval> noDataIntervals() const;
+
     // Radii of a row with missing or non-positive arms filled from their
-    // neighbours in the section (NaN-free; millimetres).
+    // neighbours in the section (NaN-free; millimetres). A row without data
+    // (measured() false) gets meaningless radii: callers skip it.
     std::vector<double> repairedRadii(std::size_t row) const;
     // The same into `out` (armCount values); returns how many arms were repaired.
     int repairRadii(std::size_t row, double* out) const;
@@ -115,12 +127,15 @@ private:
     void computeFrames(std::size_t first, std::size_t last);
     void appendRing(Mesh& mesh, std::size_t row, bool spline) const;
     Mesh buildLevel(const std::vector<std::size_t>& rows, bool spline) const;
+    bool measuredThrough(std::size_t first, std::size_t last) const;
 
     std::shared_ptr<const io::SectionTable> m_table;
     GeometryOptions m_options;
     std::vector<PathPoint> m_path;
     FillArray<SectionFrame> m_frames;  // constructed by the workers that compute them
     std::vector<Orientation> m_orientation;
+    std::vector<unsigned char> m_measured;
+    std::size_t m_measuredRows = 0;
     std::vector<std::pair<std::size_t, std::size_t>> m_segments;
     PeriodicSplineSampler m_sampler;
 };

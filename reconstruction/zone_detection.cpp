@@ -49,7 +49,7 @@ std::vector<Zone> detectZones(const std::vector<BoreholeClass>& classes,
     std::size_t i = 0;
     const std::size_t n = classes.size();
     while (i < n) {
-        if (classes[i] == BoreholeClass::InGauge) {
+        if (classes[i] == BoreholeClass::InGauge || classes[i] == BoreholeClass::NoData) {
             ++i;
             continue;
         }

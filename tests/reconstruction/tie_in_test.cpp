@@ -73,7 +73,9 @@ TEST(TieInTest, WithAndWithoutSurveyGiveTheSamePathForAVerticalTopHole) {
             EXPECT_NEAR(p.north, q.north, 1e-6) << "MD " << p.md;
             EXPECT_NEAR(p.east, q.east, 1e-6) << "MD " << p.md;
         }
-        if (p.md <= 30.0) EXPECT_NEAR(p.tvd, p.md, 1e-9);
+        if (p.md <= 30.0) {
+            EXPECT_NEAR(p.tvd, p.md, 1e-9);
+        }
     }
     // Below the kickoff, the build arc of radius 572.96 m: at MD 130 (100 m of
     // arc) TVD 30 + 99.493 m and 8.704 m of departure towards azimuth 30.
