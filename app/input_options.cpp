@@ -116,6 +116,13 @@ InputOptions inputOptionsFrom(const QCommandLineParser& parser) {
     return o;
 }
 
+void rejectInapplicable(const QCommandLineParser& parser, const std::string& verb,
+                        std::initializer_list<const char*> names, const std::string& why) {
+    for (const char* name : names)
+        if (parser.isSet(name))
+            throw UsageError("caliper3d " + verb + ": --" + name + " does not apply: " + why);
+}
+
 double parseLength_mm(const std::string& value, const std::string& option) {
     std::string text = value;
     double scale = 25.4;
@@ -231,8 +238,13 @@ reconstruction::Wellhead sceneOrigin(const std::vector<WellSource>& wells) {
 }
 
 void printWarnings(const io::Diagnostics& diagnostics) {
-    for (const io::Warning& w : diagnostics.warnings)
-        std::fprintf(stderr, "%s:%zu: warning: %s\n", w.file.c_str(), w.line, w.message.c_str());
+    for (const io::Warning& w : diagnostics.warnings) {
+        if (w.line > 0)  // line 0: a warning about the whole file
+            std::fprintf(stderr, "%s:%zu: warning: %s\n", w.file.c_str(), w.line,
+                         w.message.c_str());
+        else
+            std::fprintf(stderr, "%s: warning: %s\n", w.file.c_str(), w.message.c_str());
+    }
     if (diagnostics.warningCount > diagnostics.warnings.size())
         std::fprintf(stderr, "... and %zu more warnings\n",
                      diagnostics.warningCount - diagnostics.warnings.size());
