@@ -1,23 +1,30 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include <QCoreApplication>
+#include <optional>
+
+#include <QFileInfo>
 #include <QString>
+#include <QStringList>
 
 #include "app/commands.h"
+#include "app/console_messages.h"
 
 namespace caliper3d::app {
 
 namespace {
+const char kVerbs[] = "view, info, export, render, report, synth";
 const char kUsage[] =
     "usage: caliper3d [VERB] [OPTIONS] FILE...\n"
     "  (no verb)                         GUI on the bundled example well; with no display,\n"
     "                                    renders it to out/example.png and out/example.iv\n"
+    "  FILE...                           GUI on these wells (the same as 'view FILE...')\n"
     "  view FILE...                      GUI on these wells\n"
     "  info FILE...                      format, curves and their roles, units, depth range, "
     "warnings\n"
     "  export FILE... -o OUT.iv          scene out as Open Inventor (--binary, --gzip)\n"
-    "  render FILE... -o OUT.png         picture (--width W --height H --view iso|north|east|top)\n"
+    "  render FILE... -o OUT.png         picture (--width W --height H\n"
+    "                                    --view iso|north|east|top|hole --at MD)\n"
     "  report FILE -o OUT.csv            per-section analysis (--step M, --zones Z.csv,\n"
     "                                    --las OUT.las, --casing-od L, --excess F, --rule N=V)\n"
     "  synth -o OUT [--length M --step M --profile NAME]   synthetic log with known features\n"
@@ -25,30 +32,56 @@ const char kUsage[] =
     "        --radii MNEM,... --diameters MNEM,... --nulls declared|common --row-step METRES\n"
     "        --survey FILE --wellhead E,N,ELEV (once per FILE) --steep-inclination DEG\n"
     "        --tool-reach LENGTH --points M --segment-length METRES --exaggerate F\n"
-    "Run 'caliper3d VERB --help' for a verb's options.\n";
+    "Run 'caliper3d help VERB' (or 'caliper3d VERB --help') for a verb's options.\n";
 }  // namespace
 
-int runCommandLine(int argc, char** argv) {
-    QStringList args;
-    for (int i = 1; i < argc; ++i) args << QString::fromLocal8Bit(argv[i]);
-    if (args.isEmpty()) return runDefault(argc, argv);
-    const QString verb = args.takeFirst();
+namespace {
+
+// Runs `verb` on `args`; returns nullopt when `verb` is not one.
+std::optional<int> runVerb(const QString& verb, const QStringList& args, int argc, char** argv) {
     if (verb == "export") return runExport(args);
     if (verb == "info") return runInfo(args);
     if (verb == "render") return runRender(args);
     if (verb == "report") return runReport(args);
     if (verb == "synth") return runSynth(args);
     if (verb == "view") return runView(argc, argv, args);
+    return std::nullopt;
+}
+
+// A first argument that is no verb but names a file (or looks like a path:
+// a folder or an extension) opens the window on it, as 'view' would.
+bool looksLikeAFile(const QString& argument) {
+    if (argument.startsWith('-')) return false;
+    const QFileInfo info(argument);
+    return info.exists() || argument.contains('/') || !info.suffix().isEmpty();
+}
+
+}  // namespace
+
+int runCommandLine(int argc, char** argv) {
+    installMessageFilter();
+    QStringList args;
+    for (int i = 1; i < argc; ++i) args << QString::fromLocal8Bit(argv[i]);
+    if (args.isEmpty()) return runDefault(argc, argv);
+    const QString verb = args.takeFirst();
+    if (auto status = runVerb(verb, args, argc, argv)) return *status;
     if (verb == "-h" || verb == "--help" || verb == "help") {
-        std::fputs(kUsage, stdout);
-        return kExitOk;
+        if (args.isEmpty()) {
+            std::fputs(kUsage, stdout);
+            return kExitOk;
+        }
+        if (auto status = runVerb(args.front(), {"--help"}, argc, argv)) return *status;
+        std::fprintf(stderr, "caliper3d help: unknown verb '%s'; the verbs are %s\n",
+                     args.front().toLocal8Bit().constData(), kVerbs);
+        return kExitUsage;
     }
     if (verb == "--version") {
         std::puts("caliper3d 0.1.0");
         return kExitOk;
     }
-    std::fprintf(stderr, "caliper3d: unknown verb '%s'\n%s", verb.toLocal8Bit().constData(),
-                 kUsage);
+    if (looksLikeAFile(verb)) return runView(argc, argv, QStringList(verb) + args);
+    std::fprintf(stderr, "caliper3d: unknown verb '%s' (the verbs are %s), and no such file\n%s",
+                 verb.toLocal8Bit().constData(), kVerbs, kUsage);
     return kExitUsage;
 }
 

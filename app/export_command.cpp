@@ -15,17 +15,24 @@ int runExport(const QStringList& args) {
     return guardedVerb("export", [&]() -> int {
         VerbParser verb("export", "FILE... -o OUT.iv", "Export wells as an Open Inventor scene.");
         QCommandLineParser& p = verb.parser();
-        p.addOption({{"o", "output"}, "Output file (.iv).", "OUT"});
+        p.addOption({{"o", "output"},
+                     "Output file: .iv, or .iv.gz for a gzip-compressed scene (as --gzip).",
+                     "OUT"});
         p.addOption({"binary", "Write binary Open Inventor (smaller, faster to read)."});
-        p.addOption({"gzip", "Compress the output with gzip."});
+        p.addOption({"gzip", "Compress the output with gzip (implied by a name ending .iv.gz)."});
         addInputOptions(p);
         addWellSourceOptions(p);
         if (!verb.parse(args, 1)) return kExitOk;
         if (!verb.isSet("output")) throw UsageError("caliper3d export: -o OUT.iv is required");
         const std::string out = verb.value("output");
-        if (out.size() < 3 || out.compare(out.size() - 3, 3, ".iv") != 0)
-            throw UsageError("caliper3d export: only .iv output is supported so far, got '" + out +
-                             "'");
+        const auto endsWith = [&out](const std::string& tail) {
+            return out.size() > tail.size() &&
+                   out.compare(out.size() - tail.size(), tail.size(), tail) == 0;
+        };
+        const bool gzipName = endsWith(".iv.gz");
+        if (!endsWith(".iv") && !gzipName)
+            throw UsageError("caliper3d export: the output must end in .iv or .iv.gz, got '" +
+                             out + "'");
         const InputOptions options = inputOptionsFrom(p);
 
         scenegraph::initCoin();
@@ -34,7 +41,7 @@ int runExport(const QStringList& args) {
         if (scene.wells == 0) return kExitBadInput;
         scenegraph::IvExportOptions ivOptions;
         ivOptions.binary = verb.isSet("binary");
-        ivOptions.gzip = verb.isSet("gzip");
+        ivOptions.gzip = verb.isSet("gzip") || gzipName;
         const auto built = std::chrono::steady_clock::now();
         scenegraph::writeIv(scene.root.get(), out, ivOptions);
         const auto written = std::chrono::steady_clock::now();

@@ -17,6 +17,10 @@ int runInfo(const QStringList& args) {
             "Describe caliper logs: format, depth range, curves and their roles, nulls, warnings.");
         addInputOptions(verb.parser());
         if (!verb.parse(args, 1)) return kExitOk;
+        rejectInapplicable(verb.parser(), "info",
+                           {"points", "segment-length", "exaggerate", "steep-inclination",
+                            "tool-reach"},
+                           "info describes the file as read; these shape the 3D reconstruction");
         const InputOptions options = inputOptionsFrom(verb.parser());
         int failures = 0;
         for (const std::string& file : verb.positional()) {

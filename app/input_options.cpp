@@ -116,6 +116,13 @@ InputOptions inputOptionsFrom(const QCommandLineParser& parser) {
     return o;
 }
 
+void rejectInapplicable(const QCommandLineParser& parser, const std::string& verb,
+                        std::initializer_list<const char*> names, const std::string& why) {
+    for (const char* name : names)
+        if (parser.isSet(name))
+            throw UsageError("caliper3d " + verb + ": --" + name + " does not apply: " + why);
+}
+
 double parseLength_mm(const std::string& value, const std::string& option) {
     std::string text = value;
     double scale = 25.4;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <initializer_list>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -42,6 +43,10 @@ struct UsageError : std::runtime_error {
 void addInputOptions(QCommandLineParser& parser);
 // Throws UsageError on a malformed value.
 InputOptions inputOptionsFrom(const QCommandLineParser& parser);
+// Throws UsageError when any of `names` was given to `verb`, which cannot use
+// it (`why` says so: an option that is silently ignored misleads).
+void rejectInapplicable(const QCommandLineParser& parser, const std::string& verb,
+                        std::initializer_list<const char*> names, const std::string& why);
 // A length such as "8.5in", "215.9mm" or "21.59cm" (a bare number is inches),
 // in millimetres; throws UsageError naming `option` unless it is positive.
 double parseLength_mm(const std::string& text, const std::string& option);

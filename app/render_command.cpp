@@ -43,6 +43,9 @@ int runRender(const QStringList& args) {
         double at = 0.0;
         if (verb.isSet("at") && !io::parseNumber(verb.value("at"), at))
             throw UsageError("caliper3d render: --at takes a measured depth in metres");
+        if (verb.isSet("at") && !downHole)
+            throw UsageError("caliper3d render: --at places the eye of --view hole; the " +
+                             verb.value("view") + " view shows the whole scene and ignores it");
         const InputOptions options = inputOptionsFrom(p);
 
         scenegraph::initCoin();
@@ -51,7 +54,16 @@ int runRender(const QStringList& args) {
         const std::string out = verb.value("output");
         if (downHole) {
             const auto& geometry = *scene.geometries.front();
-            if (!verb.isSet("at")) at = geometry.table().depth_m.front();
+            const double top = geometry.table().depth_m.front();
+            const double bottom = geometry.table().depth_m.back();
+            if (!verb.isSet("at")) at = top;
+            if (at < top || at > bottom) {
+                char range[96];
+                std::snprintf(range, sizeof range, "%.2f to %.2f m", top, bottom);
+                throw UsageError("caliper3d render: --at " + verb.value("at") +
+                                 " is outside the logged depths of " + geometry.table().source +
+                                 " (" + range + ")");
+            }
             renderToPng(scene.root.get(), out, width, height, downHolePose(geometry, at));
         } else {
             renderToPng(scene.root.get(), out, width, height, *view);

@@ -42,6 +42,36 @@ std::pair<double, double> interval(const std::string& text) {
     return {top, bottom};
 }
 
+// A casing at least as wide as the hole leaves no annulus: the volumes count
+// zero there, which is worth a warning rather than a quiet figure.
+void warnWhereCasingDoesNotFit(const reconstruction::WellAnalysis& result,
+                               const reconstruction::VolumeOptions& volume, const std::string& file,
+                               io::Diagnostics& diagnostics) {
+    if (!(volume.casingOd_mm > 0.0)) return;
+    std::size_t narrower = 0, inInterval = 0, bitNarrower = 0;
+    for (const reconstruction::SectionResult& s : result.sections) {
+        if (s.md_m < volume.top_m || s.md_m > volume.bottom_m) continue;
+        ++inInterval;
+        narrower += s.equivalentDiameter_mm <= volume.casingOd_mm;
+        bitNarrower += s.bit_mm <= volume.casingOd_mm;
+    }
+    char text[256];
+    if (bitNarrower > 0) {
+        std::snprintf(text, sizeof text,
+                      "--casing-od %.1f mm is not smaller than the bit size on %zu of %zu "
+                      "sections: the gauge annulus there is counted as zero",
+                      volume.casingOd_mm, bitNarrower, inInterval);
+        diagnostics.warn(file, 0, text);
+    }
+    if (narrower > 0) {
+        std::snprintf(text, sizeof text,
+                      "--casing-od %.1f mm is not smaller than the measured hole on %zu of %zu "
+                      "sections: the annulus there is counted as zero",
+                      volume.casingOd_mm, narrower, inInterval);
+        diagnostics.warn(file, 0, text);
+    }
+}
+
 }  // namespace
 
 int runReport(const QStringList& args) {
@@ -90,6 +120,8 @@ int runReport(const QStringList& args) {
             throw UsageError("caliper3d report: give exactly one FILE (found " +
                              std::to_string(files.size()) + "); run it once per well");
         if (!verb.isSet("output")) throw UsageError("caliper3d report: -o OUT.csv is required");
+        rejectInapplicable(p, "report", {"exaggerate", "segment-length"},
+                           "they shape the 3D picture, and the report measures the log");
         const InputOptions options = inputOptionsFrom(p);
         const WellSource well = wellSourcesFrom(p, files).front();
 
@@ -119,6 +151,7 @@ int runReport(const QStringList& args) {
         geometryOpts.minValidArmFraction = analysis.rules.minValidArmFraction;
         const reconstruction::WellGeometry geometry(table, geometryOpts);
         const reconstruction::WellAnalysis result = reconstruction::analyseWell(geometry, analysis);
+        warnWhereCasingDoesNotFit(result, analysis.volume, well.path, diagnostics);
 
         // Each output goes to its file, or to standard output for '-' (one of them at most).
         const std::string out = verb.value("output");

@@ -46,7 +46,8 @@ int runSynth(const QStringList& args) {
         try {
             spec = reconstruction::syntheticProfile(verb.value("profile"), length, step);
         } catch (const std::invalid_argument& e) {
-            throw UsageError(std::string("caliper3d synth: ") + e.what());
+            throw UsageError(std::string("caliper3d synth: ") + e.what() + "; the profiles are " +
+                             names);
         }
         double arms = 0;
         if (!io::parseNumber(verb.value("arms"), arms) || arms < 2 || arms > 256 ||

@@ -20,6 +20,8 @@ public:
     // --help was asked for (and printed).
     bool parse(const QStringList& args, int minPositional);
     std::vector<std::string> positional() const;
+    // The verb's --help text: usage line, description, every option.
+    std::string helpText() const;
     std::string value(const char* name) const { return m_parser.value(name).toStdString(); }
     bool isSet(const char* name) const { return m_parser.isSet(name); }
 

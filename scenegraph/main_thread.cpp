@@ -8,6 +8,8 @@
 #include <Inventor/SoInteraction.h>
 #include <Inventor/nodekits/SoNodeKit.h>
 
+#include "scenegraph/coin_messages.h"
+
 namespace caliper3d::scenegraph {
 
 namespace {
@@ -23,6 +25,7 @@ void initCoin() {
     SoDB::init();
     SoNodeKit::init();
     SoInteraction::init();
+    routeCoinMessages();
 }
 
 bool onMainThread() {
