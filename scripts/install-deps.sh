@@ -8,7 +8,7 @@ packages=(
   libcoin-dev libsoqt520-dev qtbase5-dev libboost-dev libglm-dev
   libgtest-dev libbenchmark-dev libfast-float-dev
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
-  xvfb xauth clang libclang-rt-14-dev
+  xvfb xauth clang libclang-rt-14-dev clang-format clang-tidy
 )
 
 missing=()
