@@ -64,8 +64,9 @@ io::LengthUnit unit(const QCommandLineParser& parser, const char* name) {
 InputOptions inputOptionsFrom(const QCommandLineParser& parser) {
     InputOptions o;
     const double arms = number(parser, "arms");
-    if (arms < 2 || arms > 256 || arms != std::floor(arms))
-        throw UsageError("--arms: expected a whole number from 2 to 256");
+    if (arms < io::kMinArms || arms > io::kMaxArms || arms != std::floor(arms))
+        throw UsageError("--arms: expected a whole number from " + std::to_string(io::kMinArms) +
+                         " to " + std::to_string(io::kMaxArms));
     o.read.armCount = static_cast<int>(arms);
     if (parser.isSet("depth-unit")) o.read.depthUnit = unit(parser, "depth-unit");
     if (parser.isSet("radius-unit")) o.read.radiusUnit = unit(parser, "radius-unit");
@@ -80,7 +81,7 @@ InputOptions inputOptionsFrom(const QCommandLineParser& parser) {
     const bool wholeArray =
         o.read.roles.radii.size() == 1 && o.read.roles.radii.front().size() > 2 &&
         o.read.roles.radii.front().compare(o.read.roles.radii.front().size() - 2, 2, "[]") == 0;
-    if ((o.read.roles.radii.size() == 1 && !wholeArray) || o.read.roles.radii.size() > 256)
+    if ((o.read.roles.radii.size() == 1 && !wholeArray) || o.read.roles.radii.size() > static_cast<std::size_t>(io::kMaxArms))
         throw UsageError(
             "--radii: expected 2 to 256 curve names separated by commas, or one array NAME[]");
     if (o.read.roles.diameters.size() > 4)

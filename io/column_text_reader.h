@@ -18,10 +18,10 @@ namespace caliper3d::io {
 // (docs/formats.md). Refuses LAS and other formats (ParseError).
 //
 // Multi-finger tools often write only the finger radii: a file whose lines all
-// hold kMinRadiiOnlyColumns or more numbers, but not armCount + 4, is read as
-// radii only, depth = row index x rowStep_m (a counted warning says so).
+// hold kMinRadiiOnlyColumns or more numbers (io/read_options.h), but not
+// armCount + 4, is read as radii only, depth = row index x rowStep_m (a counted
+// warning says so).
 struct ColumnTextOptions {
-    static constexpr int kMinRadiiOnlyColumns = 8;
     int armCount = 6;
     std::optional<LengthUnit> depthUnit;   // overrides the names' units; default metres
     std::optional<LengthUnit> radiusUnit;  // overrides the names' units; default inches

@@ -7,19 +7,13 @@
 
 #include "io/number_parsing.h"
 #include "io/parse_error.h"
+#include "io/text.h"
 
 namespace caliper3d::io {
 
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-std::string upper(std::string_view s) {
-    std::string out(s);
-    std::transform(out.begin(), out.end(), out.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-    return out;
-}
 
 }  // namespace
 

@@ -25,6 +25,14 @@ struct Diagnostics {
         ++warningCount;
         if (warnings.size() < kKeptMessages) warnings.push_back({file, line, std::move(message)});
     }
+
+    // Adds every warning of `other` (the kept messages while there is room, and
+    // the count of all of them).
+    void merge(const Diagnostics& other) {
+        for (const Warning& w : other.warnings)
+            if (warnings.size() < kKeptMessages) warnings.push_back(w);
+        warningCount += other.warningCount;
+    }
 };
 
 }  // namespace caliper3d::io

@@ -3,15 +3,11 @@
 #include <algorithm>
 #include <cctype>
 
+#include "io/text.h"
+
 namespace caliper3d::io {
 
 namespace {
-
-std::string upper(std::string s) {
-    std::transform(s.begin(), s.end(), s.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-    return s;
-}
 
 const CurveInfo* curveWithRole(const LogInfo& info, const char* role) {
     for (const CurveInfo& c : info.curves)

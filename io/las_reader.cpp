@@ -9,19 +9,13 @@
 
 #include "io/number_parsing.h"
 #include "io/parse_error.h"
+#include "io/text.h"
 
 namespace caliper3d::io {
 
 namespace {
 
 constexpr double kNull = std::numeric_limits<double>::quiet_NaN();
-
-std::string upper(std::string_view s) {
-    std::string out(s);
-    std::transform(out.begin(), out.end(), out.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-    return out;
-}
 
 bool allOf(std::string_view s, char c) {
     return !s.empty() && std::all_of(s.begin(), s.end(), [c](char x) { return x == c; });

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "io/hole_azimuth_plan.h"
+#include "io/median.h"
 #include "io/parse_error.h"
 #include "io/survey_reader.h"
 #include "io/text_encoding.h"
@@ -100,10 +101,7 @@ SectionTable readCaliperLog(const std::string& path, const ReadOptions& options,
                          "diameter CALI), "
                          "found none among " + std::to_string(loaded.info.curves.size()) +
                              " curves; name them with --radii or --diameters");
-    if (diagnostics) {
-        for (const Warning& w : loaded.info.diagnostics.warnings) diagnostics->warn(w.file, w.line, w.message);
-        diagnostics->warningCount += loaded.info.diagnostics.warningCount - loaded.info.diagnostics.warnings.size();
-    }
+    if (diagnostics) diagnostics->merge(loaded.info.diagnostics);
     return std::move(loaded.table);
 }
 
@@ -137,8 +135,7 @@ LogInfo describeSurvey(const std::string& path, const ReadOptions& options) {
     info.bottom_m = s.md_m.back();
     std::vector<double> steps;
     for (std::size_t i = 1; i < s.md_m.size(); ++i) steps.push_back(s.md_m[i] - s.md_m[i - 1]);
-    std::nth_element(steps.begin(), steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2), steps.end());
-    info.step_m = steps[steps.size() / 2];
+    info.step_m = upperMedian(std::move(steps));
     info.armSource = "none: a deviation survey, not a caliper log (give it to a log with --survey)";
     auto nullsIn = [](const std::vector<double>& v) {
         return static_cast<std::size_t>(std::count_if(v.begin(), v.end(), [](double x) { return std::isnan(x); }));

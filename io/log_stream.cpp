@@ -21,6 +21,7 @@
 #include "io/curve_plan.h"
 #include "io/las_header.h"
 #include "io/las_reader.h"
+#include "io/median.h"
 #include "io/number_parsing.h"
 #include "io/parse_error.h"
 #include "io/survey_reader.h"
@@ -747,10 +748,7 @@ private:
     // far likelier millimetres, read so with a warning.
     LengthUnit unitlessRadiusUnit(std::vector<double> radii, std::size_t line) {
         if (radii.empty()) return LengthUnit::Inch;
-        std::nth_element(radii.begin(),
-                         radii.begin() + static_cast<std::ptrdiff_t>(radii.size() / 2),
-                         radii.end());
-        const double median = radii[radii.size() / 2];
+        const double median = upperMedian(std::move(radii));
         if (!(median > kMaxPlausibleRadius_in)) return LengthUnit::Inch;
         m_info.diagnostics.warn(m_name, line,
                                 "radii near " + std::to_string(median) +
@@ -760,8 +758,10 @@ private:
     }
 
     void prepareColumnText(std::string_view run, std::size_t offset) {
-        if (m_options.armCount < 2 || m_options.armCount > 256)
-            throw ParseError(m_name, 0, 0, "arm count must be between 2 and 256");
+        if (m_options.armCount < kMinArms || m_options.armCount > kMaxArms)
+            throw ParseError(m_name, 0, 0,
+                             "arm count must be between " + std::to_string(kMinArms) + " and " +
+                                 std::to_string(kMaxArms));
         int arms = m_options.armCount;
         // The first content line decides: named columns, radii only, or the reference layout.
         // A line of names before it (or a '#' comment line of names right before it, as our
@@ -822,7 +822,7 @@ private:
             prepareNamedColumns(names, namesLine, tokens);
             return;
         }
-        m_radiiOnly = found != arms + 4 && m_options.allowRadiiOnly && found >= 8 && found <= 256;
+        m_radiiOnly = found != arms + 4 && m_options.allowRadiiOnly && found >= kMinRadiiOnlyColumns && found <= kMaxArms;
         if (m_radiiOnly) {
             arms = found;
             m_info.diagnostics.warn(m_name, line,
@@ -983,10 +983,7 @@ private:
         for (std::size_t c = 0; c < m_nulls.size(); ++c) m_nulls[c] += part.nulls[c];
         for (std::size_t k = 0; k < m_depthDiffer.size(); ++k)
             m_depthDiffer[k] += part.depthDiffer[k];
-        for (const Warning& w : part.diagnostics.warnings)
-            m_info.diagnostics.warn(w.file, w.line, w.message);
-        m_info.diagnostics.warningCount +=
-            part.diagnostics.warningCount - part.diagnostics.warnings.size();
+        m_info.diagnostics.merge(part.diagnostics);
 
         SectionTable& t = part.table;
         const std::size_t n = t.rowCount();
@@ -1217,10 +1214,7 @@ private:
             m_info.bitSizeMax_mm = m_bitSizeMax;
         }
         if (!m_steps.empty()) {
-            std::nth_element(m_steps.begin(),
-                             m_steps.begin() + static_cast<std::ptrdiff_t>(m_steps.size() / 2),
-                             m_steps.end());
-            m_info.step_m = m_steps[m_steps.size() / 2];
+            m_info.step_m = upperMedian(m_steps);
         }
         if (m_info.rows == 0 && !m_info.cancelled) {
             if (m_format.las)

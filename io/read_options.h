@@ -21,6 +21,10 @@ enum class DepthOrder {
     Reject          // ParseError at the first such row
 };
 
+// A column-text line of at least this many numbers (and no more than kMaxArms),
+// but not armCount + 4, is taken for the radii of a multi-finger tool alone.
+inline constexpr int kMinRadiiOnlyColumns = 8;
+
 // How to read a caliper log of any supported format. Every lenient behaviour
 // is a named option here with its default.
 struct ReadOptions {

@@ -9,6 +9,10 @@ namespace caliper3d::io {
 
 inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+// Caliper tools read: from two pads (one diameter) to 256 fingers.
+inline constexpr int kMinArms = 2;
+inline constexpr int kMaxArms = 256;
+
 // A curve the log carries beside the caliper (gamma ray, resistivity, ...),
 // kept in its own unit for colouring and export.
 struct ExtraCurve {

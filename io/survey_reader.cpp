@@ -14,6 +14,7 @@
 #include "io/number_parsing.h"
 #include "io/parse_error.h"
 #include "io/section_table.h"
+#include "io/text.h"
 
 namespace caliper3d::io {
 
@@ -23,12 +24,6 @@ struct Field {
     std::string_view text;
     std::size_t column = 1;  // 1-based character column of the field's start
 };
-
-std::string_view trim(std::string_view s) {
-    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
-    return s;
-}
 
 // Delimiter of the table, chosen from the header line: ',' ';' '\t' or ' ' (white space).
 char detectDelimiter(std::string_view header) {

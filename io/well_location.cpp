@@ -7,17 +7,12 @@
 #include <sstream>
 
 #include "io/number_parsing.h"
+#include "io/text.h"
 #include "io/units.h"
 
 namespace caliper3d::io {
 
 namespace {
-
-std::string upper(std::string s) {
-    std::transform(s.begin(), s.end(), s.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-    return s;
-}
 
 // "K.B.", "KB", "Kelly Bushing" -> "KB": letters only, and the long names shortened.
 std::string referenceCode(const std::string& name) {

@@ -128,8 +128,10 @@ double rayToEllipse(double phi, double a, double b, double theta, glm::dvec2 c) 
 io::SectionTable makeSyntheticWell(const SyntheticWellSpec& spec) {
     if (!(spec.step_m > 0.0) || !(spec.length_m > spec.step_m))
         throw std::invalid_argument("synthetic well: need length > step > 0");
-    if (spec.armCount < 2 || spec.armCount > 256)
-        throw std::invalid_argument("synthetic well: arm count must be 2..256");
+    if (spec.armCount < io::kMinArms || spec.armCount > io::kMaxArms)
+        throw std::invalid_argument("synthetic well: arm count must be " +
+                                    std::to_string(io::kMinArms) + ".." +
+                                    std::to_string(io::kMaxArms));
     io::SectionTable t;
     t.source = "synthetic";
     t.armCount = spec.armCount;

@@ -15,12 +15,7 @@ io::SectionTable loadWellTable(const std::string& path, const io::ReadOptions& o
                              "diameters C1, C2, or one diameter CALI), found none among " +
                                  std::to_string(loaded.info.curves.size()) +
                                  " curves; name them with --radii or --diameters");
-    if (diagnostics) {
-        for (const io::Warning& w : loaded.info.diagnostics.warnings)
-            diagnostics->warn(w.file, w.line, w.message);
-        diagnostics->warningCount +=
-            loaded.info.diagnostics.warningCount - loaded.info.diagnostics.warnings.size();
-    }
+    if (diagnostics) diagnostics->merge(loaded.info.diagnostics);
     resolveHoleAzimuth(loaded.table, io::holeAzimuthPlan(loaded.info, surveyGiven), diagnostics);
     return std::move(loaded.table);
 }
