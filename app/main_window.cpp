@@ -14,7 +14,7 @@
 #include <Inventor/nodes/SoCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
 
-#include "reconstruction/well_load_pipeline.h"
+#include "reconstruction/parallel/well_load_pipeline.h"
 #include "scenegraph/camera_setup.h"
 #include "scenegraph/iv_export.h"
 #include "scenegraph/segment_feeder.h"

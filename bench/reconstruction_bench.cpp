@@ -6,8 +6,8 @@
 
 #include <benchmark/benchmark.h>
 
-#include "reconstruction/synthetic_well.h"
-#include "reconstruction/well_analysis.h"
+#include "reconstruction/synthetic/synthetic_well.h"
+#include "reconstruction/analysis/well_analysis.h"
 
 using namespace caliper3d;
 using namespace caliper3d::reconstruction;

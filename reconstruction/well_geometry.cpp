@@ -8,11 +8,11 @@
 #include <glm/gtc/constants.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "reconstruction/arm_geometry.h"
-#include "reconstruction/colour_map.h"
-#include "reconstruction/ordered_blocks.h"
-#include "reconstruction/prefault.h"
-#include "reconstruction/survey_interpolation.h"
+#include "reconstruction/section/arm_geometry.h"
+#include "reconstruction/mesh/colour_map.h"
+#include "reconstruction/parallel/ordered_blocks.h"
+#include "reconstruction/parallel/prefault.h"
+#include "reconstruction/path/survey_interpolation.h"
 
 namespace caliper3d::reconstruction {
 

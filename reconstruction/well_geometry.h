@@ -8,12 +8,12 @@
 #include <glm/vec3.hpp>
 
 #include "io/section_table.h"
-#include "reconstruction/fill_array.h"
-#include "reconstruction/mesh.h"
-#include "reconstruction/minimum_curvature.h"
-#include "reconstruction/periodic_spline.h"
-#include "reconstruction/section_coverage.h"
-#include "reconstruction/section_frame.h"
+#include "reconstruction/parallel/fill_array.h"
+#include "reconstruction/mesh/mesh.h"
+#include "reconstruction/path/minimum_curvature.h"
+#include "reconstruction/section/periodic_spline.h"
+#include "reconstruction/section/section_coverage.h"
+#include "reconstruction/section/section_frame.h"
 
 namespace caliper3d::reconstruction {
 

@@ -8,7 +8,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
-#include "reconstruction/synthetic_well.h"
+#include "reconstruction/synthetic/synthetic_well.h"
 
 using namespace caliper3d::reconstruction;
 

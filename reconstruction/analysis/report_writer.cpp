@@ -1,0 +1,254 @@
+#include "reconstruction/analysis/report_writer.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+#include <vector>
+
+#include "io/las_writer.h"
+
+namespace caliper3d::reconstruction {
+
+namespace {
+
+// printf-style numbers are locale dependent only through LC_NUMERIC, which
+// the program never sets, so "%.*f" writes a decimal point.
+void number(std::string& line, double v, int decimals) {
+    if (!std::isfinite(v)) return;
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, v == 0.0 ? 0.0 : v);  // no "-0.000"
+    line += buf;
+}
+
+}  // namespace
+
+std::vector<std::size_t> reportedSections(const WellAnalysis& a, const ReportOptions& options) {
+    const FillArray<SectionResult>& s = a.sections;
+    const double step = options.step_m;
+    std::vector<std::size_t> rows;
+    if (s.empty()) return rows;
+    if (!(step > 0.0)) {
+        rows.resize(s.size());
+        for (std::size_t i = 0; i < s.size(); ++i) rows[i] = i;
+        return rows;
+    }
+    const double top = s.front().md_m;
+    std::size_t j = 0;
+    for (std::size_t k = 0;; ++k) {
+        const double target = top + step * static_cast<double>(k);
+        if (target > s.back().md_m + 1e-9) break;
+        while (j + 1 < s.size() && std::abs(s[j + 1].md_m - target) <= std::abs(s[j].md_m - target))
+            ++j;
+        if (rows.empty() || rows.back() != j) rows.push_back(j);
+    }
+    return rows;
+}
+
+void writeSectionReport(std::ostream& out, const WellAnalysis& a, const ReportOptions& options) {
+    out << "md_m,tvd_m,north_m,east_m,inc_deg,azi_deg,dmin_mm,dmax_mm,ellipticity,major_azimuth_"
+           "deg,"
+           "area_mm2,centre_offset_mm,class,dls_deg_per_30m,bit_mm,equivalent_diameter_mm,"
+           "major_from_high_side_deg,centre_offset_azimuth_deg,repaired_arms"
+        << (options.wellhead ? ",easting_m,northing_m,tvdss_m\n" : "\n");
+    std::string line;
+    for (std::size_t i : reportedSections(a, options)) {
+        const SectionResult& r = a.sections[i];
+        line.clear();
+        const double fields[] = {
+            r.md_m,    r.tvd_m,   r.north_m,     r.east_m,           r.inc_deg,  r.azi_deg,
+            r.dmin_mm, r.dmax_mm, r.ellipticity, r.majorAzimuth_deg, r.area_mm2, r.centreOffset_mm};
+        const int decimals[] = {4, 4, 4, 4, 3, 3, 2, 2, 4, 2, 1, 2};
+        for (int k = 0; k < 12; ++k) {
+            number(line, fields[k], decimals[k]);
+            line += ',';
+        }
+        line += className(r.cls);
+        const double extra[] = {r.dls_degPer30m, r.bit_mm, r.equivalentDiameter_mm,
+                                r.majorFromHighSide_deg, r.centreOffsetAzimuth_deg};
+        const int extraDecimals[] = {3, 2, 2, 2, 2};
+        for (int k = 0; k < 5; ++k) {
+            line += ',';
+            number(line, extra[k], extraDecimals[k]);
+        }
+        line += ',';
+        if (r.cls != BoreholeClass::NoData) line += std::to_string(r.repairedArms);
+        if (const auto& w = options.wellhead) {
+            const double map[] = {w->easting_m + r.east_m, w->northing_m + r.north_m,
+                                  r.tvd_m - w->elevation_m};
+            for (double v : map) {
+                line += ',';
+                number(line, v, 4);
+            }
+        }
+        line += '\n';
+        out << line;
+    }
+}
+
+void writeZoneReport(std::ostream& out, const WellAnalysis& a) {
+    out << "kind,top_m,bottom_m,length_m,mean_azimuth_deg,circular_sd_deg,mean_dmax_mm,mean_dmin_"
+           "mm,sections\n";
+    std::string line;
+    for (const Zone& z : a.zones) {
+        line.assign(className(z.kind));
+        const double fields[] = {z.top_m,          z.bottom_m,    z.length_m,   z.meanAzimuth_deg,
+                                 z.circularSd_deg, z.meanDmax_mm, z.meanDmin_mm};
+        const int decimals[] = {4, 4, 4, 2, 2, 2, 2};
+        for (int k = 0; k < 7; ++k) {
+            line += ',';
+            number(line, fields[k], decimals[k]);
+        }
+        line += ',' + std::to_string(z.lastSection - z.firstSection + 1) + '\n';
+        out << line;
+    }
+}
+
+std::string formatAnalysisSummary(const WellAnalysis& a) {
+    char buf[512];
+    std::string s;
+    const BreakoutSummary& b = a.breakouts;
+    if (a.twoPads) {
+        // "none" would read as a finding: one diameter per section cannot show a breakout.
+        s += "breakouts: not seen by a two-pad tool (one diameter per section), WSM quality E\n";
+    } else if (b.zoneCount == 0) {
+        s += "breakouts: none, WSM quality E\n";
+    } else {
+        std::snprintf(buf, sizeof buf,
+                      "breakouts: %d zone%s, %.2f m, mean azimuth %.1f deg, circular SD %.1f deg, "
+                      "SHmax %.1f deg, WSM quality %c\n",
+                      b.zoneCount, b.zoneCount == 1 ? "" : "s", b.combinedLength_m,
+                      b.meanAzimuth_deg, b.circularSd_deg, b.shmaxAzimuth_deg, b.quality);
+        s += buf;
+    }
+    const HoleVolume& v = a.volume;
+    const double excessPercent =
+        v.gaugeHole_m3 > 0.0 ? 100.0 * (v.hole_m3 - v.gaugeHole_m3) / v.gaugeHole_m3 : 0.0;
+    std::snprintf(buf, sizeof buf,
+                  "hole volume %.2f-%.2f m: %.4f m3 (bit size %.4f m3, %+.1f %%)\n", v.top_m,
+                  v.bottom_m, v.hole_m3, v.gaugeHole_m3, excessPercent);
+    s += buf;
+    if (!v.uncovered.empty()) {
+        // The volumes above leave these out: say where, so no one reads them as the whole hole.
+        s += "hole volume not covered (no caliper data):";
+        for (std::size_t k = 0; k < v.uncovered.size(); ++k) {
+            std::snprintf(buf, sizeof buf, "%s %.2f-%.2f m", k ? "," : "", v.uncovered[k].first,
+                          v.uncovered[k].second);
+            s += buf;
+        }
+        std::snprintf(buf, sizeof buf, " (%.2f m in all; no volume figure includes it)\n",
+                      v.uncovered_m);
+        s += buf;
+    }
+    if (v.casingOd_mm > 0.0 || v.excess > 0.0) {
+        std::snprintf(
+            buf, sizeof buf,
+            "annulus outside %.1f mm casing %.4f m3 (bit size %.4f m3), cement with %.0f %% excess "
+            "%.4f m3 (bit size %.4f m3)\n",
+            v.casingOd_mm, v.annulus_m3, v.gaugeAnnulus_m3, 100.0 * v.excess, v.cement_m3,
+            v.gaugeCement_m3);
+        s += buf;
+    }
+    if (a.padAzimuthOffset.samples > 0) {
+        std::snprintf(buf, sizeof buf,
+                      "P1AZ - (HAZI+RB): mean %.2f deg, circular SD %.2f deg over %zu sections\n",
+                      a.padAzimuthOffset.mean_deg, a.padAzimuthOffset.sd_deg,
+                      a.padAzimuthOffset.samples);
+        s += buf;
+    }
+    return s;
+}
+
+void writeSectionReport(const std::string& path, const WellAnalysis& a,
+                        const ReportOptions& options) {
+    std::ofstream out(path, std::ios::binary);
+    if (!out) throw std::runtime_error(path + ": cannot open for writing");
+    writeSectionReport(out, a, options);
+    if (!out) throw std::runtime_error(path + ": write failed");
+}
+
+void writeAnalysisLas(std::ostream& out, const WellAnalysis& a, const ReportOptions& options,
+                      const std::string& wellName) {
+    const std::vector<std::size_t> rows = reportedSections(a, options);
+    struct Curve {
+        const char* mnemonic;
+        const char* unit;
+        const char* description;
+        int decimals;  // as the CSV report prints them
+        double (*value)(const SectionResult&);
+    };
+    static const Curve kCurves[] = {
+        {"DEPT", "M", "measured depth", 4, [](const SectionResult& r) { return r.md_m; }},
+        {"TVD", "M", "true vertical depth below the wellhead", 4,
+         [](const SectionResult& r) { return r.tvd_m; }},
+        {"NORTH", "M", "north of the wellhead", 4,
+         [](const SectionResult& r) { return r.north_m; }},
+        {"EAST", "M", "east of the wellhead", 4, [](const SectionResult& r) { return r.east_m; }},
+        {"INC", "DEG", "hole inclination", 3, [](const SectionResult& r) { return r.inc_deg; }},
+        {"AZI", "DEG", "hole azimuth", 3, [](const SectionResult& r) { return r.azi_deg; }},
+        {"DLS", "DEG/30M", "dogleg severity", 3,
+         [](const SectionResult& r) { return r.dls_degPer30m; }},
+        {"BS", "MM", "bit size used as gauge", 2, [](const SectionResult& r) { return r.bit_mm; }},
+        {"DMIN", "MM", "minor axis of the fitted ellipse", 2,
+         [](const SectionResult& r) { return r.dmin_mm; }},
+        {"DMAX", "MM", "major axis of the fitted ellipse", 2,
+         [](const SectionResult& r) { return r.dmax_mm; }},
+        {"ELLIP", "", "ellipticity dmax/dmin", 4,
+         [](const SectionResult& r) { return r.ellipticity; }},
+        {"MAJAZ", "DEG", "azimuth of the major axis, 0-180", 2,
+         [](const SectionResult& r) { return r.majorAzimuth_deg; }},
+        {"MAJHS", "DEG", "major axis clockwise from the high side, 0-180", 2,
+         [](const SectionResult& r) { return r.majorFromHighSide_deg; }},
+        {"AREA", "MM2", "section area", 1, [](const SectionResult& r) { return r.area_mm2; }},
+        {"DEQ", "MM", "diameter of the circle of equal area", 2,
+         [](const SectionResult& r) { return r.equivalentDiameter_mm; }},
+        {"CENOFF", "MM", "tool axis to hole centre", 2,
+         [](const SectionResult& r) { return r.centreOffset_mm; }},
+        {"CENAZ", "DEG", "azimuth from tool axis to hole centre", 2,
+         [](const SectionResult& r) { return r.centreOffsetAzimuth_deg; }},
+        {"CLASS", "", "0 in_gauge 1 undergauge 2 washout 3 breakout 4 keyseat; null no_data", 0,
+         [](const SectionResult& r) {
+             return r.cls == BoreholeClass::NoData ? io::kNaN : static_cast<double>(r.cls);
+         }},
+        {"REPAIRED", "", "arms interpolated on this section", 0,
+         [](const SectionResult& r) {
+             return r.cls == BoreholeClass::NoData ? io::kNaN : static_cast<double>(r.repairedArms);
+         }},
+    };
+    // The report's rows may be a subset (--step): gather each curve once.
+    std::vector<std::vector<double>> values;
+    std::vector<io::LasColumn> columns;
+    values.reserve(std::size(kCurves));
+    for (const Curve& c : kCurves) {
+        std::vector<double>& v = values.emplace_back();
+        v.reserve(rows.size());
+        for (std::size_t i : rows) v.push_back(c.value(a.sections[i]));
+        columns.push_back({c.mnemonic, c.unit, c.description, v.data(), 1, c.decimals});
+    }
+    io::LasWriteOptions las;
+    las.wellName = wellName;
+    std::string other = "Computed by caliper3d from the caliper log. CLASS codes:";
+    for (int k = 0; k <= static_cast<int>(BoreholeClass::Keyseat); ++k)
+        other +=
+            " " + std::to_string(k) + " " + std::string(className(static_cast<BoreholeClass>(k)));
+    other += "; a section without caliper data (no_data) has CLASS and every measured curve null.";
+    las.other = other + "\n" + formatAnalysisSummary(a);
+    io::writeLasColumns(out, rows.size(), columns, las);
+}
+
+void writeAnalysisLas(const std::string& path, const WellAnalysis& a, const ReportOptions& options,
+                      const std::string& wellName) {
+    std::ofstream out(path, std::ios::binary);
+    if (!out) throw std::runtime_error(path + ": cannot open for writing");
+    writeAnalysisLas(out, a, options, wellName);
+    if (!out) throw std::runtime_error(path + ": write failed");
+}
+
+void writeZoneReport(const std::string& path, const WellAnalysis& a) {
+    std::ofstream out(path, std::ios::binary);
+    if (!out) throw std::runtime_error(path + ": cannot open for writing");
+    writeZoneReport(out, a);
+    if (!out) throw std::runtime_error(path + ": write failed");
+}
+
+}  // namespace caliper3d::reconstruction
