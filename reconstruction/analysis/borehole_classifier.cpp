@@ -75,16 +75,6 @@ double maxTurnPerWindow(const Accessor& mdAt, const Accessor& toolAzimuthAt, std
 
 }  // namespace
 
-std::vector<BoreholeClass> classifySections(const std::vector<ClassifierInput>& sections,
-                                            const ClassificationRules& rules) {
-    std::vector<BoreholeClass> out(sections.size());
-    for (std::size_t i = 0; i < sections.size(); ++i) out[i] = classifyShape(sections[i], rules);
-    applyBreakoutZoneRules(
-        out, [&](std::size_t i) { return sections[i].md_m; },
-        [&](std::size_t i) { return sections[i].toolAzimuth_deg; }, rules);
-    return out;
-}
-
 void applyBreakoutZoneRules(std::vector<BoreholeClass>& out, const Accessor& md,
                             const Accessor& toolAzimuth, const ClassificationRules& rules) {
     std::size_t i = 0;

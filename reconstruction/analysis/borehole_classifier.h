@@ -23,7 +23,7 @@ enum class BoreholeClass : unsigned char {
 // "in_gauge", "undergauge", "washout", "breakout", "keyseat", "no_data": the report's names.
 std::string_view className(BoreholeClass c);
 
-// Every threshold of the classification (design section 7), with the
+// Every threshold of the classification (docs/analysis.md, "Classes"), with the
 // published defaults: Plumb & Hickman 1985 (JGR 90, B7) for the elongation
 // and bit-size tests; Reinecker, Tingay & Mueller 2003 (WSM guidelines) for
 // zone length and tool rotation; Zoback, Reservoir Geomechanics (2007) pp.
@@ -61,19 +61,13 @@ struct ClassifierInput {
 };
 
 // Class of one section from its shape alone; breakouts are only candidates
-// here (see classifySections).
+// here (see applyBreakoutZoneRules).
 BoreholeClass classifyShape(const ClassifierInput& s, const ClassificationRules& rules);
 
-// Classes of a sequence of sections ordered by depth: shape classes, then the
-// zone rules of breakouts over the sequence: a run of breakout candidates
-// shorter than minBreakoutLength_m, or over which the tool turns by
-// maxToolRotation_deg or more within any rotationWindow_m (pro rata for
-// shorter runs), is not a breakout: its sections become in_gauge.
-std::vector<BoreholeClass> classifySections(const std::vector<ClassifierInput>& sections,
-                                            const ClassificationRules& rules);
-
-// The zone rules of classifySections on shape classes already in `classes`,
-// for a caller that keeps its sections in another layout: md_m(i) and
+// The zone rules of breakouts over shape classes already in `classes` (ordered by depth): a
+// run of breakout candidates shorter than minBreakoutLength_m, or over which the tool turns
+// by maxToolRotation_deg or more within any rotationWindow_m (pro rata for shorter runs), is
+// not a breakout: its sections become in_gauge. md_m(i) and
 // toolAzimuth_deg(i) give section i's measured depth and tool azimuth (they
 // are asked only for breakout candidates and their neighbours).
 void applyBreakoutZoneRules(std::vector<BoreholeClass>& classes,

@@ -60,12 +60,4 @@ HoleVolume HoleVolumeAccumulator::result() const {
     return v;
 }
 
-HoleVolume holeVolume(const std::vector<double>& md, const std::vector<double>& area,
-                      const std::vector<double>& bit, const VolumeOptions& o) {
-    HoleVolumeAccumulator volume(o, md.empty() ? 0.0 : md.front(), md.empty() ? 0.0 : md.back());
-    for (std::size_t i = 0; i + 1 < md.size(); ++i)  // nothing to add for an empty log
-        volume.addStep(md[i], area[i], bit[i], md[i + 1], area[i + 1], bit[i + 1]);
-    return volume.result();
-}
-
 }  // namespace caliper3d::reconstruction

@@ -31,14 +31,8 @@ struct HoleVolume {
     double uncovered_m = 0.0;  // their combined length
 };
 
-// md ascending; area_mm2 and bit_mm one per section (bit NaN: the section
-// adds nothing to the gauge volumes).
-HoleVolume holeVolume(const std::vector<double>& md_m, const std::vector<double>& area_mm2,
-                      const std::vector<double>& bit_mm, const VolumeOptions& options);
-
-// holeVolume one step at a time, for a caller that keeps its sections in
-// another layout: the steps added in depth order give holeVolume's result bit
-// for bit.
+// The hole and cement volumes, one step from section to section in depth order (md
+// ascending; a bit size of NaN adds nothing to the gauge volumes).
 class HoleVolumeAccumulator {
 public:
     // firstMd_m and lastMd_m: measured depths of the first and last sections.

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -25,5 +26,17 @@ struct Mesh {
 // A0 B0 A1 B1 ... A(m-1) B(m-1) A0 B0, then -1: 2*points triangles.
 void appendClosedStrip(std::vector<std::int32_t>& indices, std::int32_t firstA,
                        std::int32_t firstB, int points);
+
+// One segment's meshes, finest level first.
+struct SegmentMesh {
+    std::size_t index = 0;
+    std::size_t firstRow = 0;  // rows [firstRow, lastRow], sharing lastRow with the next segment
+    std::size_t lastRow = 0;
+    double top_m = 0.0;
+    double bottom_m = 0.0;
+    glm::vec3 centre{0.0f};  // scene frame, for LOD distances
+    float radius = 0.0f;     // bounding sphere radius, scene units (metres)
+    std::vector<Mesh> levels;
+};
 
 }  // namespace caliper3d::reconstruction

@@ -22,10 +22,6 @@ double armToolAngle_deg(int arm, int armCount) {
     return wrap360(-armClockwiseAngle_deg(arm, armCount));
 }
 
-double armAzimuth_deg(int arm, int armCount, double p1az_deg) {
-    return wrap360(p1az_deg + armClockwiseAngle_deg(arm, armCount));
-}
-
 std::vector<glm::dvec2> armPoints(const double* radii_mm, int armCount) {
     std::vector<glm::dvec2> points(static_cast<std::size_t>(armCount));
     for (int k = 0; k < armCount; ++k) {

@@ -15,9 +15,6 @@ double armClockwiseAngle_deg(int arm, int armCount);
 // this is the reference's table 0, 300, 240, 180, 120, 60.
 double armToolAngle_deg(int arm, int armCount);
 
-// Azimuth of arm k in a vertical hole: P1AZ + (k-1)*360/n, in [0, 360).
-double armAzimuth_deg(int arm, int armCount, double p1az_deg);
-
 // Pad points in the tool frame (millimetres): radius r_k along tool angle of arm k.
 std::vector<glm::dvec2> armPoints(const double* radii_mm, int armCount);
 

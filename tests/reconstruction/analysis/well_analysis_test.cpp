@@ -8,10 +8,12 @@
 #include <cstring>
 
 #include <gtest/gtest.h>
+
 #include <glm/trigonometric.hpp>
 
 #include "reconstruction/section/section_analysis.h"
 #include "reconstruction/synthetic/synthetic_well.h"
+#include "support/reconstruction_support.h"
 
 using namespace caliper3d;
 using namespace caliper3d::reconstruction;

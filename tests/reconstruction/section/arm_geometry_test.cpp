@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/reconstruction_support.h"
+
 using namespace caliper3d::reconstruction;
 
 TEST(ArmGeometryTest, SixArmsFollowTheReferenceTable) {
