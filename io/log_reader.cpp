@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "io/hole_azimuth_plan.h"
+#include "io/median.h"
 #include "io/parse_error.h"
 #include "io/survey_reader.h"
 #include "io/text_encoding.h"
@@ -137,8 +138,7 @@ LogInfo describeSurvey(const std::string& path, const ReadOptions& options) {
     info.bottom_m = s.md_m.back();
     std::vector<double> steps;
     for (std::size_t i = 1; i < s.md_m.size(); ++i) steps.push_back(s.md_m[i] - s.md_m[i - 1]);
-    std::nth_element(steps.begin(), steps.begin() + static_cast<std::ptrdiff_t>(steps.size() / 2), steps.end());
-    info.step_m = steps[steps.size() / 2];
+    info.step_m = medianInPlace(steps);
     info.armSource = "none: a deviation survey, not a caliper log (give it to a log with --survey)";
     auto nullsIn = [](const std::vector<double>& v) {
         return static_cast<std::size_t>(std::count_if(v.begin(), v.end(), [](double x) { return std::isnan(x); }));
