@@ -1,7 +1,7 @@
 #include "reconstruction/analysis/report_writer.h"
 
+#include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <fstream>
 #include <stdexcept>
 #include <vector>
@@ -12,13 +12,58 @@ namespace caliper3d::reconstruction {
 
 namespace {
 
-// printf-style numbers are locale dependent only through LC_NUMERIC, which
-// the program never sets, so "%.*f" writes a decimal point.
+// Every number goes through std::to_chars, which writes a decimal point whatever the locale:
+// printf follows LC_NUMERIC, and a Qt application sets it from the environment on Unix (a
+// German desktop would get "215,90" in a comma-separated file). The digits are printf's "%.*f".
+std::string fixed(double v, int decimals) {
+    char buf[400];  // the longest double in fixed notation, 309 digits, plus decimals
+    return std::string(
+        buf, std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals).ptr);
+}
+
+// A field of the CSV: empty when undefined, never "-0.000".
 void number(std::string& line, double v, int decimals) {
     if (!std::isfinite(v)) return;
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", decimals, v == 0.0 ? 0.0 : v);  // no "-0.000"
-    line += buf;
+    line += fixed(v == 0.0 ? 0.0 : v, decimals);
+}
+
+// printf's "%+.1f".
+std::string signedFixed(double v, int decimals) {
+    return (std::signbit(v) ? "" : "+") + fixed(v, decimals);
+}
+
+std::string breakoutSummary(const WellAnalysis& a) {
+    const BreakoutSummary& b = a.breakouts;
+    // "none" would read as a finding: one diameter per section cannot show a breakout.
+    if (a.twoPads)
+        return "breakouts: not seen by a two-pad tool (one diameter per section), WSM quality E\n";
+    if (b.zoneCount == 0) return "breakouts: none, WSM quality E\n";
+    return "breakouts: " + std::to_string(b.zoneCount) + " zone" + (b.zoneCount == 1 ? "" : "s") +
+           ", " + fixed(b.combinedLength_m, 2) + " m, mean azimuth " + fixed(b.meanAzimuth_deg, 1) +
+           " deg, circular SD " + fixed(b.circularSd_deg, 1) + " deg, SHmax " +
+           fixed(b.shmaxAzimuth_deg, 1) + " deg, WSM quality " + b.quality + "\n";
+}
+
+std::string volumeSummary(const HoleVolume& v) {
+    const double excessPercent =
+        v.gaugeHole_m3 > 0.0 ? 100.0 * (v.hole_m3 - v.gaugeHole_m3) / v.gaugeHole_m3 : 0.0;
+    std::string s = "hole volume " + fixed(v.top_m, 2) + "-" + fixed(v.bottom_m, 2) +
+                    " m: " + fixed(v.hole_m3, 4) + " m3 (bit size " + fixed(v.gaugeHole_m3, 4) +
+                    " m3, " + signedFixed(excessPercent, 1) + " %)\n";
+    if (!v.uncovered.empty()) {
+        // The volumes above leave these out: say where, so no one reads them as the whole hole.
+        s += "hole volume not covered (no caliper data):";
+        for (std::size_t k = 0; k < v.uncovered.size(); ++k)
+            s += (k ? ", " : " ") + fixed(v.uncovered[k].first, 2) + "-" +
+                 fixed(v.uncovered[k].second, 2) + " m";
+        s += " (" + fixed(v.uncovered_m, 2) + " m in all; no volume figure includes it)\n";
+    }
+    if (v.casingOd_mm > 0.0 || v.excess > 0.0)
+        s += "annulus outside " + fixed(v.casingOd_mm, 1) + " mm casing " + fixed(v.annulus_m3, 4) +
+             " m3 (bit size " + fixed(v.gaugeAnnulus_m3, 4) + " m3), cement with " +
+             fixed(100.0 * v.excess, 0) + " % excess " + fixed(v.cement_m3, 4) + " m3 (bit size " +
+             fixed(v.gaugeCement_m3, 4) + " m3)\n";
+    return s;
 }
 
 }  // namespace
@@ -105,57 +150,11 @@ void writeZoneReport(std::ostream& out, const WellAnalysis& a) {
 }
 
 std::string formatAnalysisSummary(const WellAnalysis& a) {
-    char buf[512];
-    std::string s;
-    const BreakoutSummary& b = a.breakouts;
-    if (a.twoPads) {
-        // "none" would read as a finding: one diameter per section cannot show a breakout.
-        s += "breakouts: not seen by a two-pad tool (one diameter per section), WSM quality E\n";
-    } else if (b.zoneCount == 0) {
-        s += "breakouts: none, WSM quality E\n";
-    } else {
-        std::snprintf(buf, sizeof buf,
-                      "breakouts: %d zone%s, %.2f m, mean azimuth %.1f deg, circular SD %.1f deg, "
-                      "SHmax %.1f deg, WSM quality %c\n",
-                      b.zoneCount, b.zoneCount == 1 ? "" : "s", b.combinedLength_m,
-                      b.meanAzimuth_deg, b.circularSd_deg, b.shmaxAzimuth_deg, b.quality);
-        s += buf;
-    }
-    const HoleVolume& v = a.volume;
-    const double excessPercent =
-        v.gaugeHole_m3 > 0.0 ? 100.0 * (v.hole_m3 - v.gaugeHole_m3) / v.gaugeHole_m3 : 0.0;
-    std::snprintf(buf, sizeof buf,
-                  "hole volume %.2f-%.2f m: %.4f m3 (bit size %.4f m3, %+.1f %%)\n", v.top_m,
-                  v.bottom_m, v.hole_m3, v.gaugeHole_m3, excessPercent);
-    s += buf;
-    if (!v.uncovered.empty()) {
-        // The volumes above leave these out: say where, so no one reads them as the whole hole.
-        s += "hole volume not covered (no caliper data):";
-        for (std::size_t k = 0; k < v.uncovered.size(); ++k) {
-            std::snprintf(buf, sizeof buf, "%s %.2f-%.2f m", k ? "," : "", v.uncovered[k].first,
-                          v.uncovered[k].second);
-            s += buf;
-        }
-        std::snprintf(buf, sizeof buf, " (%.2f m in all; no volume figure includes it)\n",
-                      v.uncovered_m);
-        s += buf;
-    }
-    if (v.casingOd_mm > 0.0 || v.excess > 0.0) {
-        std::snprintf(
-            buf, sizeof buf,
-            "annulus outside %.1f mm casing %.4f m3 (bit size %.4f m3), cement with %.0f %% excess "
-            "%.4f m3 (bit size %.4f m3)\n",
-            v.casingOd_mm, v.annulus_m3, v.gaugeAnnulus_m3, 100.0 * v.excess, v.cement_m3,
-            v.gaugeCement_m3);
-        s += buf;
-    }
-    if (a.padAzimuthOffset.samples > 0) {
-        std::snprintf(buf, sizeof buf,
-                      "P1AZ - (HAZI+RB): mean %.2f deg, circular SD %.2f deg over %zu sections\n",
-                      a.padAzimuthOffset.mean_deg, a.padAzimuthOffset.sd_deg,
-                      a.padAzimuthOffset.samples);
-        s += buf;
-    }
+    std::string s = breakoutSummary(a) + volumeSummary(a.volume);
+    if (a.padAzimuthOffset.samples > 0)
+        s += "P1AZ - (HAZI+RB): mean " + fixed(a.padAzimuthOffset.mean_deg, 2) +
+             " deg, circular SD " + fixed(a.padAzimuthOffset.sd_deg, 2) + " deg over " +
+             std::to_string(a.padAzimuthOffset.samples) + " sections\n";
     return s;
 }
 

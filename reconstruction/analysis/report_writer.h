@@ -23,7 +23,7 @@ struct ReportOptions {
     std::optional<Wellhead> wellhead;
 };
 
-// The per-section CSV (design section 8): one header line, then
+// The per-section CSV (docs/analysis.md, "Report CSV"): one header line, then
 //   md_m,tvd_m,north_m,east_m,inc_deg,azi_deg,dmin_mm,dmax_mm,ellipticity,
 //   major_azimuth_deg,area_mm2,centre_offset_mm,class,
 // followed by dls_deg_per_30m,bit_mm,equivalent_diameter_mm,
