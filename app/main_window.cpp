@@ -28,7 +28,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     auto* centre = new QWidget(this);
     setCentralWidget(centre);
     m_viewer = new SoQtExaminerViewer(centre);
-    m_viewer->setBackgroundColor(SbColor(0.11f, 0.13f, 0.17f));
+    m_viewer->setBackgroundColor(SbColor(scenegraph::kBackgroundColour));
     m_viewer->setTransparencyType(SoGLRenderAction::SORTED_OBJECT_BLEND);
     m_sceneRoot = new SoSeparator;
     m_sceneRoot->ref();
