@@ -35,7 +35,7 @@ struct BatchShape {
 // (one atan2).
 double majorAngle_deg(const BatchShape& shape);
 
-// Analyses kLanes sections at once (design section 4: spline samples, area,
+// Analyses kLanes sections at once (docs/analysis.md, "Sections": spline samples, area,
 // centroid, least-squares ellipse). Each lane performs exactly the operations
 // of SectionAnalyzer::analyse, in the same order, so its results are
 // bit-identical; one section per SIMD lane is what lets the compiler

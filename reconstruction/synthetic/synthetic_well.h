@@ -10,7 +10,8 @@ namespace caliper3d::reconstruction {
 // A hole shape over a depth interval, with exact known geometry. The radii
 // are exact ray intersections from the tool axis with the shape in the
 // section plane. An orienting angle is a true azimuth (the azimuth of the
-// in-plane direction's horizontal projection, design section 3), or, for a
+// in-plane direction's horizontal projection, docs/conventions.md, "Azimuth of an
+// in-plane direction"), or, for a
 // key seat, an angle clockwise from the high side.
 struct SyntheticFeature {
     // Breakout: ellipse dmax x dmin, major axis at majorAzimuth_deg.
