@@ -5,8 +5,8 @@
 #include "app/verb_parser.h"
 #include "io/log_reader.h"
 #include "io/survey_reader.h"
-#include "reconstruction/section_coverage.h"
-#include "reconstruction/survey_interpolation.h"
+#include "reconstruction/section/section_coverage.h"
+#include "reconstruction/path/survey_interpolation.h"
 
 namespace caliper3d::app {
 

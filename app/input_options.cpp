@@ -6,7 +6,7 @@
 #include "io/number_parsing.h"
 #include "io/survey_reader.h"
 #include "io/units.h"
-#include "reconstruction/survey_interpolation.h"
+#include "reconstruction/path/survey_interpolation.h"
 #include "reconstruction/well_input.h"
 
 namespace caliper3d::app {

@@ -12,7 +12,7 @@
 #include "io/log_reader.h"
 #include "io/section_table.h"
 #include "reconstruction/well_geometry.h"
-#include "reconstruction/wellhead.h"
+#include "reconstruction/path/wellhead.h"
 
 namespace caliper3d::app {
 

@@ -14,7 +14,7 @@
 #include <Inventor/nodes/SoCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
 
-#include "reconstruction/well_load_pipeline.h"
+#include "reconstruction/parallel/well_load_pipeline.h"
 #include "scenegraph/camera_setup.h"
 #include "scenegraph/iv_export.h"
 #include "scenegraph/segment_feeder.h"
@@ -28,7 +28,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     auto* centre = new QWidget(this);
     setCentralWidget(centre);
     m_viewer = new SoQtExaminerViewer(centre);
-    m_viewer->setBackgroundColor(SbColor(0.11f, 0.13f, 0.17f));
+    m_viewer->setBackgroundColor(SbColor(scenegraph::kBackgroundColour));
     m_viewer->setTransparencyType(SoGLRenderAction::SORTED_OBJECT_BLEND);
     m_sceneRoot = new SoSeparator;
     m_sceneRoot->ref();

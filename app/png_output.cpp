@@ -13,8 +13,8 @@ namespace detail {
 scenegraph::RenderedImage renderRootToPng(SoNode* root, const std::string& path, int width,
                                           int height) {
     scenegraph::OffscreenRenderer renderer;
-    const float background[3] = {0.11f, 0.13f, 0.17f};
-    scenegraph::RenderedImage image = renderer.render(root, width, height, background);
+    scenegraph::RenderedImage image =
+        renderer.render(root, width, height, scenegraph::kBackgroundColour);
     QImage picture(image.rgba.data(), image.width, image.height, image.width * 4,
                    QImage::Format_RGBA8888);
     if (!picture.save(QString::fromStdString(path), "PNG"))

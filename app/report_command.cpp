@@ -11,9 +11,9 @@
 #include "app/input_options.h"
 #include "app/verb_parser.h"
 #include "io/number_parsing.h"
-#include "reconstruction/report_writer.h"
-#include "reconstruction/rule_settings.h"
-#include "reconstruction/well_analysis.h"
+#include "reconstruction/analysis/report_writer.h"
+#include "reconstruction/analysis/rule_settings.h"
+#include "reconstruction/analysis/well_analysis.h"
 #include "reconstruction/well_warnings.h"
 
 namespace caliper3d::app {

@@ -9,7 +9,7 @@
 #include "io/column_text_writer.h"
 #include "io/las_writer.h"
 #include "io/number_parsing.h"
-#include "reconstruction/synthetic_well.h"
+#include "reconstruction/synthetic/synthetic_well.h"
 
 namespace caliper3d::app {
 

@@ -25,7 +25,7 @@
 #include "io/column_text_writer.h"
 #include "io/las_writer.h"
 #include "io/log_reader.h"
-#include "reconstruction/synthetic_well.h"
+#include "reconstruction/synthetic/synthetic_well.h"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// Reconstruction of the 4 km well of design section 5 (1.6 M sections at
+// Reconstruction of the 4 km well of docs/architecture.md, "Level of detail" (1.6 M sections at
 // 2.5 mm, six arms, 48 spline points): path + spline + analysis, on one and
 // two threads (geometry and analysis alike). Prints sections per second
 // (docs/benchmarks.md, "Reconstruction").
@@ -6,8 +6,8 @@
 
 #include <benchmark/benchmark.h>
 
-#include "reconstruction/synthetic_well.h"
-#include "reconstruction/well_analysis.h"
+#include "reconstruction/synthetic/synthetic_well.h"
+#include "reconstruction/analysis/well_analysis.h"
 
 using namespace caliper3d;
 using namespace caliper3d::reconstruction;

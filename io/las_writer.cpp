@@ -77,9 +77,11 @@ void writeLasColumns(std::ostream& out, std::size_t rows, const std::vector<LasC
         for (std::size_t r = 1; r < rows && step != 0.0; ++r)
             if (!(std::abs(depth(r) - depth(r - 1) - nominal) <= 1e-3 * std::abs(nominal))) step = 0.0;
     }
+    // "%.10g", locale-free: 0.0025, not 0.0024999999999988864.
     char stepText[32];
-    std::snprintf(stepText, sizeof stepText, "%.10g", step);  // nominal: 0.0025, not 0.0024999999999988864
-    item(out, "STEP", index.unit, stepText, "step (0: irregular)");
+    const auto stepEnd =
+        std::to_chars(stepText, stepText + sizeof stepText, step, std::chars_format::general, 10);
+    item(out, "STEP", index.unit, std::string(stepText, stepEnd.ptr), "step (0: irregular)");
     item(out, "NULL", "", number(options.null), "null value");
     item(out, "WELL", "", options.wellName, "well");
     out << "~Curve information\n";

@@ -135,7 +135,7 @@ LogInfo describeSurvey(const std::string& path, const ReadOptions& options) {
     info.bottom_m = s.md_m.back();
     std::vector<double> steps;
     for (std::size_t i = 1; i < s.md_m.size(); ++i) steps.push_back(s.md_m[i] - s.md_m[i - 1]);
-    info.step_m = upperMedian(std::move(steps));
+    info.step_m = medianInPlace(steps);
     info.armSource = "none: a deviation survey, not a caliper log (give it to a log with --survey)";
     auto nullsIn = [](const std::vector<double>& v) {
         return static_cast<std::size_t>(std::count_if(v.begin(), v.end(), [](double x) { return std::isnan(x); }));

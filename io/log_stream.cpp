@@ -748,7 +748,7 @@ private:
     // far likelier millimetres, read so with a warning.
     LengthUnit unitlessRadiusUnit(std::vector<double> radii, std::size_t line) {
         if (radii.empty()) return LengthUnit::Inch;
-        const double median = upperMedian(std::move(radii));
+        const double median = medianInPlace(radii);
         if (!(median > kMaxPlausibleRadius_in)) return LengthUnit::Inch;
         m_info.diagnostics.warn(m_name, line,
                                 "radii near " + std::to_string(median) +
@@ -1214,7 +1214,7 @@ private:
             m_info.bitSizeMax_mm = m_bitSizeMax;
         }
         if (!m_steps.empty()) {
-            m_info.step_m = upperMedian(m_steps);
+            m_info.step_m = medianInPlace(m_steps);
         }
         if (m_info.rows == 0 && !m_info.cancelled) {
             if (m_format.las)

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "reconstruction/arm_geometry.h"
+#include "reconstruction/section/arm_geometry.h"
 
 namespace caliper3d::reconstruction {
 

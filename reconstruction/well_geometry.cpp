@@ -8,11 +8,11 @@
 #include <glm/gtc/constants.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "reconstruction/arm_geometry.h"
-#include "reconstruction/colour_map.h"
-#include "reconstruction/ordered_blocks.h"
-#include "reconstruction/prefault.h"
-#include "reconstruction/survey_interpolation.h"
+#include "reconstruction/mesh/lod_levels.h"
+#include "reconstruction/parallel/ordered_blocks.h"
+#include "reconstruction/parallel/prefault.h"
+#include "reconstruction/path/survey_interpolation.h"
+#include "reconstruction/section/arm_geometry.h"
 
 namespace caliper3d::reconstruction {
 
@@ -48,14 +48,8 @@ std::vector<double> carriedIntoBlocks(const std::vector<double>& curve, std::siz
 // enough that two workers share a well evenly.
 constexpr std::size_t kBlockRows = 4096;
 
-}  // namespace
-
-WellGeometry::WellGeometry(std::shared_ptr<const io::SectionTable> table,
-                           const GeometryOptions& options)
-    : m_table(std::move(table)),
-      m_options(options),
-      m_sampler(sectionKnotCount(m_table ? m_table->armCount : 3), options.splinePoints) {
-    const io::SectionTable& t = *m_table;
+// A table the geometry can be built from: two arms, two sections, depths increasing.
+void checkDrawable(const io::SectionTable& t) {
     const std::size_t rows = t.rowCount();
     if (t.armCount < 2)
         throw std::invalid_argument(t.source + ": need at least 2 arms to draw a section");
@@ -66,7 +60,24 @@ WellGeometry::WellGeometry(std::shared_ptr<const io::SectionTable> table,
             throw std::invalid_argument(t.source + ": depths must increase (row " +
                                         std::to_string(i + 1) + ")");
     }
+}
 
+}  // namespace
+
+WellGeometry::WellGeometry(std::shared_ptr<const io::SectionTable> table,
+                           const GeometryOptions& options)
+    : m_table(std::move(table)),
+      m_options(options),
+      m_sampler(sectionKnotCount(m_table ? m_table->armCount : 3), options.splinePoints) {
+    checkDrawable(*m_table);
+    markMeasuredRows();
+    computePathAndFrames();
+    cutSegments();
+}
+
+void WellGeometry::markMeasuredRows() {
+    const io::SectionTable& t = *m_table;
+    const std::size_t rows = t.rowCount();
     // Sections with too few valid arms have no shape: a log without any
     // section that has one is bad input, not a hole of invented gauge.
     const int needed = minValidArms(t.armCount, m_options.minValidArmFraction);
@@ -81,7 +92,11 @@ WellGeometry::WellGeometry(std::shared_ptr<const io::SectionTable> table,
                                     std::to_string(rows) + " sections has at least " +
                                     std::to_string(needed) + " of its " +
                                     std::to_string(t.armCount) + " arms with a valid reading");
+}
 
+void WellGeometry::computePathAndFrames() {
+    const io::SectionTable& t = *m_table;
+    const std::size_t rows = t.rowCount();
     const bool fromSurvey = !m_options.survey.empty();
     // The workers write ~140 bytes per row into fresh memory: its pages are
     // faulted in on every worker at once first, not by the first writer.
@@ -125,8 +140,12 @@ WellGeometry::WellGeometry(std::shared_ptr<const io::SectionTable> table,
                 p.tvd = prev.tvd + p.tvd;
             }
         });
+}
 
-    // Segments of equal length; consecutive segments share their boundary row.
+// Segments of equal length; consecutive segments share their boundary row.
+void WellGeometry::cutSegments() {
+    const io::SectionTable& t = *m_table;
+    const std::size_t rows = t.rowCount();
     const double segment = std::max(m_options.segmentLength_m, 1e-3);
     std::size_t first = 0;
     while (first + 1 < rows) {
@@ -177,10 +196,10 @@ void WellGeometry::computeSteps(std::size_t first, std::size_t last, double inc,
     }
 }
 
-// Arm 1 per design section 3: P1AZ in near-vertical holes, RB from the high
-// side in steep ones (where P1AZ, a horizontal projection, loses precision) or
-// when P1AZ is missing; P1AZ when RB is missing. A row with neither keeps arm 1
-// north and is counted as unoriented.
+// Arm 1 (docs/conventions.md, "Section plane and arm 1 in a deviated hole"): P1AZ in
+// near-vertical holes, RB from the high side in steep ones (where P1AZ, a horizontal
+// projection, loses precision) or when P1AZ is missing; P1AZ when RB is missing. A row with neither
+// keeps arm 1 north and is counted as unoriented.
 void WellGeometry::computeFrames(std::size_t first, std::size_t last) {
     const io::SectionTable& t = *m_table;
     HoleDirection direction(m_path[first].inc_deg, m_path[first].azi_deg);
@@ -208,12 +227,6 @@ Ned WellGeometry::centre(std::size_t row) const {
 
 double WellGeometry::bitRadius_mm(std::size_t row) const {
     return valueAt(m_table->bitSize_mm, row) / 2.0;
-}
-
-std::vector<double> WellGeometry::repairedRadii(std::size_t row) const {
-    std::vector<double> out(static_cast<std::size_t>(m_table->armCount));
-    repairRadii(row, out.data());
-    return out;
 }
 
 int WellGeometry::repairRadii(std::size_t row, double* out) const {
@@ -270,111 +283,12 @@ int WellGeometry::sectionKnots(std::size_t row, double* out) const {
     return repaired;
 }
 
-void WellGeometry::appendRing(Mesh& mesh, std::size_t row, bool spline) const {
-    std::vector<double> pads(static_cast<std::size_t>(knotCount()));
-    sectionKnots(row, pads.data());
-    std::vector<double> radii;
-    if (spline) {
-        radii.resize(static_cast<std::size_t>(m_sampler.samples()));
-        m_sampler.sample(pads.data(), radii.data());
-    } else {
-        radii = pads;
-    }
-    const int points = static_cast<int>(radii.size());
-    const SectionFrame& f = m_frames[row];
-    const Ned c = centre(row);
-    const double bitRadius = bitRadius_mm(row);
-    const std::size_t base = mesh.positions.size();
-    for (int j = 0; j < points; ++j) {
-        const double phi = glm::two_pi<double>() * j / points;
-        const double drawn_m =
-            radii[static_cast<std::size_t>(j)] / 1000.0 * m_options.radialExaggeration;
-        const Ned p = c + drawn_m * f.direction(phi);
-        mesh.positions.emplace_back(toScene(p));
-        mesh.colours.push_back(gaugeColour(radii[static_cast<std::size_t>(j)], bitRadius));
-    }
-    // Outward normals: in-plane tangent (clockwise) crossed with the hole axis.
-    for (int j = 0; j < points; ++j) {
-        const glm::vec3& next = mesh.positions[base + static_cast<std::size_t>((j + 1) % points)];
-        const glm::vec3& prev =
-            mesh.positions[base + static_cast<std::size_t>((j + points - 1) % points)];
-        const glm::dvec3 d = glm::dvec3(next - prev);
-        glm::dvec3 normal = glm::cross(d, toScene(f.tangent));
-        const double len = glm::length(normal);
-        mesh.normals.emplace_back(
-            len > 0 ? normal / len : toScene(f.direction(glm::two_pi<double>() * j / points)));
-    }
-}
-
 std::vector<NoDataInterval> WellGeometry::noDataIntervals() const {
     return reconstruction::noDataIntervals(m_measured, m_table->depth_m);
 }
 
-bool WellGeometry::measuredThrough(std::size_t first, std::size_t last) const {
-    for (std::size_t r = first; r <= last; ++r)
-        if (!m_measured[r]) return false;
-    return true;
-}
-
-// Rings of the measured rows among `rows`; a strip joins two consecutive ones
-// only when every row between them is measured, so a no-data interval is a
-// gap in the wall at every level (the path line still crosses it).
-Mesh WellGeometry::buildLevel(const std::vector<std::size_t>& rows, bool spline) const {
-    Mesh mesh;
-    const int points = spline ? m_sampler.samples() : knotCount();
-    mesh.positions.reserve(rows.size() * static_cast<std::size_t>(points));
-    std::int32_t rings = 0;
-    bool joinable = false;  // the last ring appended was rows[i - 1]
-    for (std::size_t i = 0; i < rows.size(); ++i) {
-        if (!m_measured[rows[i]]) {
-            joinable = false;
-            continue;
-        }
-        appendRing(mesh, rows[i], spline);
-        ++rings;
-        if (joinable && measuredThrough(rows[i - 1], rows[i]))
-            appendClosedStrip(mesh.stripIndices, (rings - 2) * points, (rings - 1) * points,
-                              points);
-        joinable = true;
-    }
-    return mesh;
-}
-
 SegmentMesh WellGeometry::buildSegment(std::size_t segment) const {
-    const auto [first, last] = m_segments.at(segment);
-    SegmentMesh out;
-    out.index = segment;
-    out.firstRow = first;
-    out.lastRow = last;
-    out.top_m = m_table->depth_m[first];
-    out.bottom_m = m_table->depth_m[last];
-
-    std::vector<std::size_t> all;
-    for (std::size_t r = first; r <= last; ++r) all.push_back(r);
-    out.levels.push_back(buildLevel(all, true));
-
-    // Coarser levels: rows picked at a fixed depth spacing, ends always kept
-    // so that neighbouring segments meet without a gap at every level.
-    for (double spacing : {m_options.coarseSpacing_m, m_options.coarsestSpacing_m}) {
-        std::vector<std::size_t> rows{first};
-        double next = out.top_m + spacing;
-        for (std::size_t r = first + 1; r < last; ++r) {
-            // The measured rows next to a gap are kept too, so that the wall
-            // reaches the gap's edges as it does at full detail.
-            const bool gapEdge = m_measured[r] && (!m_measured[r - 1] || !m_measured[r + 1]);
-            if (m_table->depth_m[r] >= next || gapEdge) {
-                rows.push_back(r);
-                next = m_table->depth_m[r] + spacing;
-            }
-        }
-        rows.push_back(last);
-        out.levels.push_back(buildLevel(rows, false));
-    }
-
-    const glm::dvec3 a = toScene(centre(first)), b = toScene(centre(last));
-    out.centre = glm::vec3((a + b) / 2.0);
-    out.radius = static_cast<float>(glm::length(b - a) / 2.0 + 1.0);
-    return out;
+    return buildSegmentMesh(*this, segment);
 }
 
 }  // namespace caliper3d::reconstruction

@@ -8,12 +8,12 @@
 #include <glm/vec3.hpp>
 
 #include "io/section_table.h"
-#include "reconstruction/fill_array.h"
-#include "reconstruction/mesh.h"
-#include "reconstruction/minimum_curvature.h"
-#include "reconstruction/periodic_spline.h"
-#include "reconstruction/section_coverage.h"
-#include "reconstruction/section_frame.h"
+#include "reconstruction/parallel/fill_array.h"
+#include "reconstruction/mesh/mesh.h"
+#include "reconstruction/path/minimum_curvature.h"
+#include "reconstruction/section/periodic_spline.h"
+#include "reconstruction/section/section_coverage.h"
+#include "reconstruction/section/section_frame.h"
 
 namespace caliper3d::reconstruction {
 
@@ -40,18 +40,6 @@ struct GeometryOptions {
     // Workers that compute the path and the section frames (the result does
     // not depend on it).
     int threads = 1;
-};
-
-// One segment's meshes, finest level first.
-struct SegmentMesh {
-    std::size_t index = 0;
-    std::size_t firstRow = 0;  // rows [firstRow, lastRow], sharing lastRow with the next segment
-    std::size_t lastRow = 0;
-    double top_m = 0.0;
-    double bottom_m = 0.0;
-    glm::vec3 centre{0.0f};  // scene frame, for LOD distances
-    float radius = 0.0f;     // bounding sphere radius, scene units (metres)
-    std::vector<Mesh> levels;
 };
 
 // Two pads measure one diameter: their section is drawn and analysed as the
@@ -89,10 +77,9 @@ public:
     std::vector<NoDataInterval> noDataIntervals() const;
 
     // Radii of a row with missing or non-positive arms filled from their
-    // neighbours in the section (NaN-free; millimetres). A row without data
+    // neighbours in the section (NaN-free; millimetres) into `out` (armCount
+    // values); returns how many arms were repaired. A row without data
     // (measured() false) gets meaningless radii: callers skip it.
-    std::vector<double> repairedRadii(std::size_t row) const;
-    // The same into `out` (armCount values); returns how many arms were repaired.
     int repairRadii(std::size_t row, double* out) const;
 
     // The spline knots of a row's section: knotCount() radii at equal angles
@@ -117,17 +104,20 @@ public:
     // Bit radius of a row, millimetres (NaN when unknown).
     double bitRadius_mm(std::size_t row) const;
 
+    // The level-of-detail meshes of one segment (reconstruction/mesh/lod_levels.h builds them).
     SegmentMesh buildSegment(std::size_t segment) const;
+    // The closed spline of the full-detail level, shared by every segment.
+    const PeriodicSplineSampler& sampler() const { return m_sampler; }
 
     // Tool-axis position of a row in the analysis frame (metres), wellhead offset included.
     Ned centre(std::size_t row) const;
 
 private:
+    void markMeasuredRows();
+    void computePathAndFrames();
+    void cutSegments();
     void computeSteps(std::size_t first, std::size_t last, double inc, double azi);
     void computeFrames(std::size_t first, std::size_t last);
-    void appendRing(Mesh& mesh, std::size_t row, bool spline) const;
-    Mesh buildLevel(const std::vector<std::size_t>& rows, bool spline) const;
-    bool measuredThrough(std::size_t first, std::size_t last) const;
 
     std::shared_ptr<const io::SectionTable> m_table;
     GeometryOptions m_options;

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "io/diagnostics.h"
-#include "reconstruction/well_analysis.h"
+#include "reconstruction/analysis/well_analysis.h"
 #include "reconstruction/well_geometry.h"
 
 namespace caliper3d::reconstruction {

@@ -26,6 +26,9 @@ void aimCamera(SoCamera* camera, ViewDirection view, const SbVec3f& centre);
 // for the given aspect ratio, a light from the camera, then the scene.
 SoSeparator* makeRenderRoot(SoNode* scene, ViewDirection view, int width, int height);
 
+// The scene's background, on screen and in pictures (RGB, 0-1); the fog fades into it.
+constexpr float kBackgroundColour[3] = {0.11f, 0.13f, 0.17f};
+
 // A camera inside the hole: at `eye`, looking along `look`, with `up` up
 // (scene frame): the fly-through view, wall colours unlit with depth fog.
 struct CameraPose {
@@ -33,7 +36,8 @@ struct CameraPose {
     float look[3];
     float up[3];
     float heightAngle_rad = 0.3f;
-    float fogColour[3] = {0.11f, 0.13f, 0.17f};  // the background: far walls fade into it
+    // The background: far walls fade into it.
+    float fogColour[3] = {kBackgroundColour[0], kBackgroundColour[1], kBackgroundColour[2]};
     float fogVisibility_m = 25.0f;
 };
 SoSeparator* makeRenderRoot(SoNode* scene, const CameraPose& pose);

@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-#include "reconstruction/well_load_pipeline.h"
+#include "reconstruction/parallel/well_load_pipeline.h"
 
 class SoTimerSensor;
 class SoSensor;

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "reconstruction/mesh.h"
+#include "reconstruction/mesh/mesh.h"
 #include "reconstruction/well_geometry.h"
 
 class SoLOD;

@@ -9,7 +9,7 @@
 #include <Inventor/nodes/SoSeparator.h>
 #include <Inventor/nodes/SoShapeHints.h>
 
-#include "reconstruction/section_frame.h"
+#include "reconstruction/section/section_frame.h"
 #include "scenegraph/main_thread.h"
 #include "scenegraph/segment_node_builder.h"
 

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Fails when an #include goes up a layer (app -> scenegraph -> reconstruction -> io), or when io/
-# or reconstruction/ reach Coin, Qt or OpenGL, or scenegraph/ reaches Qt. The CMake targets cannot
+# or reconstruction/ reach Coin, Qt or OpenGL, or scenegraph/ reaches Qt, or when the geometry half
+# of reconstruction/ (section/, path/, mesh/, parallel/, synthetic/, well_geometry) reaches the
+# analysis half (analysis/) or the loading of a well, which sit above it. The CMake targets cannot
 # enforce this on their own: Debian installs Coin's headers on the default include path, and every
 # target sees the project root. Each module's tests follow the module's rule.
 #   scripts/check-layers.sh [ROOT]      check the tree at ROOT (default: this checkout)
@@ -14,6 +16,10 @@ declare -A forbidden=(
   [reconstruction]="^(scenegraph|app)/|^(${coinQtGl})"
   [scenegraph]="^app/|^(Q[A-Za-z]+($|/|\.h)|Qt[A-Za-z]*/|Inventor/Qt/)"
 )
+# Inside reconstruction/: geometry (caliper3d_geometry) below analysis (caliper3d_analysis) below
+# loading (caliper3d_reconstruction).
+geometryForbidden="^reconstruction/(analysis/|load/|well_input|well_warnings|hole_azimuth)|^(scenegraph|app)/|^(${coinQtGl})"
+geometryDirs="reconstruction/section reconstruction/path reconstruction/mesh reconstruction/parallel reconstruction/synthetic"
 
 # Prints "file:line: includes X" for each violation under ROOT; returns 1 if any.
 check() {
@@ -22,16 +28,35 @@ check() {
     for dir in "$root/$module" "$root/tests/$module"; do
       [ -d "$dir" ] || continue
       while IFS= read -r -d '' file; do
-        while IFS=: read -r line path; do
-          if [[ $path == ../* || $path =~ ${forbidden[$module]} ]]; then
-            echo "${file#"$root"/}:$line: $module may not include $path" >&2
-            status=1
-          fi
-        done < <(grep -nE '^[[:space:]]*#[[:space:]]*include[[:space:]]*[<"]' "$file" |
-                 sed -E 's/^([0-9]+):[^<"]*[<"]([^>"]+)[>"].*/\1:\2/')
+        checkFile "$root" "$file" "$module" "${forbidden[$module]}" || status=1
       done < <(find "$dir" -type f \( -name '*.h' -o -name '*.hpp' -o -name '*.cpp' \) -print0)
     done
   done
+  local dir
+  for dir in $geometryDirs; do
+    [ -d "$root/$dir" ] || continue
+    while IFS= read -r -d '' file; do
+      checkFile "$root" "$file" "${dir#reconstruction/} (geometry)" "$geometryForbidden" || status=1
+    done < <(find "$root/$dir" -type f \( -name '*.h' -o -name '*.hpp' -o -name '*.cpp' \) -print0)
+  done
+  for file in "$root"/reconstruction/well_geometry.*; do
+    [ -f "$file" ] || continue
+    checkFile "$root" "$file" "well_geometry (geometry)" "$geometryForbidden" || status=1
+  done
+  return $status
+}
+
+# Prints a violation for each include of FILE that matches the regular expression FORBIDDEN (or
+# climbs with ../); returns 1 if any.
+checkFile() {
+  local root=$1 file=$2 who=$3 forbiddenRe=$4 status=0 line path
+  while IFS=: read -r line path; do
+    if [[ $path == ../* || $path =~ $forbiddenRe ]]; then
+      echo "${file#"$root"/}:$line: $who may not include $path" >&2
+      status=1
+    fi
+  done < <(grep -nE '^[[:space:]]*#[[:space:]]*include[[:space:]]*[<"]' "$file" |
+           sed -E 's/^([0-9]+):[^<"]*[<"]([^>"]+)[>"].*/\1:\2/')
   return $status
 }
 
@@ -39,18 +64,22 @@ selfTest() {
   local tmp
   tmp=$(mktemp -d)
   trap 'rm -rf "$tmp"' RETURN
-  mkdir -p "$tmp/io" "$tmp/reconstruction" "$tmp/scenegraph" "$tmp/tests/io"
+  mkdir -p "$tmp/io" "$tmp/reconstruction/mesh" "$tmp/reconstruction/analysis" "$tmp/scenegraph" \
+    "$tmp/tests/io"
+  printf '#include "reconstruction/well_geometry.h"\n' >"$tmp/reconstruction/analysis/ok.cpp"
   printf '#include <vector>\n#include "io/a.h"\n' >"$tmp/io/ok.cpp"
-  printf '#include "reconstruction/mesh.h"\n#include <glm/vec3.hpp>\n#include <Inventor/SoDB.h>\n' \
+  printf '#include "reconstruction/mesh/mesh.h"\n#include <glm/vec3.hpp>\n#include <Inventor/SoDB.h>\n' \
     >"$tmp/scenegraph/ok.cpp"
   check "$tmp" 2>/dev/null || { echo "self-test: a clean tree was refused" >&2; return 1; }
   local bad
-  for bad in 'io/x.cpp:#include "reconstruction/mesh.h"' \
+  for bad in 'io/x.cpp:#include "reconstruction/mesh/mesh.h"' \
              'io/x.h:#include <Inventor/SoDB.h>' \
              'reconstruction/x.cpp:#include <QString>' \
              'reconstruction/x.cpp:#include <QtCore/QString>' \
              'reconstruction/x.cpp:#include "scenegraph/well_scene.h"' \
              'reconstruction/x.cpp:#include <GL/gl.h>' \
+             'reconstruction/mesh/x.cpp:#include "reconstruction/analysis/report_writer.h"' \
+             'reconstruction/well_geometry.h:#include "reconstruction/analysis/well_analysis.h"' \
              'scenegraph/x.cpp:#include "app/commands.h"' \
              'scenegraph/x.cpp:#include <Inventor/Qt/SoQt.h>' \
              'scenegraph/x.cpp:#include <QImage>' \

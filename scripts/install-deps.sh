@@ -8,14 +8,26 @@ packages=(
   libcoin-dev libsoqt520-dev qtbase5-dev libboost-dev libglm-dev
   libgtest-dev libbenchmark-dev libfast-float-dev
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
-  xvfb xauth clang libclang-rt-14-dev clang-format clang-tidy
+  xvfb xauth clang libclang-rt-14-dev clang-format clang-tidy locales
 )
 
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
-[ ${#missing[@]} -eq 0 ] && exit 0
+# A comma-decimal locale for the test that the report's numbers do not follow the locale
+# (tests/app/report_locale_test.cpp).
+generateTestLocale() {
+  locale -a 2>/dev/null | grep -qi '^de_DE\.utf-\?8$' && return 0
+  local sudo=""
+  [ "$(id -u)" -ne 0 ] && sudo="sudo"
+  $sudo localedef -i de_DE -f UTF-8 de_DE.UTF-8 || echo "warning: could not generate de_DE.UTF-8" >&2
+}
+
+if [ ${#missing[@]} -eq 0 ]; then
+  generateTestLocale
+  exit 0
+fi
 
 echo "Installing: ${missing[*]}"
 SUDO=""
@@ -23,3 +35,4 @@ SUDO=""
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+generateTestLocale

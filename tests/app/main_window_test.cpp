@@ -13,7 +13,7 @@
 
 #include "app/gui_session.h"
 #include "io/column_text_writer.h"
-#include "reconstruction/synthetic_well.h"
+#include "reconstruction/synthetic/synthetic_well.h"
 #include "test_support.h"
 
 using namespace caliper3d;

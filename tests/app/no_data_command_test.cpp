@@ -15,7 +15,7 @@
 #include "cli_run.h"
 #include "io/las_writer.h"
 #include "io/log_reader.h"
-#include "reconstruction/synthetic_well.h"
+#include "reconstruction/synthetic/synthetic_well.h"
 #include "test_support.h"
 
 using caliper3d::test::CommandRun;

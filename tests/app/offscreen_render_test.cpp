@@ -4,7 +4,7 @@
 #include <QImage>
 
 #include "app/png_output.h"
-#include "reconstruction/synthetic_well.h"
+#include "reconstruction/synthetic/synthetic_well.h"
 #include "reconstruction/well_geometry.h"
 #include "scenegraph/main_thread.h"
 #include "scenegraph/well_scene.h"

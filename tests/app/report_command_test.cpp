@@ -69,7 +69,7 @@ std::string synth(const std::string& profile, double length, double step) {
 }  // namespace
 
 TEST(ReportCommandTest, KeyseatProfileIsClassedOnItsIntervalWithZones) {
-    // synth profile "keyseat" (reconstruction/synthetic_well.h): over 0.6-0.8 L
+    // synth profile "keyseat" (reconstruction/synthetic/synthetic_well.h): over 0.6-0.8 L
     // an ellipse with its major axis on the high side of a build section.
     const std::string log = synth("keyseat", 300.0, 0.25);
     const auto csv = scratch("report_keyseat.csv");

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "io/column_text_writer.h"
-#include "reconstruction/synthetic_well.h"
+#include "reconstruction/synthetic/synthetic_well.h"
 #include "scenegraph/main_thread.h"
 #include "test_support.h"
 

@@ -10,7 +10,7 @@
 
 #include "io/las_writer.h"
 #include "io/log_reader.h"
-#include "reconstruction/well_analysis.h"
+#include "reconstruction/analysis/well_analysis.h"
 #include "reconstruction/well_input.h"
 #include "test_support.h"
 

@@ -11,10 +11,10 @@
 
 #include <boost/math/constants/constants.hpp>
 
-#include "reconstruction/report_writer.h"
-#include "reconstruction/section_coverage.h"
-#include "reconstruction/synthetic_well.h"
-#include "reconstruction/well_analysis.h"
+#include "reconstruction/analysis/report_writer.h"
+#include "reconstruction/section/section_coverage.h"
+#include "reconstruction/synthetic/synthetic_well.h"
+#include "reconstruction/analysis/well_analysis.h"
 #include "reconstruction/well_geometry.h"
 
 using namespace caliper3d::reconstruction;

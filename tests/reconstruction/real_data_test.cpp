@@ -8,8 +8,8 @@
 #include <gtest/gtest.h>
 
 #include "io/log_reader.h"
-#include "reconstruction/section_analysis.h"
-#include "reconstruction/well_analysis.h"
+#include "reconstruction/section/section_analysis.h"
+#include "reconstruction/analysis/well_analysis.h"
 #include "test_support.h"
 
 using namespace caliper3d;

@@ -6,8 +6,8 @@
 
 #include <gtest/gtest.h>
 
-#include "reconstruction/survey_interpolation.h"
-#include "reconstruction/synthetic_well.h"
+#include "reconstruction/path/survey_interpolation.h"
+#include "reconstruction/synthetic/synthetic_well.h"
 #include "reconstruction/well_geometry.h"
 
 namespace caliper3d::reconstruction {

@@ -5,10 +5,12 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
+#include "support/reconstruction_support.h"
 
-#include "reconstruction/synthetic_well.h"
+#include "reconstruction/synthetic/synthetic_well.h"
 
 using namespace caliper3d::reconstruction;
 
@@ -61,8 +63,8 @@ TEST(WellGeometryTest, MissingArmIsFilledFromNeighbours) {
     table.radii(1)[2] = std::nan("");
     table.radii(2)[0] = -1.0;
     WellGeometry g(std::make_shared<const caliper3d::io::SectionTable>(table), GeometryOptions{});
-    for (double r : g.repairedRadii(1)) EXPECT_NEAR(r, 215.9 / 2, 1e-9);
-    for (double r : g.repairedRadii(2)) EXPECT_NEAR(r, 215.9 / 2, 1e-9);
+    for (double r : repairedRadii(g, 1)) EXPECT_NEAR(r, 215.9 / 2, 1e-9);
+    for (double r : repairedRadii(g, 2)) EXPECT_NEAR(r, 215.9 / 2, 1e-9);
 }
 
 TEST(WellGeometryTest, RejectsDepthsThatDoNotIncrease) {
@@ -81,7 +83,7 @@ TEST(WellGeometryTest, RadialExaggerationScalesTheDrawnRadiusOnly) {
     const Mesh& m = segment.levels[0];
     for (const glm::vec3& p : m.positions)
         EXPECT_NEAR(std::hypot(p.x, p.z), 20.0f * 0.21590f / 2, 1e-4f);
-    for (double r : g.repairedRadii(3)) EXPECT_NEAR(r, 215.9 / 2, 1e-9);  // the data stay true
+    for (double r : repairedRadii(g, 3)) EXPECT_NEAR(r, 215.9 / 2, 1e-9);  // the data stay true
     EXPECT_NEAR(m.positions.back().y, -10.0f, 1e-4f);                     // and so does the path
 }
 

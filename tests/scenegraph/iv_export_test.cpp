@@ -6,7 +6,7 @@
 #include <Inventor/nodes/SoSeparator.h>
 
 #include "coin_fixture.h"
-#include "reconstruction/synthetic_well.h"
+#include "reconstruction/synthetic/synthetic_well.h"
 #include "reconstruction/well_geometry.h"
 #include "scenegraph/node_ref.h"
 #include "scenegraph/well_scene.h"

@@ -9,7 +9,7 @@
 #include <Inventor/sensors/SoSensorManager.h>
 
 #include "coin_fixture.h"
-#include "reconstruction/synthetic_well.h"
+#include "reconstruction/synthetic/synthetic_well.h"
 #include "scenegraph/iv_export.h"
 #include "scenegraph/well_scene.h"
 

@@ -7,7 +7,7 @@
 #include <Inventor/nodes/SoVertexProperty.h>
 
 #include "coin_fixture.h"
-#include "reconstruction/synthetic_well.h"
+#include "reconstruction/synthetic/synthetic_well.h"
 #include "scenegraph/node_ref.h"
 
 using namespace caliper3d;

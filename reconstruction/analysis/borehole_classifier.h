@@ -1,0 +1,78 @@
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <string_view>
+#include <vector>
+
+#include "reconstruction/section/section_coverage.h"
+
+namespace caliper3d::reconstruction {
+
+// NoData: too few valid arms to define the section (never a shape class;
+// WellAnalysis sets it, and it is left out of zones, statistics and volumes).
+enum class BoreholeClass : unsigned char {
+    InGauge,
+    Undergauge,
+    Washout,
+    Breakout,
+    Keyseat,
+    NoData
+};
+
+// "in_gauge", "undergauge", "washout", "breakout", "keyseat", "no_data": the report's names.
+std::string_view className(BoreholeClass c);
+
+// Every threshold of the classification (docs/analysis.md, "Classes"), with the
+// published defaults: Plumb & Hickman 1985 (JGR 90, B7) for the elongation
+// and bit-size tests; Reinecker, Tingay & Mueller 2003 (WSM guidelines) for
+// zone length and tool rotation; Zoback, Reservoir Geomechanics (2007) pp.
+// 184-185 for the key-seat test; JewelSuite caliper-filter defaults for the
+// millimetre tolerances.
+struct ClassificationRules {
+    double gaugeTolerance_mm = 6.0;      // in_gauge: dmin and dmax within this of bit size
+    double undergauge_mm = 6.0;          // undergauge: dmax < bit - this
+    double washout_mm = 12.7;            // washout: dmin > bit + this (0.5 in)
+    double elongation_mm = 6.0;          // breakout/keyseat: dmax - dmin >= this
+    double breakoutMinGauge_mm = 12.7;   // ... with dmin within this of bit size
+    double minBreakoutLength_m = 1.0;    // a breakout zone is at least this long
+    double maxToolRotation_deg = 45.0;   // ... and the tool turns less than this
+    double rotationWindow_m = 5.0;       //     per this length
+    double deviatedInclination_deg = 5.0;  // above this the high-side test applies
+    double highSideTolerance_deg = 15.0;   // major axis within this of high/low side: keyseat
+    // Below this dmax - dmin the section is round: it has no major axis, and its
+    // major_azimuth_deg and major_from_high_side_deg are empty (a fit through six
+    // pads of a round hole 15 mm off the tool gives 0.13 mm of false elongation).
+    double axisMinElongation_mm = 0.5;
+    // A section with fewer valid arms than this fraction of its arms (at least
+    // 2) has no data (section_coverage.h, docs/analysis.md).
+    double minValidArmFraction = kDefaultMinValidArmFraction;
+};
+
+// What the classifier needs of one section.
+struct ClassifierInput {
+    double md_m = 0.0;
+    double dmin_mm = 0.0;
+    double dmax_mm = 0.0;
+    double bit_mm = 0.0;              // NaN: unknown (the section is in_gauge)
+    double inc_deg = 0.0;
+    double majorFromHighSide_deg = 0.0;  // major axis angle from the high side
+    double toolAzimuth_deg = 0.0;     // pad-1 azimuth (or RB), NaN when unknown
+};
+
+// Class of one section from its shape alone; breakouts are only candidates
+// here (see applyBreakoutZoneRules).
+BoreholeClass classifyShape(const ClassifierInput& s, const ClassificationRules& rules);
+
+// The zone rules of breakouts over shape classes already in `classes` (ordered by depth): a
+// run of breakout candidates shorter than minBreakoutLength_m, or over which the tool turns
+// by maxToolRotation_deg or more within any rotationWindow_m (pro rata for shorter runs), is
+// not a breakout: its sections become in_gauge. md_m(i) and
+// toolAzimuth_deg(i) give section i's measured depth and tool azimuth (they
+// are asked only for breakout candidates and their neighbours).
+void applyBreakoutZoneRules(std::vector<BoreholeClass>& classes,
+                            const std::function<double(std::size_t)>& md_m,
+                            const std::function<double(std::size_t)>& toolAzimuth_deg,
+                            const ClassificationRules& rules);
+
+}  // namespace caliper3d::reconstruction

@@ -1,0 +1,253 @@
+#include "reconstruction/analysis/report_writer.h"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+#include <vector>
+
+#include "io/las_writer.h"
+
+namespace caliper3d::reconstruction {
+
+namespace {
+
+// Every number goes through std::to_chars, which writes a decimal point whatever the locale:
+// printf follows LC_NUMERIC, and a Qt application sets it from the environment on Unix (a
+// German desktop would get "215,90" in a comma-separated file). The digits are printf's "%.*f".
+std::string fixed(double v, int decimals) {
+    char buf[400];  // the longest double in fixed notation, 309 digits, plus decimals
+    return std::string(
+        buf, std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals).ptr);
+}
+
+// A field of the CSV: empty when undefined, never "-0.000".
+void number(std::string& line, double v, int decimals) {
+    if (!std::isfinite(v)) return;
+    line += fixed(v == 0.0 ? 0.0 : v, decimals);
+}
+
+// printf's "%+.1f".
+std::string signedFixed(double v, int decimals) {
+    return (std::signbit(v) ? "" : "+") + fixed(v, decimals);
+}
+
+std::string breakoutSummary(const WellAnalysis& a) {
+    const BreakoutSummary& b = a.breakouts;
+    // "none" would read as a finding: one diameter per section cannot show a breakout.
+    if (a.twoPads)
+        return "breakouts: not seen by a two-pad tool (one diameter per section), WSM quality E\n";
+    if (b.zoneCount == 0) return "breakouts: none, WSM quality E\n";
+    return "breakouts: " + std::to_string(b.zoneCount) + " zone" + (b.zoneCount == 1 ? "" : "s") +
+           ", " + fixed(b.combinedLength_m, 2) + " m, mean azimuth " + fixed(b.meanAzimuth_deg, 1) +
+           " deg, circular SD " + fixed(b.circularSd_deg, 1) + " deg, SHmax " +
+           fixed(b.shmaxAzimuth_deg, 1) + " deg, WSM quality " + b.quality + "\n";
+}
+
+std::string volumeSummary(const HoleVolume& v) {
+    const double excessPercent =
+        v.gaugeHole_m3 > 0.0 ? 100.0 * (v.hole_m3 - v.gaugeHole_m3) / v.gaugeHole_m3 : 0.0;
+    std::string s = "hole volume " + fixed(v.top_m, 2) + "-" + fixed(v.bottom_m, 2) +
+                    " m: " + fixed(v.hole_m3, 4) + " m3 (bit size " + fixed(v.gaugeHole_m3, 4) +
+                    " m3, " + signedFixed(excessPercent, 1) + " %)\n";
+    if (!v.uncovered.empty()) {
+        // The volumes above leave these out: say where, so no one reads them as the whole hole.
+        s += "hole volume not covered (no caliper data):";
+        for (std::size_t k = 0; k < v.uncovered.size(); ++k)
+            s += (k ? ", " : " ") + fixed(v.uncovered[k].first, 2) + "-" +
+                 fixed(v.uncovered[k].second, 2) + " m";
+        s += " (" + fixed(v.uncovered_m, 2) + " m in all; no volume figure includes it)\n";
+    }
+    if (v.casingOd_mm > 0.0 || v.excess > 0.0)
+        s += "annulus outside " + fixed(v.casingOd_mm, 1) + " mm casing " + fixed(v.annulus_m3, 4) +
+             " m3 (bit size " + fixed(v.gaugeAnnulus_m3, 4) + " m3), cement with " +
+             fixed(100.0 * v.excess, 0) + " % excess " + fixed(v.cement_m3, 4) + " m3 (bit size " +
+             fixed(v.gaugeCement_m3, 4) + " m3)\n";
+    return s;
+}
+
+}  // namespace
+
+std::vector<std::size_t> reportedSections(const WellAnalysis& a, const ReportOptions& options) {
+    const FillArray<SectionResult>& s = a.sections;
+    const double step = options.step_m;
+    std::vector<std::size_t> rows;
+    if (s.empty()) return rows;
+    if (!(step > 0.0)) {
+        rows.resize(s.size());
+        for (std::size_t i = 0; i < s.size(); ++i) rows[i] = i;
+        return rows;
+    }
+    const double top = s.front().md_m;
+    std::size_t j = 0;
+    for (std::size_t k = 0;; ++k) {
+        const double target = top + step * static_cast<double>(k);
+        if (target > s.back().md_m + 1e-9) break;
+        while (j + 1 < s.size() && std::abs(s[j + 1].md_m - target) <= std::abs(s[j].md_m - target))
+            ++j;
+        if (rows.empty() || rows.back() != j) rows.push_back(j);
+    }
+    return rows;
+}
+
+void writeSectionReport(std::ostream& out, const WellAnalysis& a, const ReportOptions& options) {
+    out << "md_m,tvd_m,north_m,east_m,inc_deg,azi_deg,dmin_mm,dmax_mm,ellipticity,major_azimuth_"
+           "deg,"
+           "area_mm2,centre_offset_mm,class,dls_deg_per_30m,bit_mm,equivalent_diameter_mm,"
+           "major_from_high_side_deg,centre_offset_azimuth_deg,repaired_arms"
+        << (options.wellhead ? ",easting_m,northing_m,tvdss_m\n" : "\n");
+    std::string line;
+    for (std::size_t i : reportedSections(a, options)) {
+        const SectionResult& r = a.sections[i];
+        line.clear();
+        const double fields[] = {
+            r.md_m,    r.tvd_m,   r.north_m,     r.east_m,           r.inc_deg,  r.azi_deg,
+            r.dmin_mm, r.dmax_mm, r.ellipticity, r.majorAzimuth_deg, r.area_mm2, r.centreOffset_mm};
+        const int decimals[] = {4, 4, 4, 4, 3, 3, 2, 2, 4, 2, 1, 2};
+        for (int k = 0; k < 12; ++k) {
+            number(line, fields[k], decimals[k]);
+            line += ',';
+        }
+        line += className(r.cls);
+        const double extra[] = {r.dls_degPer30m, r.bit_mm, r.equivalentDiameter_mm,
+                                r.majorFromHighSide_deg, r.centreOffsetAzimuth_deg};
+        const int extraDecimals[] = {3, 2, 2, 2, 2};
+        for (int k = 0; k < 5; ++k) {
+            line += ',';
+            number(line, extra[k], extraDecimals[k]);
+        }
+        line += ',';
+        if (r.cls != BoreholeClass::NoData) line += std::to_string(r.repairedArms);
+        if (const auto& w = options.wellhead) {
+            const double map[] = {w->easting_m + r.east_m, w->northing_m + r.north_m,
+                                  r.tvd_m - w->elevation_m};
+            for (double v : map) {
+                line += ',';
+                number(line, v, 4);
+            }
+        }
+        line += '\n';
+        out << line;
+    }
+}
+
+void writeZoneReport(std::ostream& out, const WellAnalysis& a) {
+    out << "kind,top_m,bottom_m,length_m,mean_azimuth_deg,circular_sd_deg,mean_dmax_mm,mean_dmin_"
+           "mm,sections\n";
+    std::string line;
+    for (const Zone& z : a.zones) {
+        line.assign(className(z.kind));
+        const double fields[] = {z.top_m,          z.bottom_m,    z.length_m,   z.meanAzimuth_deg,
+                                 z.circularSd_deg, z.meanDmax_mm, z.meanDmin_mm};
+        const int decimals[] = {4, 4, 4, 2, 2, 2, 2};
+        for (int k = 0; k < 7; ++k) {
+            line += ',';
+            number(line, fields[k], decimals[k]);
+        }
+        line += ',' + std::to_string(z.lastSection - z.firstSection + 1) + '\n';
+        out << line;
+    }
+}
+
+std::string formatAnalysisSummary(const WellAnalysis& a) {
+    std::string s = breakoutSummary(a) + volumeSummary(a.volume);
+    if (a.padAzimuthOffset.samples > 0)
+        s += "P1AZ - (HAZI+RB): mean " + fixed(a.padAzimuthOffset.mean_deg, 2) +
+             " deg, circular SD " + fixed(a.padAzimuthOffset.sd_deg, 2) + " deg over " +
+             std::to_string(a.padAzimuthOffset.samples) + " sections\n";
+    return s;
+}
+
+void writeSectionReport(const std::string& path, const WellAnalysis& a,
+                        const ReportOptions& options) {
+    std::ofstream out(path, std::ios::binary);
+    if (!out) throw std::runtime_error(path + ": cannot open for writing");
+    writeSectionReport(out, a, options);
+    if (!out) throw std::runtime_error(path + ": write failed");
+}
+
+void writeAnalysisLas(std::ostream& out, const WellAnalysis& a, const ReportOptions& options,
+                      const std::string& wellName) {
+    const std::vector<std::size_t> rows = reportedSections(a, options);
+    struct Curve {
+        const char* mnemonic;
+        const char* unit;
+        const char* description;
+        int decimals;  // as the CSV report prints them
+        double (*value)(const SectionResult&);
+    };
+    static const Curve kCurves[] = {
+        {"DEPT", "M", "measured depth", 4, [](const SectionResult& r) { return r.md_m; }},
+        {"TVD", "M", "true vertical depth below the wellhead", 4,
+         [](const SectionResult& r) { return r.tvd_m; }},
+        {"NORTH", "M", "north of the wellhead", 4,
+         [](const SectionResult& r) { return r.north_m; }},
+        {"EAST", "M", "east of the wellhead", 4, [](const SectionResult& r) { return r.east_m; }},
+        {"INC", "DEG", "hole inclination", 3, [](const SectionResult& r) { return r.inc_deg; }},
+        {"AZI", "DEG", "hole azimuth", 3, [](const SectionResult& r) { return r.azi_deg; }},
+        {"DLS", "DEG/30M", "dogleg severity", 3,
+         [](const SectionResult& r) { return r.dls_degPer30m; }},
+        {"BS", "MM", "bit size used as gauge", 2, [](const SectionResult& r) { return r.bit_mm; }},
+        {"DMIN", "MM", "minor axis of the fitted ellipse", 2,
+         [](const SectionResult& r) { return r.dmin_mm; }},
+        {"DMAX", "MM", "major axis of the fitted ellipse", 2,
+         [](const SectionResult& r) { return r.dmax_mm; }},
+        {"ELLIP", "", "ellipticity dmax/dmin", 4,
+         [](const SectionResult& r) { return r.ellipticity; }},
+        {"MAJAZ", "DEG", "azimuth of the major axis, 0-180", 2,
+         [](const SectionResult& r) { return r.majorAzimuth_deg; }},
+        {"MAJHS", "DEG", "major axis clockwise from the high side, 0-180", 2,
+         [](const SectionResult& r) { return r.majorFromHighSide_deg; }},
+        {"AREA", "MM2", "section area", 1, [](const SectionResult& r) { return r.area_mm2; }},
+        {"DEQ", "MM", "diameter of the circle of equal area", 2,
+         [](const SectionResult& r) { return r.equivalentDiameter_mm; }},
+        {"CENOFF", "MM", "tool axis to hole centre", 2,
+         [](const SectionResult& r) { return r.centreOffset_mm; }},
+        {"CENAZ", "DEG", "azimuth from tool axis to hole centre", 2,
+         [](const SectionResult& r) { return r.centreOffsetAzimuth_deg; }},
+        {"CLASS", "", "0 in_gauge 1 undergauge 2 washout 3 breakout 4 keyseat; null no_data", 0,
+         [](const SectionResult& r) {
+             return r.cls == BoreholeClass::NoData ? io::kNaN : static_cast<double>(r.cls);
+         }},
+        {"REPAIRED", "", "arms interpolated on this section", 0,
+         [](const SectionResult& r) {
+             return r.cls == BoreholeClass::NoData ? io::kNaN : static_cast<double>(r.repairedArms);
+         }},
+    };
+    // The report's rows may be a subset (--step): gather each curve once.
+    std::vector<std::vector<double>> values;
+    std::vector<io::LasColumn> columns;
+    values.reserve(std::size(kCurves));
+    for (const Curve& c : kCurves) {
+        std::vector<double>& v = values.emplace_back();
+        v.reserve(rows.size());
+        for (std::size_t i : rows) v.push_back(c.value(a.sections[i]));
+        columns.push_back({c.mnemonic, c.unit, c.description, v.data(), 1, c.decimals});
+    }
+    io::LasWriteOptions las;
+    las.wellName = wellName;
+    std::string other = "Computed by caliper3d from the caliper log. CLASS codes:";
+    for (int k = 0; k <= static_cast<int>(BoreholeClass::Keyseat); ++k)
+        other +=
+            " " + std::to_string(k) + " " + std::string(className(static_cast<BoreholeClass>(k)));
+    other += "; a section without caliper data (no_data) has CLASS and every measured curve null.";
+    las.other = other + "\n" + formatAnalysisSummary(a);
+    io::writeLasColumns(out, rows.size(), columns, las);
+}
+
+void writeAnalysisLas(const std::string& path, const WellAnalysis& a, const ReportOptions& options,
+                      const std::string& wellName) {
+    std::ofstream out(path, std::ios::binary);
+    if (!out) throw std::runtime_error(path + ": cannot open for writing");
+    writeAnalysisLas(out, a, options, wellName);
+    if (!out) throw std::runtime_error(path + ": write failed");
+}
+
+void writeZoneReport(const std::string& path, const WellAnalysis& a) {
+    std::ofstream out(path, std::ios::binary);
+    if (!out) throw std::runtime_error(path + ": cannot open for writing");
+    writeZoneReport(out, a);
+    if (!out) throw std::runtime_error(path + ": write failed");
+}
+
+}  // namespace caliper3d::reconstruction

@@ -1,0 +1,42 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace caliper3d::reconstruction {
+
+// Plain triangle-strip mesh in the scene frame (floats, relative to the local
+// origin). Strips are listed in `stripIndices`, each ended by -1, the layout
+// of SoIndexedTriangleStripSet::coordIndex.
+struct Mesh {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;           // one per position
+    std::vector<std::uint32_t> colours;       // optional, one per position, 0xRRGGBBAA
+    std::vector<std::int32_t> stripIndices;
+
+    std::size_t triangleCount() const;
+    std::size_t stripCount() const;
+};
+
+// Appends the closed strip that joins ring A (first vertex firstA) to ring B
+// (firstB), each of `points` vertices, in the reference's order
+// A0 B0 A1 B1 ... A(m-1) B(m-1) A0 B0, then -1: 2*points triangles.
+void appendClosedStrip(std::vector<std::int32_t>& indices, std::int32_t firstA,
+                       std::int32_t firstB, int points);
+
+// One segment's meshes, finest level first.
+struct SegmentMesh {
+    std::size_t index = 0;
+    std::size_t firstRow = 0;  // rows [firstRow, lastRow], sharing lastRow with the next segment
+    std::size_t lastRow = 0;
+    double top_m = 0.0;
+    double bottom_m = 0.0;
+    glm::vec3 centre{0.0f};  // scene frame, for LOD distances
+    float radius = 0.0f;     // bounding sphere radius, scene units (metres)
+    std::vector<Mesh> levels;
+};
+
+}  // namespace caliper3d::reconstruction
