@@ -4,8 +4,20 @@
 
 namespace caliper3d::reconstruction {
 
+WellLoadPipeline::WellLoadPipeline(Loader loader) : m_loader(std::move(loader)) {}
+
+WellLoadPipeline::WellLoadPipeline(WellSource source, LoadOptions options, Wellhead origin)
+    : WellLoadPipeline([source = std::move(source), options = std::move(options), origin] {
+          return loadWell(source, options, origin);
+      }) {}
+
 WellLoadPipeline::WellLoadPipeline(Reader reader, GeometryOptions options)
-    : m_reader(std::move(reader)), m_options(options) {}
+    : WellLoadPipeline([reader = std::move(reader), options = std::move(options)] {
+          LoadedWell well;
+          well.table = std::make_shared<const io::SectionTable>(reader());
+          well.geometry = std::make_shared<const WellGeometry>(well.table, options);
+          return well;
+      }) {}
 
 WellLoadPipeline::~WellLoadPipeline() {
     cancel();
@@ -18,9 +30,9 @@ void WellLoadPipeline::start() {
 
 void WellLoadPipeline::run() {
     try {
-        auto table = std::make_shared<const io::SectionTable>(m_reader());
-        auto geometry = std::make_shared<const WellGeometry>(table, m_options);
-        m_events.push(LoadStarted{geometry});
+        LoadedWell well = m_loader();
+        const std::shared_ptr<const WellGeometry> geometry = well.geometry;
+        m_events.push(LoadStarted{geometry, std::move(well.diagnostics)});
         std::size_t built = 0;
         for (std::size_t s = 0; s < geometry->segmentCount(); ++s) {
             if (m_cancelled.load()) break;
