@@ -33,7 +33,7 @@ int runExport(const QStringList& args) {
         if (!endsWith(".iv") && !gzipName)
             throw UsageError("caliper3d export: the output must end in .iv or .iv.gz, got '" +
                              out + "'");
-        const InputOptions options = inputOptionsFrom(p);
+        const LoadOptions options = inputOptionsFrom(p);
 
         scenegraph::initCoin();
         const auto start = std::chrono::steady_clock::now();

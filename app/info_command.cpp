@@ -7,6 +7,7 @@
 #include "io/survey_reader.h"
 #include "reconstruction/section/section_coverage.h"
 #include "reconstruction/path/survey_interpolation.h"
+#include "reconstruction/load/load_well.h"
 
 namespace caliper3d::app {
 
@@ -21,12 +22,13 @@ int runInfo(const QStringList& args) {
                            {"points", "segment-length", "exaggerate", "steep-inclination",
                             "tool-reach"},
                            "info describes the file as read; these shape the 3D reconstruction");
-        const InputOptions options = inputOptionsFrom(verb.parser());
+        const LoadOptions options = inputOptionsFrom(verb.parser());
         int failures = 0;
         for (const std::string& file : verb.positional()) {
             try {
                 // Rows with a section shape, by the rule the other verbs draw and analyse with.
-                const reconstruction::GeometryOptions geometry = geometryOptions(options);
+                const reconstruction::GeometryOptions geometry =
+                    reconstruction::geometryOptions(options);
                 std::size_t measured = 0;
                 int needed = 0, arms = 0;
                 const io::LogInfo info =
@@ -54,10 +56,8 @@ int runInfo(const QStringList& args) {
                 }
                 if (info.survey) {
                     // The positions a survey writes, checked against minimum curvature.
-                    io::SurveyReadOptions survey;
-                    if (options.read.depthUnit) survey.depthUnit = options.read.depthUnit;
                     const std::string check = reconstruction::describeSurveyPositionCheck(
-                        reconstruction::checkSurveyPositions(io::readSurvey(file, survey)));
+                        reconstruction::readCheckedSurvey(file, options.read, nullptr).check);
                     if (!check.empty()) std::printf("check:     %s\n", check.c_str());
                 }
             } catch (const std::exception& e) {

@@ -4,10 +4,7 @@
 #include <cstdio>
 
 #include "io/number_parsing.h"
-#include "io/survey_reader.h"
 #include "io/units.h"
-#include "reconstruction/path/survey_interpolation.h"
-#include "reconstruction/well_input.h"
 
 namespace caliper3d::app {
 
@@ -61,8 +58,8 @@ io::LengthUnit unit(const QCommandLineParser& parser, const char* name) {
 }
 }  // namespace
 
-InputOptions inputOptionsFrom(const QCommandLineParser& parser) {
-    InputOptions o;
+LoadOptions inputOptionsFrom(const QCommandLineParser& parser) {
+    LoadOptions o;
     const double arms = number(parser, "arms");
     if (arms < io::kMinArms || arms > io::kMaxArms || arms != std::floor(arms))
         throw UsageError("--arms: expected a whole number from " + std::to_string(io::kMinArms) +
@@ -198,68 +195,24 @@ std::vector<WellSource> wellSourcesFrom(const QCommandLineParser& parser,
     return out;
 }
 
-reconstruction::GeometryOptions geometryOptions(const InputOptions& options) {
-    reconstruction::GeometryOptions g;
-    g.splinePoints = options.splinePoints;
-    g.segmentLength_m = options.segmentLength_m;
-    g.radialExaggeration = options.radialExaggeration;
-    g.steepInclination_deg = options.steepInclination_deg;
-    g.maxArmRadius_mm = options.toolReach_mm;
-    return g;
-}
-
-reconstruction::GeometryOptions geometryOptions(const InputOptions& options, const WellSource& well,
-                                                const reconstruction::Wellhead& origin,
-                                                io::Diagnostics* diagnostics) {
-    reconstruction::GeometryOptions g = geometryOptions(options);
-    if (!well.surveyPath.empty()) {
-        io::SurveyReadOptions survey;
-        if (options.read.depthUnit) survey.depthUnit = options.read.depthUnit;
-        const io::SurveyTable table = io::readSurvey(well.surveyPath, survey, diagnostics);
-        g.survey = reconstruction::surveyStations(table);
-        const reconstruction::SurveyPositionCheck check =
-            reconstruction::checkSurveyPositions(table);
-        if (diagnostics &&
-            (check.maxTvdDifference_m > reconstruction::kSurveyPositionTolerance_m ||
-             check.maxHorizontalDifference_m > reconstruction::kSurveyPositionTolerance_m))
-            diagnostics->warn(
-                well.surveyPath, table.headerLine,
-                "the positions the file writes disagree with minimum curvature from its own "
-                "MD, inclination and azimuth: " +
-                    reconstruction::describeSurveyPositionCheck(check) +
-                    " (the path drawn is the minimum-curvature one)");
+std::string formatWarnings(const io::Diagnostics& diagnostics) {
+    std::string out;
+    char count[96];
+    for (const io::Warning& w : diagnostics.warnings) {
+        out += w.file;
+        if (w.line > 0) out += ":" + std::to_string(w.line);  // none: about the whole well
+        out += ": warning: " + w.message + "\n";
     }
-    if (well.wellhead) g.wellheadOffset = reconstruction::wellheadOffset(*well.wellhead, origin);
-    return g;
-}
-
-reconstruction::Wellhead sceneOrigin(const std::vector<WellSource>& wells) {
-    return !wells.empty() && wells.front().wellhead ? *wells.front().wellhead
-                                                    : reconstruction::Wellhead{};
+    if (diagnostics.warningCount > diagnostics.warnings.size()) {
+        std::snprintf(count, sizeof count, "... and %zu more warnings\n",
+                      diagnostics.warningCount - diagnostics.warnings.size());
+        out += count;
+    }
+    return out;
 }
 
 void printWarnings(const io::Diagnostics& diagnostics) {
-    for (const io::Warning& w : diagnostics.warnings) {
-        if (w.line > 0)
-            std::fprintf(stderr, "%s:%zu: warning: %s\n", w.file.c_str(), w.line,
-                         w.message.c_str());
-        else  // about the whole well, not one line of it
-            std::fprintf(stderr, "%s: warning: %s\n", w.file.c_str(), w.message.c_str());
-    }
-    if (diagnostics.warningCount > diagnostics.warnings.size())
-        std::fprintf(stderr, "... and %zu more warnings\n",
-                     diagnostics.warningCount - diagnostics.warnings.size());
-}
-
-io::SectionTable readWellFile(const WellSource& well, const InputOptions& options,
-                              io::Diagnostics* diagnostics) {
-    return reconstruction::loadWellTable(well.path, options.read, !well.surveyPath.empty(),
-                                         diagnostics);
-}
-
-io::SectionTable readWellFile(const std::string& path, const InputOptions& options,
-                              io::Diagnostics* diagnostics) {
-    return readWellFile(WellSource{path, {}, {}}, options, diagnostics);
+    std::fputs(formatWarnings(diagnostics).c_str(), stderr);
 }
 
 }  // namespace caliper3d::app

@@ -13,27 +13,14 @@
 #include "io/section_table.h"
 #include "reconstruction/well_geometry.h"
 #include "reconstruction/path/wellhead.h"
+#include "reconstruction/load/load_well.h"
 
 namespace caliper3d::app {
 
-// Options shared by every verb that reads a log (design section 8, "common").
-struct InputOptions {
-    io::ReadOptions read;
-    int splinePoints = 48;
-    double segmentLength_m = 10.0;
-    double radialExaggeration = 1.0;
-    double steepInclination_deg = 15.0;  // above this, arm 1 comes from RB when present
-    double toolReach_mm = 1.0e9;         // arm readings beyond this are repaired
-};
-
-// One well to read: its log, and optionally its deviation survey (replacing
-// the log's DEVI/HAZI for the path) and its wellhead (placing it beside the
-// other wells of a scene).
-struct WellSource {
-    std::string path;
-    std::string surveyPath;  // empty: the path comes from the log's own DEVI/HAZI
-    std::optional<reconstruction::Wellhead> wellhead;
-};
+// The command line fills the library's load settings (reconstruction/load):
+// this file only parses options into them.
+using reconstruction::LoadOptions;
+using reconstruction::WellSource;
 
 // Thrown for bad command-line usage (exit status 2).
 struct UsageError : std::runtime_error {
@@ -42,7 +29,7 @@ struct UsageError : std::runtime_error {
 
 void addInputOptions(QCommandLineParser& parser);
 // Throws UsageError on a malformed value.
-InputOptions inputOptionsFrom(const QCommandLineParser& parser);
+LoadOptions inputOptionsFrom(const QCommandLineParser& parser);
 // Throws UsageError when any of `names` was given to `verb`, which cannot use
 // it (`why` says so: an option that is silently ignored misleads).
 void rejectInapplicable(const QCommandLineParser& parser, const std::string& verb,
@@ -61,29 +48,10 @@ std::vector<WellSource> wellSourcesFrom(const QCommandLineParser& parser,
 // "E,N,ELEV" in metres; throws UsageError.
 reconstruction::Wellhead parseWellhead(const std::string& text);
 
-// Geometry options of a plain well (no survey, at the scene origin).
-reconstruction::GeometryOptions geometryOptions(const InputOptions& options);
-// Geometry options of one well of a scene whose origin is the wellhead
-// `origin`: reads the well's survey (throws io::ParseError naming the survey
-// file and line) and offsets it by its wellhead. The survey's warnings, and one
-// when the positions it writes disagree with minimum curvature, go to `diagnostics`.
-reconstruction::GeometryOptions geometryOptions(const InputOptions& options, const WellSource& well,
-                                                const reconstruction::Wellhead& origin,
-                                                io::Diagnostics* diagnostics = nullptr);
-// The scene origin: the first well's wellhead (zero when none is given).
-reconstruction::Wellhead sceneOrigin(const std::vector<WellSource>& wells);
-
-// Prints a file's warnings on stderr ("file:line: warning: ..."), and how
-// many more there were than the diagnostics kept.
+// A file's warnings, one a line ("file:line: warning: ..."; no line for one
+// about the whole well), and how many more there were than the diagnostics kept.
+std::string formatWarnings(const io::Diagnostics& diagnostics);
+// Prints formatWarnings on stderr.
 void printWarnings(const io::Diagnostics& diagnostics);
-
-// Reads a well's caliper log in any supported format and settles its hole
-// azimuth (reconstruction::loadWellTable; a --survey gives the azimuth).
-// Throws io::ParseError (file, line, what was expected) on bad input.
-io::SectionTable readWellFile(const WellSource& well, const InputOptions& options,
-                              io::Diagnostics* diagnostics);
-// The same for a log without a survey.
-io::SectionTable readWellFile(const std::string& path, const InputOptions& options,
-                              io::Diagnostics* diagnostics);
 
 }  // namespace caliper3d::app

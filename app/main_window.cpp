@@ -1,20 +1,26 @@
 #include "app/main_window.h"
 
 #include <QAction>
+#include <QDialog>
+#include <QDialogButtonBox>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QFontDatabase>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPlainTextEdit>
+#include <QPushButton>
 #include <QStatusBar>
 #include <QTimer>
+#include <QVBoxLayout>
 
 #include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
 #include <Inventor/actions/SoGetBoundingBoxAction.h>
 #include <Inventor/nodes/SoCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
 
-#include "reconstruction/parallel/well_load_pipeline.h"
+#include "reconstruction/load/well_load_pipeline.h"
 #include "scenegraph/camera_setup.h"
 #include "scenegraph/iv_export.h"
 #include "scenegraph/segment_feeder.h"
@@ -35,6 +41,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_viewer->setSceneGraph(m_sceneRoot);
     m_status = new QLabel("No well loaded", this);
     statusBar()->addWidget(m_status, 1);
+    m_warningsButton = new QPushButton(this);
+    m_warningsButton->setFlat(true);
+    m_warningsButton->setToolTip("Show the warnings met while loading the wells");
+    m_warningsButton->hide();
+    connect(m_warningsButton, &QPushButton::clicked, this, &MainWindow::showWarnings);
+    statusBar()->addPermanentWidget(m_warningsButton);
     buildMenus();
 }
 
@@ -55,6 +67,8 @@ void MainWindow::buildMenus() {
     file->addSeparator();
     file->addAction("&Quit", this, &QWidget::close, QKeySequence::Quit);
     QMenu* view = menuBar()->addMenu("&View");
+    view->addAction("Well &warnings...", this, &MainWindow::showWarnings);
+    view->addSeparator();
     view->addAction("View &all", this, [this] { m_viewer->viewAll(); });
     view->addAction("&Iso", this, [this] { setView(int(scenegraph::ViewDirection::Iso)); });
     view->addAction("Looking &north", this,
@@ -75,23 +89,64 @@ bool MainWindow::loading() const {
     return false;
 }
 
-void MainWindow::openWell(const QString& path, const InputOptions& options) {
+std::size_t MainWindow::warningCount() const {
+    std::size_t count = 0;
+    for (const auto& well : m_wells) count += well->diagnostics.warningCount;
+    return count;
+}
+
+QString MainWindow::warningsText() const {
+    QString text;
+    for (const auto& well : m_wells)
+        text += QString::fromStdString(formatWarnings(well->diagnostics));
+    return text;
+}
+
+QString MainWindow::statusText() const {
+    return m_status->text();
+}
+
+void MainWindow::updateWarningsButton() {
+    const std::size_t count = warningCount();
+    m_warningsButton->setText(QString("%1 warning%2").arg(count).arg(count == 1 ? "" : "s"));
+    m_warningsButton->setVisible(count > 0);
+}
+
+// A plain list for now: file, line and message of every warning kept.
+void MainWindow::showWarnings() {
+    QDialog dialog(this);
+    dialog.setWindowTitle("Well warnings");
+    dialog.resize(800, 400);
+    auto* list = new QPlainTextEdit(&dialog);
+    list->setReadOnly(true);
+    list->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
+    list->setPlainText(warningCount() > 0 ? warningsText() : QString("No warnings."));
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, &dialog);
+    connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
+    auto* layout = new QVBoxLayout(&dialog);
+    layout->addWidget(list);
+    layout->addWidget(buttons);
+    dialog.exec();
+}
+
+void MainWindow::openWell(const QString& path, const LoadOptions& options) {
     openWell(WellSource{path.toStdString(), {}, {}}, options);
 }
 
-void MainWindow::openWell(const WellSource& source, const InputOptions& options) {
+void MainWindow::openWell(const WellSource& source, const LoadOptions& options) {
     m_wells.clear();
     m_sceneRoot->removeAllChildren();
+    updateWarningsButton();
     m_viewedAll = false;
-    m_origin = sceneOrigin({source});
+    m_origin = reconstruction::sceneOrigin({source});
     addWell(source, options);
 }
 
-void MainWindow::addWell(const QString& path, const InputOptions& options) {
+void MainWindow::addWell(const QString& path, const LoadOptions& options) {
     addWell(WellSource{path.toStdString(), {}, {}}, options);
 }
 
-void MainWindow::addWell(const WellSource& source, const InputOptions& options) {
+void MainWindow::addWell(const WellSource& source, const LoadOptions& options) {
     auto well = std::make_unique<Well>();
     Well& w = *well;
     w.source = source;
@@ -103,24 +158,16 @@ void MainWindow::addWell(const WellSource& source, const InputOptions& options) 
 
     const std::string file = source.path;
     const QString name = QFileInfo(QString::fromStdString(file)).fileName();
-    // The survey is small: read here, and a bad one fails this well like a bad log.
-    reconstruction::GeometryOptions geometry;
-    std::string surveyError;
-    try {
-        geometry = geometryOptions(options, source, m_origin);
-    } catch (const std::exception& e) {
-        surveyError = e.what();
-    }
-    w.pipeline = std::make_unique<reconstruction::WellLoadPipeline>(
-        [source, options, surveyError] {
-            if (!surveyError.empty()) throw std::runtime_error(surveyError);
-            return readWellFile(source, options, nullptr);
-        },
-        geometry);
+    // Survey, log and geometry are all read on the worker (loadWell).
+    w.pipeline = std::make_unique<reconstruction::WellLoadPipeline>(source, options, m_origin);
     m_status->setText("Loading " + name + "...");
     setWindowTitle(m_wells.size() == 1 ? "caliper3d - " + name
                                        : QString("caliper3d - %1 wells").arg(m_wells.size()));
     scenegraph::SegmentFeeder::Callbacks callbacks;
+    callbacks.warnings = [this, &w](const io::Diagnostics& diagnostics) {
+        w.diagnostics = diagnostics;
+        updateWarningsButton();
+    };
     callbacks.progress = [this, name](std::size_t attached) {
         if (!m_viewedAll) {
             m_viewer->viewAll();
@@ -129,11 +176,14 @@ void MainWindow::addWell(const WellSource& source, const InputOptions& options) 
         m_status->setText(QString("Loading %1: %2 segments").arg(name).arg(attached));
     };
     callbacks.finished = [this, name, &w](std::size_t segments) {
-        m_status->setText(QString("%1: %2 segments, %3 triangles at full detail, radii x%4")
-                              .arg(name)
-                              .arg(segments)
-                              .arg(w.scene->fullDetailTriangles())
-                              .arg(w.options.radialExaggeration));
+        m_status->setText(
+            QString("%1: %2 segments, %3 triangles at full detail, radii x%4, %5 warning%6")
+                .arg(name)
+                .arg(segments)
+                .arg(w.scene->fullDetailTriangles())
+                .arg(w.options.radialExaggeration)
+                .arg(w.diagnostics.warningCount)
+                .arg(w.diagnostics.warningCount == 1 ? "" : "s"));
         w.done = true;
         // Signalled from the event loop, not from inside the feeder's tick, so a
         // slot may open other wells (destroying this feeder) safely.
@@ -190,11 +240,12 @@ void MainWindow::exportDialog() {
 }
 
 void MainWindow::setExaggeration(double factor) {
-    std::vector<std::pair<WellSource, InputOptions>> shown;
+    std::vector<std::pair<WellSource, LoadOptions>> shown;
     for (const auto& well : m_wells) shown.emplace_back(well->source, well->options);
     if (shown.empty()) return;
     m_wells.clear();
     m_sceneRoot->removeAllChildren();
+    updateWarningsButton();
     for (auto& [source, options] : shown) {
         options.radialExaggeration = factor;
         addWell(source, options);

@@ -9,6 +9,7 @@
 #include "app/input_options.h"
 
 class QLabel;
+class QPushButton;
 class SoQtExaminerViewer;
 class SoSeparator;
 
@@ -35,14 +36,19 @@ public:
 
     // Replaces the wells shown by this one; its wellhead (if any) becomes the
     // scene origin.
-    void openWell(const WellSource& well, const InputOptions& options);
-    void openWell(const QString& path, const InputOptions& options);
+    void openWell(const WellSource& well, const LoadOptions& options);
+    void openWell(const QString& path, const LoadOptions& options);
     // Adds a well to those shown; each loads on its own worker.
-    void addWell(const WellSource& well, const InputOptions& options);
-    void addWell(const QString& path, const InputOptions& options);
+    void addWell(const WellSource& well, const LoadOptions& options);
+    void addWell(const QString& path, const LoadOptions& options);
     std::size_t wellCount() const { return m_wells.size(); }
     SoQtExaminerViewer* viewer() const { return m_viewer; }
     bool loading() const;
+    // The warnings of the wells shown (reader, survey, geometry), as loaded so
+    // far: their count, and the text the warnings dialog shows.
+    std::size_t warningCount() const;
+    QString warningsText() const;
+    QString statusText() const;
 
 signals:
     void wellLoaded(int segments);  // once per well
@@ -55,17 +61,21 @@ private:
     void exportDialog();
     void setView(int direction);
     void setExaggeration(double factor);
+    void showWarnings();
+    void updateWarningsButton();
 
     SoQtExaminerViewer* m_viewer = nullptr;
     SoSeparator* m_sceneRoot = nullptr;
     QLabel* m_status = nullptr;
-    InputOptions m_lastOptions;
+    QPushButton* m_warningsButton = nullptr;  // "N warnings": opens the list
+    LoadOptions m_lastOptions;
     reconstruction::Wellhead m_origin;  // the first well's wellhead
     // One well being shown: its nodes, and while it loads its worker and feeder.
     // Members are destroyed feeder first, then the worker, then the nodes.
     struct Well {
         WellSource source;
-        InputOptions options;
+        LoadOptions options;
+        io::Diagnostics diagnostics;  // from the worker, once the geometry is ready
         std::unique_ptr<scenegraph::WellScene> scene;
         std::unique_ptr<reconstruction::WellLoadPipeline> pipeline;
         std::unique_ptr<scenegraph::SegmentFeeder> feeder;

@@ -46,7 +46,7 @@ int runRender(const QStringList& args) {
         if (verb.isSet("at") && !downHole)
             throw UsageError("caliper3d render: --at places the eye of --view hole; the " +
                              verb.value("view") + " view shows the whole scene and ignores it");
-        const InputOptions options = inputOptionsFrom(p);
+        const LoadOptions options = inputOptionsFrom(p);
 
         scenegraph::initCoin();
         AssembledScene scene = assembleScene(wellSourcesFrom(p, verb.positional()), options);

@@ -14,7 +14,8 @@
 #include "reconstruction/analysis/report_writer.h"
 #include "reconstruction/analysis/rule_settings.h"
 #include "reconstruction/analysis/well_analysis.h"
-#include "reconstruction/well_warnings.h"
+#include "reconstruction/load/well_warnings.h"
+#include "reconstruction/load/load_well.h"
 
 namespace caliper3d::app {
 
@@ -122,7 +123,7 @@ int runReport(const QStringList& args) {
         if (!verb.isSet("output")) throw UsageError("caliper3d report: -o OUT.csv is required");
         rejectInapplicable(p, "report", {"exaggerate", "segment-length"},
                            "they shape the 3D picture, and the report measures the log");
-        const InputOptions options = inputOptionsFrom(p);
+        LoadOptions options = inputOptionsFrom(p);
         const WellSource well = wellSourcesFrom(p, files).front();
 
         reconstruction::ReportOptions report;
@@ -143,13 +144,13 @@ int runReport(const QStringList& args) {
             analysis.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
         }
 
-        io::Diagnostics diagnostics;
-        auto table =
-            std::make_shared<const io::SectionTable>(readWellFile(well, options, &diagnostics));
-        reconstruction::GeometryOptions geometryOpts =
-            geometryOptions(options, well, sceneOrigin({well}), &diagnostics);
-        geometryOpts.minValidArmFraction = analysis.rules.minValidArmFraction;
-        const reconstruction::WellGeometry geometry(table, geometryOpts);
+        // The analysis adds the geometry's warnings from its own counts (warnAnalysis).
+        options.minValidArmFraction = analysis.rules.minValidArmFraction;
+        options.geometryWarnings = false;
+        reconstruction::LoadedWell loaded =
+            reconstruction::loadWell(well, options, reconstruction::sceneOrigin({well}));
+        io::Diagnostics& diagnostics = loaded.diagnostics;
+        const reconstruction::WellGeometry& geometry = *loaded.geometry;
         const reconstruction::WellAnalysis result = reconstruction::analyseWell(geometry, analysis);
         warnWhereCasingDoesNotFit(result, analysis.volume, well.path, diagnostics);
 

@@ -9,45 +9,38 @@
 #include <Inventor/nodes/SoSeparator.h>
 
 #include "io/parse_error.h"
+#include "reconstruction/load/load_well.h"
 #include "reconstruction/well_geometry.h"
-#include "reconstruction/well_warnings.h"
 #include "scenegraph/well_scene.h"
 
 namespace caliper3d::app {
 
-AssembledScene assembleScene(const std::vector<std::string>& files, const InputOptions& options) {
+AssembledScene assembleScene(const std::vector<std::string>& files, const LoadOptions& options) {
     std::vector<WellSource> wells;
     for (const std::string& file : files) wells.push_back({file, {}, {}});
     return assembleScene(wells, options);
 }
 
-AssembledScene assembleScene(const std::vector<WellSource>& wells, const InputOptions& options) {
+AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOptions& options) {
     AssembledScene out;
     out.root = scenegraph::NodeRef<SoSeparator>(new SoSeparator);
     out.root->setName("caliper3d_scene");
-    const reconstruction::Wellhead origin = sceneOrigin(wells);
+    const reconstruction::Wellhead origin = reconstruction::sceneOrigin(wells);
     for (const WellSource& well : wells) {
         const std::string& file = well.path;
         try {
-            io::Diagnostics diagnostics;
-            const reconstruction::GeometryOptions geometryOpts =
-                geometryOptions(options, well, origin, &diagnostics);
-            auto table =
-                std::make_shared<const io::SectionTable>(readWellFile(well, options, &diagnostics));
-            auto geometry =
-                std::make_shared<const reconstruction::WellGeometry>(table, geometryOpts);
+            const reconstruction::LoadedWell loaded =
+                reconstruction::loadWell(well, options, origin);
             scenegraph::WellScene scene;
-            scene.buildAll(*geometry);
-            out.geometries.push_back(geometry);
+            scene.buildAll(*loaded.geometry);
+            out.geometries.push_back(loaded.geometry);
             out.root->addChild(scene.root());
             ++out.wells;
-            // No-data intervals and interpolated arms join the reader's warnings,
-            // so that the count printed is the count of the warnings printed.
-            reconstruction::warnGeometry(*geometry, diagnostics);
+            const io::Diagnostics& diagnostics = loaded.diagnostics;
             std::printf(
                 "%s: %zu sections, %zu segments, %zu triangles at full detail, %zu warnings\n",
-                file.c_str(), table->rowCount(), scene.segmentCount(), scene.fullDetailTriangles(),
-                diagnostics.warningCount);
+                file.c_str(), loaded.table->rowCount(), scene.segmentCount(),
+                scene.fullDetailTriangles(), diagnostics.warningCount);
             printWarnings(diagnostics);
         } catch (const std::exception& e) {
             ++out.failures;

@@ -25,8 +25,8 @@ struct AssembledScene {
 };
 // The first well's wellhead is the scene origin; each well's survey, if
 // given, replaces its log's DEVI/HAZI for the path.
-AssembledScene assembleScene(const std::vector<WellSource>& wells, const InputOptions& options);
-AssembledScene assembleScene(const std::vector<std::string>& files, const InputOptions& options);
+AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOptions& options);
+AssembledScene assembleScene(const std::vector<std::string>& files, const LoadOptions& options);
 
 // The fly-through view: a camera on the first well's axis at measured depth
 // `md_m`, looking down the hole, high side up.

@@ -20,7 +20,7 @@ namespace caliper3d::app {
 namespace {
 
 int showWindow(int argc, char** argv, const std::vector<WellSource>& wells,
-               const InputOptions& options) {
+               const LoadOptions& options) {
     QApplication application(argc, argv);
     initGui();
     MainWindow window;
@@ -38,8 +38,8 @@ int showWindow(int argc, char** argv, const std::vector<WellSource>& wells,
     return rc != 0 ? rc : status;
 }
 
-InputOptions exampleOptions() {
-    InputOptions options;
+LoadOptions exampleOptions() {
+    LoadOptions options;
     options.read.bitSize_mm = 215.9;  // the example is drilled with an 8.5 in bit
     return options;
 }
@@ -52,7 +52,7 @@ int runView(int argc, char** argv, const QStringList& args) {
         addInputOptions(verb.parser());
         addWellSourceOptions(verb.parser());
         if (!verb.parse(args, 1)) return kExitOk;
-        const InputOptions options = inputOptionsFrom(verb.parser());
+        const LoadOptions options = inputOptionsFrom(verb.parser());
         const std::vector<WellSource> wells = wellSourcesFrom(verb.parser(), verb.positional());
         if (!haveDisplay()) {
             std::fprintf(
@@ -86,7 +86,7 @@ int runDefault(int argc, char** argv) {
         renderToPng(scene.root.get(), "out/example.png", 1024, 768,
                     downHolePose(*scene.geometries.front(), 59.0));
         // And the whole well, radii drawn 50 times larger so it is more than a line.
-        InputOptions overview = exampleOptions();
+        LoadOptions overview = exampleOptions();
         overview.radialExaggeration = 50.0;
         AssembledScene whole = assembleScene({example}, overview);
         if (whole.wells == 0) return kExitBadInput;

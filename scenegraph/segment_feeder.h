@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-#include "reconstruction/parallel/well_load_pipeline.h"
+#include "reconstruction/load/well_load_pipeline.h"
 
 class SoTimerSensor;
 class SoSensor;
@@ -22,6 +22,8 @@ class SegmentFeeder {
 public:
     struct Callbacks {
         std::function<void(const reconstruction::WellGeometry&)> started;
+        // The well's warnings (reader, survey, geometry), once, with `started`.
+        std::function<void(const io::Diagnostics&)> warnings;
         std::function<void(std::size_t segmentsAttached)> progress;
         std::function<void(std::size_t segments)> finished;
         std::function<void(const std::string& message)> failed;

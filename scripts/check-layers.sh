@@ -18,7 +18,7 @@ declare -A forbidden=(
 )
 # Inside reconstruction/: geometry (caliper3d_geometry) below analysis (caliper3d_analysis) below
 # loading (caliper3d_reconstruction).
-geometryForbidden="^reconstruction/(analysis/|load/|well_input|well_warnings|hole_azimuth)|^(scenegraph|app)/|^(${coinQtGl})"
+geometryForbidden="^reconstruction/(analysis/|load/)|^(scenegraph|app)/|^(${coinQtGl})"
 geometryDirs="reconstruction/section reconstruction/path reconstruction/mesh reconstruction/parallel reconstruction/synthetic"
 
 # Prints "file:line: includes X" for each violation under ROOT; returns 1 if any.

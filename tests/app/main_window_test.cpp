@@ -60,7 +60,7 @@ TEST_F(MainWindowTest, OpensTheExampleAndRendersTheWell) {
     app::MainWindow window;
     window.resize(640, 480);
     window.show();
-    app::InputOptions options;
+    app::LoadOptions options;
     options.read.bitSize_mm = 215.9;
     window.openWell(QString::fromStdString(log.string()), options);
     ASSERT_TRUE(waitFor(window, &app::MainWindow::wellLoaded, 60000)) << "the well did not load";
@@ -85,7 +85,7 @@ TEST_F(MainWindowTest, BadFileReportsFailureWithFileAndLine) {
     app::MainWindow window;
     QString message;
     QObject::connect(&window, &app::MainWindow::wellFailed, [&](const QString& m) { message = m; });
-    window.openWell(QString::fromStdString(bad.string()), app::InputOptions{});
+    window.openWell(QString::fromStdString(bad.string()), app::LoadOptions{});
     ASSERT_TRUE(waitFor(window, &app::MainWindow::wellFailed, 30000));
     EXPECT_TRUE(message.contains(QString::fromStdString(bad.string() + ":2")))
         << message.toStdString();
@@ -102,10 +102,33 @@ TEST_F(MainWindowTest, ShowsSeveralWellsAtOnce) {
     app::MainWindow window;
     int loaded = 0;
     QObject::connect(&window, &app::MainWindow::wellLoaded, [&](int) { ++loaded; });
-    window.openWell(QString::fromStdString(a.string()), app::InputOptions{});
-    window.addWell(QString::fromStdString(b.string()), app::InputOptions{});
+    window.openWell(QString::fromStdString(a.string()), app::LoadOptions{});
+    window.addWell(QString::fromStdString(b.string()), app::LoadOptions{});
     ASSERT_TRUE(waitFor(window, &app::MainWindow::allWellsLoaded, 60000));
     EXPECT_EQ(loaded, 2);
     EXPECT_EQ(window.wellCount(), 2u);
     EXPECT_FALSE(window.loading());
+}
+
+TEST_F(MainWindowTest, ReaderWarningsOfALoadedWellAreCountedAndListed) {
+    const auto log = test::scratch("window_warned.txt");
+    io::writeColumnTextFile(
+        log.string(),
+        reconstruction::makeSyntheticWell(reconstruction::syntheticProfile("circle", 20.0, 0.5)));
+    std::size_t lines = 0;
+    {
+        std::ifstream in(log);
+        std::string line;
+        while (std::getline(in, line)) ++lines;
+    }
+    // A truncated last row: the reader skips it with a warning on its line.
+    { std::ofstream(log, std::ios::app) << "20.5 1.0 2.0\n"; }
+    app::MainWindow window;
+    window.openWell(QString::fromStdString(log.string()), app::LoadOptions{});
+    ASSERT_TRUE(waitFor(window, &app::MainWindow::wellLoaded, 60000)) << "the well did not load";
+    EXPECT_EQ(window.warningCount(), 1u) << window.warningsText().toStdString();
+    EXPECT_TRUE(window.warningsText().contains(
+        QString::fromStdString(log.string() + ":" + std::to_string(lines + 1) + ": warning: ")))
+        << window.warningsText().toStdString();
+    EXPECT_TRUE(window.statusText().endsWith(", 1 warning")) << window.statusText().toStdString();
 }

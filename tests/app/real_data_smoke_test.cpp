@@ -7,9 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "app/input_options.h"
 #include "io/parse_error.h"
-#include "reconstruction/well_geometry.h"
+#include "reconstruction/load/load_well.h"
 #include "test_support.h"
 
 using namespace caliper3d;
@@ -25,12 +24,10 @@ TEST(RealDataSmokeTest, EveryRealLogReadsOrIsRefusedByName) {
         ++files;
         const std::string path = entry.path().string();
         try {
-            io::Diagnostics diagnostics;
-            auto table = std::make_shared<const io::SectionTable>(
-                app::readWellFile(path, app::InputOptions{}, &diagnostics));
-            EXPECT_GT(table->rowCount(), 0u) << path;
-            reconstruction::WellGeometry geometry(table, reconstruction::GeometryOptions{});
-            EXPECT_GT(geometry.segmentCount(), 0u) << path;
+            const reconstruction::LoadedWell well =
+                reconstruction::loadWell({path, {}, {}}, reconstruction::LoadOptions{});
+            EXPECT_GT(well.table->rowCount(), 0u) << path;
+            EXPECT_GT(well.geometry->segmentCount(), 0u) << path;
         } catch (const io::ParseError& e) {
             EXPECT_EQ(e.file(), path);
         } catch (const std::invalid_argument& e) {

@@ -18,7 +18,7 @@ TEST(SceneAssemblyTest, WellheadsPlaceWellsRelativeToTheFirst) {
                                               reconstruction::syntheticProfile("circle", 20.0, 0.5)));
     app::WellSource first{log.string(), {}, reconstruction::Wellhead{1000.0, 2000.0, 50.0}};
     app::WellSource second{log.string(), {}, reconstruction::Wellhead{1100.0, 1950.0, 40.0}};
-    const app::AssembledScene scene = app::assembleScene({first, second}, app::InputOptions{});
+    const app::AssembledScene scene = app::assembleScene({first, second}, app::LoadOptions{});
     ASSERT_EQ(scene.wells, 2);
     ASSERT_EQ(scene.failures, 0);
     // Analysis frame (north, east, down) of the top section of each well: the
@@ -40,7 +40,7 @@ TEST(SceneAssemblyTest, AMissingSurveyFailsThatWellOnly) {
                                               reconstruction::syntheticProfile("circle", 20.0, 0.5)));
     app::WellSource good{log.string(), {}, {}};
     app::WellSource bad{log.string(), test::scratch("no_such_survey.csv").string(), {}};
-    const app::AssembledScene scene = app::assembleScene({bad, good}, app::InputOptions{});
+    const app::AssembledScene scene = app::assembleScene({bad, good}, app::LoadOptions{});
     EXPECT_EQ(scene.wells, 1);
     EXPECT_EQ(scene.failures, 1);
 }
@@ -60,7 +60,7 @@ TEST(SceneAssemblyTest, WellsWithDifferentLogTopsArePlacedAtTheirTrueDepths) {
     }
     app::WellSource first{fromSurface.string(), {}, reconstruction::Wellhead{1000.0, 2000.0, 50.0}};
     app::WellSource second{fromBelow.string(), {}, reconstruction::Wellhead{1030.0, 2000.0, 50.0}};
-    const app::AssembledScene scene = app::assembleScene({first, second}, app::InputOptions{});
+    const app::AssembledScene scene = app::assembleScene({first, second}, app::LoadOptions{});
     ASSERT_EQ(scene.wells, 2);
     const reconstruction::Ned a = scene.geometries[0]->centre(0);
     const reconstruction::Ned b = scene.geometries[1]->centre(0);

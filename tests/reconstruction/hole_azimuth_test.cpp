@@ -1,6 +1,6 @@
 // Hole azimuth from a known tool's convention, or unknown (docs/conventions.md,
 // "Hole azimuth"), on the real logs in ../shared/data/real (skipped when absent).
-#include "reconstruction/hole_azimuth.h"
+#include "reconstruction/load/hole_azimuth.h"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +11,7 @@
 #include "io/las_writer.h"
 #include "io/log_reader.h"
 #include "reconstruction/analysis/well_analysis.h"
-#include "reconstruction/well_input.h"
+#include "reconstruction/load/well_input.h"
 #include "test_support.h"
 
 namespace caliper3d::reconstruction {

@@ -1,4 +1,4 @@
-#include "reconstruction/well_warnings.h"
+#include "reconstruction/load/well_warnings.h"
 
 #include <cstdio>
 #include <string>

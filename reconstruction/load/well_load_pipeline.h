@@ -7,16 +7,20 @@
 #include <thread>
 #include <variant>
 
+#include "io/diagnostics.h"
 #include "io/section_table.h"
 #include "reconstruction/parallel/segment_queue.h"
+#include "reconstruction/load/load_well.h"
 #include "reconstruction/well_geometry.h"
 
 namespace caliper3d::reconstruction {
 
 // What a load worker hands to the main thread, in order: the geometry (path,
-// frames) once, then every segment, then Finished or Failed.
+// frames) and the well's warnings once, then every segment, then Finished or
+// Failed.
 struct LoadStarted {
     std::shared_ptr<const WellGeometry> geometry;
+    io::Diagnostics diagnostics;
 };
 struct LoadFinished {
     std::size_t segments = 0;
@@ -26,14 +30,21 @@ struct LoadFailed {
 };
 using LoadEvent = std::variant<LoadStarted, SegmentMesh, LoadFinished, LoadFailed>;
 
-// Owns one worker thread that reads a log (with the reader it is given),
-// reconstructs it and pushes segment meshes into its queue. Makes no Coin or
-// Qt call. Cancelled by a token checked per segment; the destructor cancels
-// and joins.
+// Owns one worker thread that loads a well (loadWell, or the loader it is
+// given), then pushes its segment meshes into its queue. Makes no Coin or Qt
+// call. Cancelled by a token checked per segment; the destructor cancels and
+// joins.
 class WellLoadPipeline {
 public:
+    using Loader = std::function<LoadedWell()>;
     using Reader = std::function<io::SectionTable()>;
 
+    // Loads `source` with loadWell on the worker (survey, log, geometry and
+    // their warnings), `origin` being the scene origin.
+    WellLoadPipeline(WellSource source, LoadOptions options, Wellhead origin);
+    explicit WellLoadPipeline(Loader loader);
+    // A table from `reader` (e.g. one made in memory), reconstructed with
+    // `options`; no warnings of its own.
     WellLoadPipeline(Reader reader, GeometryOptions options);
     ~WellLoadPipeline();
     WellLoadPipeline(const WellLoadPipeline&) = delete;
@@ -47,8 +58,7 @@ public:
 private:
     void run();
 
-    Reader m_reader;
-    GeometryOptions m_options;
+    Loader m_loader;
     HandOffQueue<LoadEvent> m_events;
     std::atomic<bool> m_cancelled{false};
     std::thread m_worker;

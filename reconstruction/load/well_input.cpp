@@ -1,8 +1,8 @@
-#include "reconstruction/well_input.h"
+#include "reconstruction/load/well_input.h"
 
 #include "io/log_reader.h"
 #include "io/parse_error.h"
-#include "reconstruction/hole_azimuth.h"
+#include "reconstruction/load/hole_azimuth.h"
 
 namespace caliper3d::reconstruction {
 

@@ -1,4 +1,4 @@
-#include "reconstruction/hole_azimuth.h"
+#include "reconstruction/load/hole_azimuth.h"
 
 #include <cmath>
 

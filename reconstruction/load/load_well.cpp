@@ -1,0 +1,54 @@
+#include "reconstruction/load/load_well.h"
+
+#include "reconstruction/load/well_input.h"
+#include "reconstruction/load/well_warnings.h"
+
+namespace caliper3d::reconstruction {
+
+GeometryOptions geometryOptions(const LoadOptions& options) {
+    GeometryOptions g;
+    g.splinePoints = options.splinePoints;
+    g.segmentLength_m = options.segmentLength_m;
+    g.radialExaggeration = options.radialExaggeration;
+    g.steepInclination_deg = options.steepInclination_deg;
+    g.maxArmRadius_mm = options.toolReach_mm;
+    g.minValidArmFraction = options.minValidArmFraction;
+    return g;
+}
+
+CheckedSurvey readCheckedSurvey(const std::string& path, const io::ReadOptions& options,
+                                io::Diagnostics* diagnostics) {
+    io::SurveyReadOptions survey;
+    if (options.depthUnit) survey.depthUnit = options.depthUnit;
+    CheckedSurvey out;
+    out.table = io::readSurvey(path, survey, diagnostics);
+    out.check = checkSurveyPositions(out.table);
+    if (diagnostics && (out.check.maxTvdDifference_m > kSurveyPositionTolerance_m ||
+                        out.check.maxHorizontalDifference_m > kSurveyPositionTolerance_m))
+        diagnostics->warn(path, out.table.headerLine,
+                          "the positions the file writes disagree with minimum curvature from its "
+                          "own MD, inclination and azimuth: " +
+                              describeSurveyPositionCheck(out.check) +
+                              " (the path drawn is the minimum-curvature one)");
+    return out;
+}
+
+LoadedWell loadWell(const WellSource& source, const LoadOptions& options, const Wellhead& origin) {
+    LoadedWell out;
+    GeometryOptions geometry = geometryOptions(options);
+    if (!source.surveyPath.empty())
+        geometry.survey = surveyStations(
+            readCheckedSurvey(source.surveyPath, options.read, &out.diagnostics).table);
+    if (source.wellhead) geometry.wellheadOffset = wellheadOffset(*source.wellhead, origin);
+    out.table = std::make_shared<const io::SectionTable>(
+        loadWellTable(source.path, options.read, !source.surveyPath.empty(), &out.diagnostics));
+    out.geometry = std::make_shared<const WellGeometry>(out.table, geometry);
+    if (options.geometryWarnings) warnGeometry(*out.geometry, out.diagnostics);
+    return out;
+}
+
+Wellhead sceneOrigin(const std::vector<WellSource>& wells) {
+    return !wells.empty() && wells.front().wellhead ? *wells.front().wellhead : Wellhead{};
+}
+
+}  // namespace caliper3d::reconstruction
