@@ -21,7 +21,7 @@ bool VerbParser::parse(const QStringList& args, int minPositional) {
     full.prepend(QString("caliper3d ") + QString::fromStdString(m_verb));
     if (!m_parser.parse(full))
         throw UsageError("caliper3d " + m_verb + ": " + m_parser.errorText().toStdString());
-    if (m_parser.isSet("help")) {
+    if (m_parser.isSet("help") || m_parser.isSet("help-all")) {
         std::fputs(helpText().c_str(), stdout);
         return false;
     }

@@ -96,7 +96,9 @@ std::vector<std::string> syntheticProfileNames() {
 double syntheticInclination_deg(const SyntheticWellSpec& spec, double md_m) {
     if (md_m <= spec.kickoff_m) return spec.initialInclination_deg;
     const double end = std::min(md_m, spec.endOfBuild_m);
-    return spec.initialInclination_deg + (end - spec.kickoff_m) * spec.buildRate_degPer30m / 30.0;
+    const double built =
+        spec.initialInclination_deg + (end - spec.kickoff_m) * spec.buildRate_degPer30m / 30.0;
+    return std::min(built, std::max(spec.maxInclination_deg, spec.initialInclination_deg));
 }
 
 double syntheticAzimuth_deg(const SyntheticWellSpec& spec, double md_m) {

@@ -29,7 +29,8 @@ struct SyntheticFeature {
 };
 
 // Trajectory: vertical to kickoff, then a constant build rate to the end of
-// build, then hold; constant hole azimuth.
+// build (or until maxInclination_deg, whichever comes first), then hold;
+// constant hole azimuth.
 struct SyntheticWellSpec {
     double length_m = 300.0;
     double step_m = 0.05;
@@ -38,6 +39,10 @@ struct SyntheticWellSpec {
     double kickoff_m = 1e9;        // no build by default
     double buildRate_degPer30m = 0.0;
     double endOfBuild_m = 1e9;
+    // Real wells land near horizontal and hold: a build never goes past this,
+    // however long the well (a 4 km "example" would otherwise turn past 180
+    // degrees and climb back up, which no reader accepts).
+    double maxInclination_deg = 90.0;
     double holeAzimuth_deg = 0.0;
     double toolRotation_degPerM = 2.0;  // slow, steady pad-1 rotation
     std::vector<SyntheticFeature> features;

@@ -36,6 +36,11 @@ TEST_P(VerbHelpTest, HelpDashHAndHelpVerbPrintTheVerbsOwnOptions) {
     }
     EXPECT_EQ(longForm.output, shortForm.output);
     EXPECT_EQ(longForm.output, helpVerb.output);
+    // Qt's --help-all too prints help and does nothing else.
+    const CommandRun helpAll = stdoutOf(verb + " --help-all");
+    EXPECT_EQ(helpAll.status, 0) << helpAll.output;
+    EXPECT_EQ(helpAll.output.rfind("Usage: caliper3d " + verb + " [options]", 0), 0u)
+        << helpAll.output;
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryVerb, VerbHelpTest,

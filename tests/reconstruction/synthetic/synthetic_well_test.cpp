@@ -1,6 +1,7 @@
 #include "reconstruction/synthetic/synthetic_well.h"
 
 #include <algorithm>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -26,6 +27,22 @@ TEST(SyntheticWellTest, ExampleProfileHasKnownFeatures) {
     EXPECT_DOUBLE_EQ(t.devi_deg[rowAt(50.0)], 0.0);
     EXPECT_NEAR(t.devi_deg[rowAt(200.0)], 10.0, 1e-9);
     EXPECT_NEAR(t.devi_deg[rowAt(290.0)], 15.0, 1e-9);
+}
+
+TEST(SyntheticWellTest, LongWellsLevelOffAtHorizontalInsteadOfTurningBack) {
+    // At 4 km the example builds 3 deg/30 m over 2 km: 200 degrees uncapped.
+    for (const std::string name : {"example", "build", "keyseat"}) {
+        const SyntheticWellSpec spec = syntheticProfile(name, 4000.0, 1.0);
+        const caliper3d::io::SectionTable t = makeSyntheticWell(spec);
+        const double deepest = *std::max_element(t.devi_deg.begin(), t.devi_deg.end());
+        EXPECT_DOUBLE_EQ(deepest, 90.0) << name;
+        EXPECT_DOUBLE_EQ(t.devi_deg.back(), 90.0) << name;
+    }
+    // A short example keeps its 15 degree build.
+    const caliper3d::io::SectionTable shortWell =
+        makeSyntheticWell(syntheticProfile("example", 300.0, 1.0));
+    EXPECT_NEAR(*std::max_element(shortWell.devi_deg.begin(), shortWell.devi_deg.end()), 15.0,
+                1e-9);
 }
 
 TEST(SyntheticWellTest, EllipseRadiusAtAxes) {
