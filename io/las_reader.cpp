@@ -7,7 +7,9 @@
 #include <limits>
 #include <unordered_map>
 
+#include "io/layout/las_layout.h"
 #include "io/number_parsing.h"
+#include "io/stream/row_parser.h"
 #include "io/parse_error.h"
 #include "io/text.h"
 
@@ -15,51 +17,9 @@ namespace caliper3d::io {
 
 namespace {
 
-constexpr double kNull = std::numeric_limits<double>::quiet_NaN();
 
 bool allOf(std::string_view s, char c) {
     return !s.empty() && std::all_of(s.begin(), s.end(), [c](char x) { return x == c; });
-}
-
-// Splits a data line into tokens: runs of blanks, or commas (LAS 3.0 DLM COMMA).
-void tokenize(std::string_view line, char delimiter, std::vector<std::string_view>& tokens,
-              std::vector<std::size_t>& columns) {
-    tokens.clear();
-    columns.clear();
-    auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
-    // A quoted string ("SAND, SHALY") is one token, delimiters and blanks inside it included.
-    auto quotedEnd = [&](std::size_t at) {
-        while (at < line.size() && blank(line[at])) ++at;
-        if (at >= line.size() || line[at] != '"') return std::string_view::npos;
-        const std::size_t close = line.find('"', at + 1);
-        return close == std::string_view::npos ? line.size() : close + 1;
-    };
-    if (delimiter == ',') {
-        std::size_t start = 0;
-        while (start <= line.size()) {
-            const std::size_t quoted = quotedEnd(start);
-            std::size_t end = line.find(',', quoted == std::string_view::npos ? start : quoted);
-            if (end == std::string_view::npos) end = line.size();
-            std::size_t a = start, b = end;
-            while (a < b && blank(line[a])) ++a;
-            while (b > a && blank(line[b - 1])) --b;
-            tokens.push_back(line.substr(a, b - a));
-            columns.push_back(a + 1);
-            start = end + 1;
-        }
-        return;
-    }
-    std::size_t i = 0;
-    while (i < line.size()) {
-        while (i < line.size() && blank(line[i])) ++i;
-        if (i == line.size()) break;
-        std::size_t j = quotedEnd(i);
-        if (j == std::string_view::npos)
-            for (j = i; j < line.size() && !blank(line[j]);) ++j;
-        tokens.push_back(line.substr(i, j - i));
-        columns.push_back(i + 1);
-        i = j;
-    }
 }
 
 void splitArrayName(LasCurve& curve) {
@@ -115,19 +75,37 @@ bool isNullToken(std::string_view token, NullPolicy policy) {
     return u == "ERR" || u == "ERROR" || u == "NAN" || u == "NULL" || u == "N/A";
 }
 
+namespace {
+
+// Rows as parsed, stored curve by curve.
+class CurveSink : public RowSink {
+public:
+    explicit CurveSink(LasLog& log) : m_log(log) {}
+    void row(const double* raw, std::size_t line) override {
+        for (std::size_t c = 0; c < m_log.curves.size(); ++c) m_log.curves[c].values.push_back(raw[c]);
+        m_log.rowLines.push_back(line);
+    }
+
+private:
+    LasLog& m_log;
+};
+
+}  // namespace
+
+// The ~A section goes through the same layout (io/layout/las_layout) and row
+// parser (io/stream/row_parser) as the streamed caliper reader: one LAS data path.
 LasLog readLas(std::string_view text, const std::string& file, const LasReadOptions& options,
                Diagnostics* diagnostics) {
     LasLog log;
     log.header = parseLasHeader(text, file, diagnostics);
     const LasHeader& h = log.header;
-    auto warn = [&](std::size_t line, std::string message) {
-        if (diagnostics) diagnostics->warn(file, line, std::move(message));
-    };
     if (h.curves.empty()) throw ParseError(file, 0, 0, "expected a ~C (curve information) section, found none");
-    const NullPolicy nullPolicy = h.onlyDeclaredNull ? NullPolicy::Declared : options.nullPolicy;
     if (!h.hasData) throw ParseError(file, 0, 0, "expected a ~A (data) section, found none");
 
-    for (const ColumnSpec& spec : lasColumns(h, diagnostics)) {
+    Diagnostics local;
+    Diagnostics& d = diagnostics ? *diagnostics : local;
+    const std::vector<ColumnSpec> columns = lasColumns(h, &d);
+    for (const ColumnSpec& spec : columns) {
         LasCurve curve;
         curve.mnemonic = spec.mnemonic;
         curve.unit = spec.unit;
@@ -136,106 +114,16 @@ LasLog readLas(std::string_view text, const std::string& file, const LasReadOpti
         splitArrayName(curve);
         log.curves.push_back(std::move(curve));
     }
-    const std::size_t declared = log.curves.size();
-    std::size_t columns = declared;  // values per row, settled on the first row
-    bool settled = false;
-    std::vector<std::string_view> tokens;
-    std::vector<std::size_t> tokenColumns;
-    std::vector<double> row;
-    row.reserve(declared);
-    std::size_t rowLine = 0;
-
-    auto storeRow = [&](std::size_t line) {
-        for (std::size_t c = 0; c < declared; ++c) log.curves[c].values.push_back(c < row.size() ? row[c] : kNull);
-        log.rowLines.push_back(line);
-        row.clear();
-    };
-    auto valueOf = [&](std::string_view token, std::size_t curve, std::size_t lineNo, std::size_t column) {
-        LasCurve& target = log.curves[curve];
-        if (target.text) return kNull;
-        double v = 0.0;
-        if (parseNumber(token, v)) {
-            if (curve > 0 && ((h.hasNull && v == h.null) ||
-                              (nullPolicy == NullPolicy::Common && isCommonNullNumber(v)))) {
-                ++target.nulls;
-                return kNull;
-            }
-            return v;
-        }
-        if (curve > 0 && isNullToken(token, nullPolicy)) {
-            ++target.nulls;
-            return kNull;
-        }
-        throw ParseError(file, lineNo, column,
-                         "expected a number for curve " + target.mnemonic + ", found '" + std::string(token) + "'");
-    };
-
-    std::size_t pos = h.dataBegin, lineNumber = h.dataFirstLine - 1;
-    const std::string_view data = text.substr(0, h.dataEnd);
-    while (pos < data.size()) {
-        std::size_t end = data.find('\n', pos);
-        if (end == std::string_view::npos) end = data.size();
-        std::string_view line = data.substr(pos, end - pos);
-        const bool lastLine = end >= data.size() || data.find_first_not_of(" \t\r\n", end) == std::string_view::npos;
-        pos = end + 1;
-        ++lineNumber;
-        tokenize(line, h.delimiter, tokens, tokenColumns);
-        if (tokens.empty() || (tokens.size() == 1 && tokens[0].empty())) continue;
-        if (tokens.front().size() > 0 && tokens.front().front() == '#') continue;
-
-        if (h.wrap) {
-            if (row.empty()) rowLine = lineNumber;
-            for (std::size_t t = 0; t < tokens.size(); ++t) {
-                if (row.size() == declared)
-                    throw ParseError(file, lineNumber, tokenColumns[t],
-                                     "expected " + std::to_string(declared) + " values per depth in wrapped data, found more");
-                row.push_back(valueOf(tokens[t], row.size(), lineNumber, tokenColumns[t]));
-            }
-            if (row.size() == declared) storeRow(rowLine);
-            continue;
-        }
-
-        if (!settled) {
-            settled = true;
-            columns = tokens.size();
-            if (columns > declared)
-                throw ParseError(file, lineNumber, tokenColumns[declared],
-                                 "expected " + std::to_string(declared) + " values (one per ~C curve), found " +
-                                     std::to_string(columns));
-            if (columns < declared) {
-                std::string missing;
-                for (std::size_t c = columns; c < declared; ++c) missing += (missing.empty() ? "" : ", ") + log.curves[c].mnemonic;
-                warn(lineNumber, std::to_string(declared) + " curves declared but rows hold " + std::to_string(columns) +
-                                     " values; no data for " + missing);
-            }
-        }
-        if (tokens.size() > columns)
-            throw ParseError(file, lineNumber, tokenColumns[columns],
-                             "expected " + std::to_string(columns) + " values, found " + std::to_string(tokens.size()));
-        if (tokens.size() < columns) {
-            if (allOf(tokens.back(), '*')) {
-                // An overflowed field ran into the next ones: they are unknown, not lost.
-                warn(lineNumber, "field overflow ('" + std::string(tokens.back()) + "') covers the last " +
-                                     std::to_string(columns - tokens.size() + 1) + " values; read as null");
-            } else if (lastLine) {
-                warn(lineNumber, "last line holds " + std::to_string(tokens.size()) + " of " + std::to_string(columns) +
-                                     " values (truncated file?); skipped");
-                break;
-            } else {
-                throw ParseError(file, lineNumber, 0,
-                                 "expected " + std::to_string(columns) + " values, found " + std::to_string(tokens.size()));
-            }
-        }
-        for (std::size_t t = 0; t < tokens.size(); ++t) row.push_back(valueOf(tokens[t], t, lineNumber, tokenColumns[t]));
-        while (row.size() < columns) {
-            ++log.curves[row.size()].nulls;
-            row.push_back(kNull);
-        }
-        storeRow(lineNumber);
-    }
-    if (h.wrap && !row.empty())
-        warn(rowLine, "last depth holds " + std::to_string(row.size()) + " of " + std::to_string(declared) +
-                          " wrapped values (truncated file?); skipped");
+    RowFormat format = lasRowFormat(h, columns, options.nullPolicy, file, 0);
+    const std::string_view data = text.substr(h.dataBegin, h.dataEnd - h.dataBegin);
+    if (!h.wrap) settleLasColumns(data, h.dataFirstLine - 1, columns, format, d);
+    CurveSink sink(log);
+    RowRun run;
+    parseRows(format, data, h.dataFirstLine, true, sink, run);
+    if (run.error) std::rethrow_exception(run.error);
+    d.merge(run.diagnostics);
+    for (std::size_t c = 0; c < log.curves.size(); ++c)
+        log.curves[c].nulls = log.curves[c].text ? 0 : run.nulls[c];
     return log;
 }
 

@@ -53,6 +53,12 @@ struct SectionTable {
 
     // Appends all rows of `other` (same armCount and same optional curves).
     void append(const SectionTable& other);
+    // Appends rows [first, last) of `other`, whose curves match this table's.
+    void appendRows(const SectionTable& other, std::size_t first, std::size_t last);
+    // Removes every row; the curves present and the extra-curve list stay.
+    void clearRows();
+    // Keeps the rows listed, in the order listed.
+    void keepRows(const std::vector<std::size_t>& rows);
     void reserve(std::size_t rows);
 };
 

@@ -25,4 +25,16 @@ std::string_view trim(std::string_view s) {
     return s;
 }
 
+std::vector<std::string_view> splitBlank(std::string_view s) {
+    std::vector<std::string_view> out;
+    for (std::size_t i = 0; i < s.size();) {
+        while (i < s.size() && isBlank(s[i])) ++i;
+        std::size_t j = i;
+        while (j < s.size() && !isBlank(s[j])) ++j;
+        if (j > i) out.push_back(s.substr(i, j - i));
+        i = j;
+    }
+    return out;
+}
+
 }  // namespace caliper3d::io

@@ -2,6 +2,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace caliper3d::io {
 
@@ -11,5 +12,9 @@ std::string upper(std::string_view s);
 std::string lower(std::string_view s);
 // Without leading and trailing white space (std::isspace: blanks, tabs, line ends).
 std::string_view trim(std::string_view s);
+// A blank inside a line of data: space, tab or the CR of a CRLF line end.
+inline bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+// The fields of a line separated by runs of blanks.
+std::vector<std::string_view> splitBlank(std::string_view s);
 
 }  // namespace caliper3d::io

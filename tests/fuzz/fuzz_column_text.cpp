@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <string>
 
-#include "io/column_text_reader.h"
+#include "support/column_text_reader.h"
 #include "io/log_reader.h"
 #include "io/parse_error.h"
 

@@ -1,4 +1,4 @@
-#include "io/column_text_reader.h"
+#include "support/column_text_reader.h"
 
 #include "io/log_reader.h"
 #include "io/parse_error.h"

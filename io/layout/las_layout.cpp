@@ -1,0 +1,92 @@
+#include "io/layout/las_layout.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "io/las_reader.h"
+#include "io/parse_error.h"
+#include "io/text.h"
+#include "io/well_location.h"
+
+namespace caliper3d::io {
+
+std::string lasVersionText(const LasHeader& h) {
+    std::ostringstream version;
+    version << "LAS " << h.version << (h.version == std::floor(h.version) ? ".0" : "")
+            << (h.wrap ? ", wrapped" : "");
+    return version.str();
+}
+
+RowFormat lasRowFormat(const LasHeader& h, const std::vector<ColumnSpec>& columns,
+                       NullPolicy policy, const std::string& file, int depthColumn) {
+    RowFormat f;
+    f.file = file;
+    f.las = true;
+    f.wrapped = h.wrap;
+    f.delimiter = h.delimiter == ',' ? ',' : ' ';
+    f.declared = columns.size();
+    f.tokens = columns.size();
+    f.hasNull = h.hasNull;
+    f.null = h.null;
+    f.nullPolicy = h.onlyDeclaredNull ? NullPolicy::Declared : policy;
+    f.depthColumn = depthColumn;
+    for (const ColumnSpec& c : columns) {
+        f.textColumn.push_back(c.text);
+        f.names.push_back(c.mnemonic);
+    }
+    f.layout = std::to_string(columns.size()) + " values";  // one per ~C curve
+    return f;
+}
+
+LogLayout lasLayout(const LasHeader& h, const std::string& file, const ReadOptions& options,
+                    LogInfo& info) {
+    info.format = lasVersionText(h);
+    if (const LasItem* well = h.wellItem("WELL")) info.wellName = well->value;
+    info.location = readWellLocation(h, file, &info.diagnostics);
+    if (h.curves.empty())
+        throw ParseError(file, 0, 0, "expected a ~C (curve information) section, found none");
+    LogLayout layout;
+    layout.columns = lasColumns(h, &info.diagnostics);
+    layout.plan = makeCurvePlan(layout.columns, &h, options, file, info, info.diagnostics);
+    layout.format =
+        lasRowFormat(h, layout.columns, options.nullPolicy, file, layout.plan.depthColumn);
+    return layout;
+}
+
+void settleLasColumns(std::string_view text, std::size_t linesBefore,
+                      const std::vector<ColumnSpec>& columns, RowFormat& format,
+                      Diagnostics& diagnostics) {
+    std::size_t pos = 0, line = linesBefore;
+    while (pos < text.size()) {
+        const std::size_t nl = text.find('\n', pos);
+        const std::size_t end = nl == std::string_view::npos ? text.size() : nl;
+        const std::string_view l = trim(text.substr(pos, end - pos));
+        pos = end + 1;
+        ++line;
+        if (l.empty() || l.front() == '#') continue;
+        if (l.front() == '~') return;
+        const std::size_t count =
+            format.delimiter == ','
+                ? static_cast<std::size_t>(std::count(l.begin(), l.end(), ',')) + 1
+                : splitBlank(l).size();
+        const std::size_t declared = columns.size();
+        if (count < declared && count > 0 && format.delimiter != ',') {
+            std::string missing;
+            for (std::size_t c = count; c < declared; ++c)
+                missing += (missing.empty() ? "" : ", ") + columns[c].mnemonic;
+            if (static_cast<std::size_t>(format.depthColumn) >= count)
+                throw ParseError(format.file, line, 0,
+                                 "expected the depth curve among the data columns, found " +
+                                     std::to_string(count) + " values");
+            diagnostics.warn(format.file, line,
+                             std::to_string(declared) + " curves declared but rows hold " +
+                                 std::to_string(count) + " values; no data for " + missing);
+            format.tokens = count;
+            format.layout = std::to_string(count) + " values";
+        }
+        return;
+    }
+}
+
+}  // namespace caliper3d::io
