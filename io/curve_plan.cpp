@@ -69,144 +69,198 @@ void CurvePlan::checkAngles(const double* raw, const std::string& file, std::siz
     }
 }
 
-CurvePlan makeCurvePlan(const std::vector<ColumnSpec>& columns, const LasHeader* header,
-                        const ReadOptions& options, const std::string& file, LogInfo& info,
-                        Diagnostics& diagnostics) {
-    CurvePlan plan;
-    std::vector<std::string> names;
-    for (const ColumnSpec& c : columns) names.push_back(c.mnemonic);
-    CurveRoles roles;
-    try {
-        roles = assignRoles(names, options.roles);
-    } catch (const std::invalid_argument& e) {
-        throw ParseError(file, 0, 0, e.what());
-    }
-    auto spec = [&](int c) -> const ColumnSpec& { return columns[static_cast<std::size_t>(c)]; };
+namespace {
 
-    // Depth, in its own unit or STRT's.
-    plan.depthColumn = roles.depth;
-    const ColumnSpec& depth = spec(roles.depth);
-    std::string depthUnitText = depth.unit;
-    if (depthUnitText.empty() && header)
-        if (const LasItem* strt = header->wellItem("STRT")) depthUnitText = strt->unit;
-    info.depthUnit = depthUnitText;
-    std::optional<LengthUnit> depthUnit =
-        options.depthUnit ? options.depthUnit : parseLengthUnit(depthUnitText);
-    if (!depthUnit) {
-        if (!depthUnitText.empty())
-            throw ParseError(file, depth.line, 0,
-                             "expected a depth unit M or FT for " + depth.mnemonic + ", found '" +
-                                 depthUnitText + "' (or give --depth-unit)");
-        diagnostics.warn(file, depth.line,
-                         "depth has no unit; read as metres (give --depth-unit to change)");
-        depthUnit = LengthUnit::Metre;
+// makeCurvePlan's steps, one per part of the plan, sharing the columns, roles and messages.
+class PlanBuilder {
+public:
+    PlanBuilder(const std::vector<ColumnSpec>& columns, const LasHeader* header,
+                const ReadOptions& options, const std::string& file, LogInfo& info,
+                Diagnostics& diagnostics)
+        : m_columns(columns),
+          m_header(header),
+          m_options(options),
+          m_file(file),
+          m_info(info),
+          m_diagnostics(diagnostics) {
+        std::vector<std::string> names;
+        for (const ColumnSpec& c : columns) names.push_back(c.mnemonic);
+        try {
+            m_roles = assignRoles(names, options.roles);
+        } catch (const std::invalid_argument& e) {
+            throw ParseError(file, 0, 0, e.what());
+        }
     }
-    plan.depthScale = toMetres(*depthUnit);
-    for (std::size_t c = 0; c < columns.size(); ++c)
-        if (static_cast<int>(c) != roles.depth &&
-            guessRole(columns[c].mnemonic).role == CurveRole::Depth && !columns[c].text)
-            plan.otherDepthColumns.push_back(static_cast<int>(c));
 
-    auto lengthScale = [&](int c) {
-        if (options.radiusUnit) return toMillimetres(*options.radiusUnit);
+    CurvePlan build() {
+        depth();
+        arms();
+        angles();
+        bitSize();
+        curves();
+        return std::move(m_plan);
+    }
+
+private:
+    const ColumnSpec& spec(int c) const { return m_columns[static_cast<std::size_t>(c)]; }
+
+    // Depth, in its own unit or STRT's; second depth curves to check against it.
+    void depth() {
+        m_plan.depthColumn = m_roles.depth;
+        const ColumnSpec& depth = spec(m_roles.depth);
+        std::string depthUnitText = depth.unit;
+        if (depthUnitText.empty() && m_header)
+            if (const LasItem* strt = m_header->wellItem("STRT")) depthUnitText = strt->unit;
+        m_info.depthUnit = depthUnitText;
+        std::optional<LengthUnit> depthUnit =
+            m_options.depthUnit ? m_options.depthUnit : parseLengthUnit(depthUnitText);
+        if (!depthUnit) {
+            if (!depthUnitText.empty())
+                throw ParseError(m_file, depth.line, 0,
+                                 "expected a depth unit M or FT for " + depth.mnemonic +
+                                     ", found '" + depthUnitText + "' (or give --depth-unit)");
+            m_diagnostics.warn(m_file, depth.line,
+                               "depth has no unit; read as metres (give --depth-unit to change)");
+            depthUnit = LengthUnit::Metre;
+        }
+        m_plan.depthScale = toMetres(*depthUnit);
+        for (std::size_t c = 0; c < m_columns.size(); ++c)
+            if (static_cast<int>(c) != m_roles.depth &&
+                guessRole(m_columns[c].mnemonic).role == CurveRole::Depth && !m_columns[c].text)
+                m_plan.otherDepthColumns.push_back(static_cast<int>(c));
+    }
+
+    double lengthScale(int c) const {
+        if (m_options.radiusUnit) return toMillimetres(*m_options.radiusUnit);
         if (auto u = parseLengthUnit(spec(c).unit)) return toMillimetres(*u);
-        throw ParseError(file, spec(c).line, 0,
+        throw ParseError(m_file, spec(c).line, 0,
                          "expected a length unit IN, MM or CM for caliper curve " +
                              spec(c).mnemonic + ", found '" + spec(c).unit +
                              "' (or give --radius-unit)");
-    };
+    }
 
-    if (!roles.radii.empty()) {
-        info.armSource = "radii";
-        for (int c : roles.radii) {
-            plan.armColumn.push_back(c);
-            plan.armScale.push_back(lengthScale(c));
-            info.armSource += " " + spec(c).mnemonic;
+    void arms() {
+        if (!m_roles.radii.empty()) {
+            m_info.armSource = "radii";
+            for (int c : m_roles.radii) {
+                m_plan.armColumn.push_back(c);
+                m_plan.armScale.push_back(lengthScale(c));
+                m_info.armSource += " " + spec(c).mnemonic;
+            }
+        } else if (!m_roles.diameters.empty()) {
+            diameters();
+        } else {
+            m_info.armSource =
+                "none: no caliper curves found (name them with --radii or --diameters)";
         }
-    } else if (!roles.diameters.empty()) {
-        // Opposite-pad diameters: pad k and pad k + n/2 share diameter C((k-1) mod n/2 + 1)
-        // (C1 = pads 1-3, C2 = pads 2-4 on four-arm tools); each is taken as two equal radii.
-        const int pairs = static_cast<int>(roles.diameters.size());
+        m_plan.armCount = static_cast<int>(m_plan.armColumn.size());
+        if (m_plan.armCount == 1)
+            throw ParseError(m_file, spec(m_plan.armColumn.front()).line, 0,
+                             "expected at least 2 arm radii (or one diameter), found 1: " +
+                                 spec(m_plan.armColumn.front()).mnemonic);
+        if (m_plan.armCount == 2)
+            m_diagnostics.warn(
+                m_file, spec(m_plan.armColumn.front()).line,
+                "two pads measure one diameter: each section is drawn as the circle through both");
+    }
+
+    // Opposite-pad diameters: pad k and pad k + n/2 share diameter C((k-1) mod n/2 + 1)
+    // (C1 = pads 1-3, C2 = pads 2-4 on four-arm tools); each is taken as two equal radii.
+    void diameters() {
+        const int pairs = static_cast<int>(m_roles.diameters.size());
         for (int k = 0; k < 2 * pairs; ++k) {
-            const int c = roles.diameters[static_cast<std::size_t>(k % pairs)];
-            plan.armColumn.push_back(c);
-            plan.armScale.push_back(lengthScale(c) / 2.0);
+            const int c = m_roles.diameters[static_cast<std::size_t>(k % pairs)];
+            m_plan.armColumn.push_back(c);
+            m_plan.armScale.push_back(lengthScale(c) / 2.0);
         }
-        info.armSource = "diameters";
-        for (int c : roles.diameters) info.armSource += " " + spec(c).mnemonic;
-        info.armSource += " (pad pairs; the tool is taken as centred)";
-        diagnostics.warn(
-            file, spec(roles.diameters.front()).line,
+        m_info.armSource = "diameters";
+        for (int c : m_roles.diameters) m_info.armSource += " " + spec(c).mnemonic;
+        m_info.armSource += " (pad pairs; the tool is taken as centred)";
+        m_diagnostics.warn(
+            m_file, spec(m_roles.diameters.front()).line,
             "radii from opposite-pad diameters: each pad pair is taken as centred on the tool");
-    } else {
-        info.armSource = "none: no caliper curves found (name them with --radii or --diameters)";
-    }
-    plan.armCount = static_cast<int>(plan.armColumn.size());
-    if (plan.armCount == 1)
-        throw ParseError(file, spec(plan.armColumn.front()).line, 0,
-                         "expected at least 2 arm radii (or one diameter), found 1: " +
-                             spec(plan.armColumn.front()).mnemonic);
-    if (plan.armCount == 2)
-        diagnostics.warn(
-            file, spec(plan.armColumn.front()).line,
-            "two pads measure one diameter: each section is drawn as the circle through both");
-
-    const int angleRoles[4] = {roles.padAzimuth, roles.deviation, roles.holeAzimuth,
-                               roles.relativeBearing};
-    for (int a = 0; a < 4; ++a) {
-        const int c = angleRoles[a];
-        if (c < 0) continue;
-        const double scale = angleScaleOf(spec(c).unit);
-        if (!std::isfinite(scale))
-            throw ParseError(file, spec(c).line, 0,
-                             "expected an angle unit DEG or RAD for " + spec(c).mnemonic +
-                                 ", found '" + spec(c).unit + "'");
-        plan.angleColumn[a] = c;
-        plan.angleScale[a] = scale;
-        plan.angleName[a] = spec(c).mnemonic;
     }
 
-    if (options.bitSize_mm) {
-        plan.bitSizeConstant = *options.bitSize_mm;
-    } else if (roles.bitSize >= 0) {
-        plan.bitSizeColumn = roles.bitSize;
-        plan.bitSizeScale = lengthScale(roles.bitSize);
-    } else if (header) {
-        for (const char* name : {"BS", "BIT", "BITSIZE", "BIT_SIZE"}) {
-            const LasItem* bs = header->parameter(name);
-            if (!bs) bs = header->wellItem(name);
-            double v = 0.0;
-            if (!bs || !parseNumber(bs->value, v)) continue;
-            const auto unit = parseLengthUnit(bs->unit);
-            if (!unit) {
-                diagnostics.warn(file, bs->line,
-                                 "bit size " + bs->value + " has no length unit; ignored");
+    void angles() {
+        const int angleRoles[4] = {m_roles.padAzimuth, m_roles.deviation, m_roles.holeAzimuth,
+                                   m_roles.relativeBearing};
+        for (int a = 0; a < 4; ++a) {
+            const int c = angleRoles[a];
+            if (c < 0) continue;
+            const double scale = angleScaleOf(spec(c).unit);
+            if (!std::isfinite(scale))
+                throw ParseError(m_file, spec(c).line, 0,
+                                 "expected an angle unit DEG or RAD for " + spec(c).mnemonic +
+                                     ", found '" + spec(c).unit + "'");
+            m_plan.angleColumn[a] = c;
+            m_plan.angleScale[a] = scale;
+            m_plan.angleName[a] = spec(c).mnemonic;
+        }
+    }
+
+    // An override, a BS curve, or a BS parameter of the header.
+    void bitSize() {
+        if (m_options.bitSize_mm) {
+            m_plan.bitSizeConstant = *m_options.bitSize_mm;
+        } else if (m_roles.bitSize >= 0) {
+            m_plan.bitSizeColumn = m_roles.bitSize;
+            m_plan.bitSizeScale = lengthScale(m_roles.bitSize);
+        } else if (m_header) {
+            for (const char* name : {"BS", "BIT", "BITSIZE", "BIT_SIZE"}) {
+                const LasItem* bs = m_header->parameter(name);
+                if (!bs) bs = m_header->wellItem(name);
+                double v = 0.0;
+                if (!bs || !parseNumber(bs->value, v)) continue;
+                const auto unit = parseLengthUnit(bs->unit);
+                if (!unit) {
+                    m_diagnostics.warn(m_file, bs->line,
+                                       "bit size " + bs->value + " has no length unit; ignored");
+                    break;
+                }
+                m_plan.bitSizeConstant = v * toMillimetres(*unit);
                 break;
             }
-            plan.bitSizeConstant = v * toMillimetres(*unit);
-            break;
+        }
+        m_info.bitSize_mm = m_plan.bitSizeConstant;
+    }
+
+    // Every curve's role as info lists it; the other curves kept as extra curves.
+    void curves() {
+        for (std::size_t c = 0; c < m_columns.size(); ++c) {
+            const ColumnSpec& col = m_columns[c];
+            CurveRole role = m_roles.roleOf(static_cast<int>(c));
+            if (role == CurveRole::Radius && guessRole(col.mnemonic).role == CurveRole::Finger)
+                role = CurveRole::Finger;
+            const bool secondDepth =
+                std::find(m_plan.otherDepthColumns.begin(), m_plan.otherDepthColumns.end(),
+                          static_cast<int>(c)) != m_plan.otherDepthColumns.end();
+            m_info.curves.push_back({col.mnemonic, col.unit,
+                                     col.text      ? "text (skipped)"
+                                     : secondDepth ? "second depth (checked against the index)"
+                                                   : std::string(roleName(role)),
+                                     0});
+            if (role == CurveRole::Other && !col.text &&
+                guessRole(col.mnemonic).role != CurveRole::Depth)
+                m_plan.extraColumns.push_back(static_cast<int>(c));
         }
     }
-    info.bitSize_mm = plan.bitSizeConstant;
 
-    for (std::size_t c = 0; c < columns.size(); ++c) {
-        const ColumnSpec& col = columns[c];
-        CurveRole role = roles.roleOf(static_cast<int>(c));
-        if (role == CurveRole::Radius && guessRole(col.mnemonic).role == CurveRole::Finger)
-            role = CurveRole::Finger;
-        const bool secondDepth =
-            std::find(plan.otherDepthColumns.begin(), plan.otherDepthColumns.end(),
-                      static_cast<int>(c)) != plan.otherDepthColumns.end();
-        info.curves.push_back({col.mnemonic, col.unit,
-                               col.text      ? "text (skipped)"
-                               : secondDepth ? "second depth (checked against the index)"
-                                             : std::string(roleName(role)),
-                               0});
-        if (role == CurveRole::Other && !col.text &&
-            guessRole(col.mnemonic).role != CurveRole::Depth)
-            plan.extraColumns.push_back(static_cast<int>(c));
-    }
-    return plan;
+    const std::vector<ColumnSpec>& m_columns;
+    const LasHeader* m_header;
+    const ReadOptions& m_options;
+    const std::string& m_file;
+    LogInfo& m_info;
+    Diagnostics& m_diagnostics;
+    CurveRoles m_roles;
+    CurvePlan m_plan;
+};
+
+}  // namespace
+
+CurvePlan makeCurvePlan(const std::vector<ColumnSpec>& columns, const LasHeader* header,
+                        const ReadOptions& options, const std::string& file, LogInfo& info,
+                        Diagnostics& diagnostics) {
+    return PlanBuilder(columns, header, options, file, info, diagnostics).build();
 }
 
 namespace {

@@ -87,6 +87,60 @@ bool splitLasItem(std::string_view line, LasItem& item) {
     return true;
 }
 
+namespace {
+
+// "~A DEPTH DT ..." names the columns; LAS 3.0 "~Log_Data | Log_Definition" does not.
+std::vector<std::string> dataTitleNames(std::string_view line) {
+    std::string_view names = line.substr(1);
+    std::size_t first = 0;
+    while (first < names.size() && !std::isspace(static_cast<unsigned char>(names[first]))) ++first;
+    names = names.substr(first);
+    std::vector<std::string> out;
+    if (names.find('|') != std::string_view::npos) return out;
+    std::size_t i = 0;
+    while (i < names.size()) {
+        while (i < names.size() && std::isspace(static_cast<unsigned char>(names[i]))) ++i;
+        std::size_t j = i;
+        while (j < names.size() && !std::isspace(static_cast<unsigned char>(names[j]))) ++j;
+        if (j > i) out.emplace_back(names.substr(i, j - i));
+        i = j;
+    }
+    return out;
+}
+
+// The version, wrap, delimiter and null items, once the sections are read.
+template <typename Warn>
+void readVersionAndNull(LasHeader& header, const Warn& warn) {
+    const std::string& file = header.file;
+    if (const LasItem* vers = find(header.versionItems, "VERS")) {
+        double v = 0.0;
+        if (parseNumber(vers->value, v)) header.version = v;
+        else warn(vers->line, "VERS '" + vers->value + "' is not a number; reading as LAS 2.0");
+    } else {
+        warn(1, "no VERS item; reading as LAS 2.0");
+    }
+    if (const LasItem* wrap = find(header.versionItems, "WRAP")) header.wrap = upper(wrap->value) == "YES";
+    if (const LasItem* dlm = find(header.versionItems, "DLM")) {
+        const std::string d = upper(dlm->value);
+        if (d == "COMMA") header.delimiter = ',';
+        else if (d == "TAB") header.delimiter = '\t';
+        else if (d == "SPACE" || d.empty()) header.delimiter = ' ';
+        else throw ParseError(file, dlm->line, 1, "expected DLM SPACE, TAB or COMMA, found '" + dlm->value + "'");
+    }
+    if (const LasItem* nulls = header.parameter("NULLS")) header.onlyDeclaredNull = upper(nulls->value) == "DECLARED";
+    if (const LasItem* null = header.wellItem("NULL")) {
+        double v = 0.0;
+        if (parseNumber(null->value, v)) {
+            header.hasNull = true;
+            header.null = v;
+        } else if (!null->value.empty()) {
+            warn(null->line, "NULL '" + null->value + "' is not a number; using the common null values");
+        }
+    }
+}
+
+}  // namespace
+
 LasHeader parseLasHeader(std::string_view text, const std::string& file, Diagnostics* diagnostics) {
     LasHeader header;
     header.file = file;
@@ -140,21 +194,7 @@ LasHeader parseLasHeader(std::string_view text, const std::string& file, Diagnos
                 header.dataBegin = std::min(pos, text.size());
                 header.dataEnd = text.size();
                 header.dataFirstLine = lineNumber + 1;
-                // "~A DEPTH DT ..." names the columns; LAS 3.0 "~Log_Data | Log_Definition" does not.
-                std::string_view names = line.substr(1);
-                std::size_t first = 0;
-                while (first < names.size() && !std::isspace(static_cast<unsigned char>(names[first]))) ++first;
-                names = names.substr(first);
-                if (names.find('|') == std::string_view::npos) {
-                    std::size_t i = 0;
-                    while (i < names.size()) {
-                        while (i < names.size() && std::isspace(static_cast<unsigned char>(names[i]))) ++i;
-                        std::size_t j = i;
-                        while (j < names.size() && !std::isspace(static_cast<unsigned char>(names[j]))) ++j;
-                        if (j > i) header.dataNames.emplace_back(names.substr(i, j - i));
-                        i = j;
-                    }
-                }
+                header.dataNames = dataTitleNames(line);
             }
             continue;
         }
@@ -194,31 +234,7 @@ LasHeader parseLasHeader(std::string_view text, const std::string& file, Diagnos
     }
     if (!sawSection) throw ParseError(file, 1, 1, "expected a LAS file (sections starting with '~'), found none");
 
-    if (const LasItem* vers = find(header.versionItems, "VERS")) {
-        double v = 0.0;
-        if (parseNumber(vers->value, v)) header.version = v;
-        else warn(vers->line, "VERS '" + vers->value + "' is not a number; reading as LAS 2.0");
-    } else {
-        warn(1, "no VERS item; reading as LAS 2.0");
-    }
-    if (const LasItem* wrap = find(header.versionItems, "WRAP")) header.wrap = upper(wrap->value) == "YES";
-    if (const LasItem* dlm = find(header.versionItems, "DLM")) {
-        const std::string d = upper(dlm->value);
-        if (d == "COMMA") header.delimiter = ',';
-        else if (d == "TAB") header.delimiter = '\t';
-        else if (d == "SPACE" || d.empty()) header.delimiter = ' ';
-        else throw ParseError(file, dlm->line, 1, "expected DLM SPACE, TAB or COMMA, found '" + dlm->value + "'");
-    }
-    if (const LasItem* nulls = header.parameter("NULLS")) header.onlyDeclaredNull = upper(nulls->value) == "DECLARED";
-    if (const LasItem* null = header.wellItem("NULL")) {
-        double v = 0.0;
-        if (parseNumber(null->value, v)) {
-            header.hasNull = true;
-            header.null = v;
-        } else if (!null->value.empty()) {
-            warn(null->line, "NULL '" + null->value + "' is not a number; using the common null values");
-        }
-    }
+    readVersionAndNull(header, warn);
     return header;
 }
 
