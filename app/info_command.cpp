@@ -19,7 +19,7 @@ int runInfo(const QStringList& args) {
         addInputOptions(verb.parser());
         if (!verb.parse(args, 1)) return kExitOk;
         rejectInapplicable(verb.parser(), "info",
-                           {"points", "segment-length", "exaggerate", "steep-inclination",
+                           {"points", "segment-length", "shape-tolerance", "exaggerate", "steep-inclination",
                             "tool-reach"},
                            "info describes the file as read; these shape the 3D reconstruction");
         const LoadOptions options = inputOptionsFrom(verb.parser());

@@ -26,8 +26,13 @@ void addInputOptions(QCommandLineParser& parser) {
          "POLICY", "common"},
         {"bit-size", "Bit size, e.g. 8.5in or 215.9mm (a bare number is inches).", "VALUE"},
         {"points", "Points per section of the closed spline (default 48).", "M", "48"},
-        {"segment-length", "Length of one level-of-detail segment in metres (default 10).",
-         "METRES", "10"},
+        {"segment-length", "Length of one level-of-detail segment in metres (default 1).",
+         "METRES", "1"},
+        {"shape-tolerance",
+         "Level of detail: a coarse level leaves a section out only while its neighbours "
+         "interpolate every arm within this many millimetres (coarser levels 4 and 16 times "
+         "more; default 0.5).",
+         "MM", "0.5"},
         {"exaggerate", "Draw radii F times larger around the true path (display only; default 1).",
          "F", "1"},
         {"steep-inclination",
@@ -100,6 +105,9 @@ LoadOptions inputOptionsFrom(const QCommandLineParser& parser) {
     o.segmentLength_m = number(parser, "segment-length");
     if (!(o.segmentLength_m > 0.0))
         throw UsageError("--segment-length: expected a positive number of metres");
+    o.shapeTolerance_mm = number(parser, "shape-tolerance");
+    if (!(o.shapeTolerance_mm > 0.0 && o.shapeTolerance_mm <= 100.0))
+        throw UsageError("--shape-tolerance: expected millimetres, more than 0 and at most 100");
     o.radialExaggeration = number(parser, "exaggerate");
     if (!(o.radialExaggeration >= 1.0 && o.radialExaggeration <= 1000.0))
         throw UsageError("--exaggerate: expected a factor from 1 to 1000");

@@ -9,16 +9,20 @@
 
 namespace caliper3d::app {
 
+void savePng(const scenegraph::RenderedImage& image, const std::string& path) {
+    const QImage picture(image.rgba.data(), image.width, image.height, image.width * 4,
+                         QImage::Format_RGBA8888);
+    if (!picture.save(QString::fromStdString(path), "PNG"))
+        throw std::runtime_error(path + ": cannot write the PNG file");
+}
+
 namespace detail {
 scenegraph::RenderedImage renderRootToPng(SoNode* root, const std::string& path, int width,
                                           int height) {
     scenegraph::OffscreenRenderer renderer;
     scenegraph::RenderedImage image =
         renderer.render(root, width, height, scenegraph::kBackgroundColour);
-    QImage picture(image.rgba.data(), image.width, image.height, image.width * 4,
-                   QImage::Format_RGBA8888);
-    if (!picture.save(QString::fromStdString(path), "PNG"))
-        throw std::runtime_error(path + ": cannot write the PNG file");
+    savePng(image, path);
     return image;
 }
 }  // namespace detail

@@ -16,6 +16,9 @@ scenegraph::RenderedImage renderToPng(SoNode* scene, const std::string& path, in
 scenegraph::RenderedImage renderToPng(SoNode* scene, const std::string& path, int width, int height,
                                       const scenegraph::CameraPose& pose);
 
+// Saves an image as PNG; throws std::runtime_error naming the file.
+void savePng(const scenegraph::RenderedImage& image, const std::string& path);
+
 namespace detail {
 scenegraph::RenderedImage renderRootToPng(SoNode* root, const std::string& path, int width,
                                           int height);

@@ -121,7 +121,7 @@ int runReport(const QStringList& args) {
             throw UsageError("caliper3d report: give exactly one FILE (found " +
                              std::to_string(files.size()) + "); run it once per well");
         if (!verb.isSet("output")) throw UsageError("caliper3d report: -o OUT.csv is required");
-        rejectInapplicable(p, "report", {"exaggerate", "segment-length"},
+        rejectInapplicable(p, "report", {"exaggerate", "segment-length", "shape-tolerance"},
                            "they shape the 3D picture, and the report measures the log");
         LoadOptions options = inputOptionsFrom(p);
         const WellSource well = wellSourcesFrom(p, files).front();

@@ -1,6 +1,8 @@
 #include "app/scene_assembly.h"
 
 #include <algorithm>
+#include <chrono>
+#include <thread>
 #include <cstdio>
 #include <exception>
 #include <memory>
@@ -10,6 +12,7 @@
 
 #include "io/parse_error.h"
 #include "reconstruction/load/load_well.h"
+#include "reconstruction/mesh/lod_levels.h"
 #include "reconstruction/well_geometry.h"
 #include "scenegraph/well_scene.h"
 
@@ -22,6 +25,7 @@ AssembledScene assembleScene(const std::vector<std::string>& files, const LoadOp
 }
 
 AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
     AssembledScene out;
     out.root = scenegraph::NodeRef<SoSeparator>(new SoSeparator);
     out.root->setName("caliper3d_scene");
@@ -31,23 +35,50 @@ AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOpt
         try {
             const reconstruction::LoadedWell loaded =
                 reconstruction::loadWell(well, options, origin);
-            scenegraph::WellScene scene;
-            scene.buildAll(*loaded.geometry);
+            auto scene = std::make_shared<scenegraph::WellScene>();
+            scene->buildAll(*loaded.geometry);
             out.geometries.push_back(loaded.geometry);
-            out.root->addChild(scene.root());
+            out.scenes.push_back(scene);
+            out.root->addChild(scene->root());
             ++out.wells;
             const io::Diagnostics& diagnostics = loaded.diagnostics;
             std::printf(
                 "%s: %zu sections, %zu segments, %zu triangles at full detail, %zu warnings\n",
-                file.c_str(), loaded.table->rowCount(), scene.segmentCount(),
-                scene.fullDetailTriangles(), diagnostics.warningCount);
+                file.c_str(), loaded.table->rowCount(), scene->segmentCount(),
+                scene->fullDetailTriangles(), diagnostics.warningCount);
             printWarnings(diagnostics);
         } catch (const std::exception& e) {
             ++out.failures;
             std::fprintf(stderr, "caliper3d: %s\n", e.what());
         }
     }
+    out.load_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return out;
+}
+
+std::size_t refineForView(AssembledScene& scene, const glm::vec3& eye,
+                          const scenegraph::LodView& view) {
+    std::size_t refined = 0;
+    for (std::size_t w = 0; w < scene.scenes.size(); ++w) {
+        scenegraph::WellScene& well = *scene.scenes[w];
+        const reconstruction::WellGeometry& geometry = *scene.geometries[w];
+        well.setLodView(view);
+        const std::vector<scenegraph::DetailRequest> wanted = well.wantedDetail(eye);
+        std::vector<reconstruction::SegmentMesh> meshes(wanted.size());
+        // Meshes on two threads (they read the immutable geometry only); nodes on this one.
+        auto build = [&](std::size_t from) {
+            for (std::size_t i = from; i < wanted.size(); i += 2)
+                meshes[i] = reconstruction::buildSegmentLevels(
+                    geometry, wanted[i].segment, wanted[i].level, wanted[i].heldFrom);
+        };
+        std::thread helper(build, 1);
+        build(0);
+        helper.join();
+        for (const reconstruction::SegmentMesh& mesh : meshes) well.attachFinerLevels(mesh);
+        refined += wanted.size();
+    }
+    return refined;
 }
 
 scenegraph::CameraPose downHolePose(const reconstruction::WellGeometry& geometry, double md_m) {

@@ -10,6 +10,7 @@
 #include "reconstruction/well_geometry.h"
 #include "scenegraph/camera_setup.h"
 #include "scenegraph/node_ref.h"
+#include "scenegraph/well_scene.h"
 
 class SoSeparator;
 
@@ -22,11 +23,20 @@ struct AssembledScene {
     int wells = 0;
     int failures = 0;
     std::vector<std::shared_ptr<const reconstruction::WellGeometry>> geometries;
+    std::vector<std::shared_ptr<scenegraph::WellScene>> scenes;  // one per geometry
+    double load_ms = 0.0;  // reading, geometry and the coarse levels of every well
 };
 // The first well's wellhead is the scene origin; each well's survey, if
 // given, replaces its log's DEVI/HAZI for the path.
 AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOptions& options);
 AssembledScene assembleScene(const std::vector<std::string>& files, const LoadOptions& options);
+
+// Sets every well's level switches for `view`, then builds and attaches, on the calling
+// (main) thread with a helper thread for the meshes, the finer levels each segment should
+// show from `eye` (scene frame): what the window's detail worker does as the camera moves,
+// done at once for one picture. Returns the segments refined.
+std::size_t refineForView(AssembledScene& scene, const glm::vec3& eye,
+                          const scenegraph::LodView& view);
 
 // The fly-through view: a camera on the first well's axis at measured depth
 // `md_m`, looking down the hole, high side up.

@@ -19,9 +19,9 @@ namespace caliper3d::reconstruction {
 
 struct GeometryOptions {
     int splinePoints = 48;               // M: samples of the closed spline per section
-    double segmentLength_m = 10.0;       // the well is cut into segments of this length
-    double coarseSpacing_m = 0.5;        // level 1: raw N-gon every this many metres
-    double coarsestSpacing_m = 2.5;      // level 2: raw N-gon, sparser still
+    double segmentLength_m = 1.0;        // the well is cut into segments of this length
+    double shapeTolerance_mm = 0.5;      // level 1's shape error; coarser levels x4, x16
+                                         //   (reconstruction/mesh/lod_levels.h)
     double steepInclination_deg = 15.0;  // above this, arm 1 comes from RB when present
     // Display only: radii drawn this many times larger around the true path, so
     // that a long well seen whole is more than a line. Analysis never uses it.
@@ -104,7 +104,8 @@ public:
     // Bit radius of a row, millimetres (NaN when unknown).
     double bitRadius_mm(std::size_t row) const;
 
-    // The level-of-detail meshes of one segment (reconstruction/mesh/lod_levels.h builds them).
+    // The level-of-detail meshes of one segment, every level (reconstruction/mesh/lod_levels.h
+    // builds them; buildSegmentLevels builds some).
     SegmentMesh buildSegment(std::size_t segment) const;
     // The closed spline of the full-detail level, shared by every segment.
     const PeriodicSplineSampler& sampler() const { return m_sampler; }

@@ -1,7 +1,9 @@
 #include "scenegraph/segment_node_builder.h"
 
 #include <algorithm>
+#include <cmath>
 
+#include <Inventor/nodes/SoGroup.h>
 #include <Inventor/nodes/SoIndexedTriangleStripSet.h>
 #include <Inventor/nodes/SoLOD.h>
 #include <Inventor/nodes/SoVertexProperty.h>
@@ -39,20 +41,49 @@ SoIndexedTriangleStripSet* makeStripSet(const reconstruction::Mesh& mesh) {
     return strips;
 }
 
-float lodRange(const reconstruction::SegmentMesh& segment, int level) {
-    // Full detail only close by; the N-gon levels a few segment lengths away.
-    const float size = std::max(segment.radius * 2.0f, 1.0f);
-    return level == 0 ? size * 1.5f : size * 6.0f;
+LodView lodViewFor(int viewportHeight_px, float heightAngle_rad, float pixelTolerance) {
+    LodView view;
+    const float half = std::tan(std::clamp(heightAngle_rad, 0.01f, 3.0f) / 2.0f);
+    view.focal_px = static_cast<float>(std::max(viewportHeight_px, 1)) / 2.0f / half;
+    view.pixelTolerance = std::max(pixelTolerance, 0.01f);
+    return view;
 }
 
-SoLOD* makeSegmentLod(const reconstruction::SegmentMesh& segment) {
+std::vector<float> lodSwitchDistances(const reconstruction::SegmentMesh& segment,
+                                      const LodView& view) {
+    const std::size_t levels = segment.levelError_mm.size();
+    std::vector<float> out(levels);
+    const float scale = view.focal_px / view.pixelTolerance / 1000.0f;  // mm of error -> m
+    float previous = 0.0f;
+    for (std::size_t i = 0; i < levels; ++i) {
+        const float error_mm = i + 1 < levels ? segment.levelError_mm[i + 1]
+                                              : 2000.0f * segment.maxRadius_m;
+        previous = std::max(previous, error_mm * scale + segment.radius);
+        out[i] = previous;
+    }
+    return out;
+}
+
+int lodLevelAt(const std::vector<float>& switchDistances, float distance) {
+    int level = 0;
+    while (level < static_cast<int>(switchDistances.size()) &&
+           distance >= switchDistances[static_cast<std::size_t>(level)])
+        ++level;
+    return level;
+}
+
+SoLOD* makeSegmentLod(const reconstruction::SegmentMesh& segment, const LodView& view) {
     assertMainThread("makeSegmentLod");
     auto* lod = new SoLOD;
     lod->center.setValue(segment.centre.x, segment.centre.y, segment.centre.z);
-    const int levels = static_cast<int>(segment.levels.size());
-    for (int i = 0; i + 1 < levels; ++i) lod->range.set1Value(i, lodRange(segment, i));
-    if (levels <= 1) lod->range.setNum(0);
+    const std::vector<float> distances = lodSwitchDistances(segment, view);
+    int i = 0;
+    for (std::size_t level = static_cast<std::size_t>(segment.firstLevel);
+         level < distances.size(); ++level)
+        lod->range.set1Value(i++, distances[level]);
+    if (i == 0) lod->range.setNum(0);
     for (const auto& mesh : segment.levels) lod->addChild(makeStripSet(mesh));
+    lod->addChild(new SoGroup);  // past the last level: nothing (the path line shows the well)
     return lod;
 }
 

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <vector>
+
 #include "reconstruction/mesh/mesh.h"
 #include "reconstruction/well_geometry.h"
 
@@ -12,12 +14,30 @@ namespace caliper3d::scenegraph {
 // normals, per-vertex colours when the mesh has them). Main thread only.
 SoIndexedTriangleStripSet* makeStripSet(const reconstruction::Mesh& mesh);
 
-// A segment as an SoLOD: children finest first, switching at distances that
-// grow with the segment's size. Main thread only.
-SoLOD* makeSegmentLod(const reconstruction::SegmentMesh& segment);
+// How finely the picture needs the wall: the focal length in pixels (half the viewport
+// height over the tangent of half the camera's height angle) and the shape error, in
+// pixels, that may show. Level switches follow from it, so they hold at any window size
+// and field of view.
+struct LodView {
+    float focal_px = 966.0f;  // 800 pixels high, 45 degrees
+    float pixelTolerance = 2.0f;
+};
+LodView lodViewFor(int viewportHeight_px, float heightAngle_rad, float pixelTolerance = 2.0f);
 
-// The distance (scene units, metres) beyond which SoLOD shows level `level`;
-// level 0 below lodRange(0).
-float lodRange(const reconstruction::SegmentMesh& segment, int level);
+// The distances (scene units, metres, eye to the segment's centre) at which a segment
+// switches from pyramid level i to level i + 1, for every level of its pyramid; past the
+// last the segment draws nothing (its wall is under `pixelTolerance` pixels wide, and the
+// path line shows the well). A level's shape error must project under the tolerance:
+// distance >= error x focal / tolerance, plus the segment's radius (the wall may be that
+// much nearer than the centre). Never decreasing.
+std::vector<float> lodSwitchDistances(const reconstruction::SegmentMesh& segment,
+                                      const LodView& view);
+
+// The pyramid level a segment should show at `distance` (levelError_mm.size() = nothing).
+int lodLevelAt(const std::vector<float>& switchDistances, float distance);
+
+// A segment as an SoLOD: its levels (segment.firstLevel on), finest first, then an empty
+// group, switching at lodSwitchDistances. Main thread only.
+SoLOD* makeSegmentLod(const reconstruction::SegmentMesh& segment, const LodView& view = {});
 
 }  // namespace caliper3d::scenegraph

@@ -1,6 +1,7 @@
 #include "scenegraph/well_scene.h"
 
 #include <Inventor/nodes/SoCoordinate3.h>
+#include <Inventor/nodes/SoIndexedTriangleStripSet.h>
 #include <Inventor/nodes/SoDrawStyle.h>
 #include <Inventor/nodes/SoLOD.h>
 #include <Inventor/nodes/SoLightModel.h>
@@ -9,6 +10,11 @@
 #include <Inventor/nodes/SoSeparator.h>
 #include <Inventor/nodes/SoShapeHints.h>
 
+#include <algorithm>
+
+#include <glm/geometric.hpp>
+
+#include "reconstruction/mesh/lod_levels.h"
 #include "reconstruction/section/section_frame.h"
 #include "scenegraph/main_thread.h"
 #include "scenegraph/segment_node_builder.h"
@@ -66,14 +72,106 @@ void WellScene::setPath(const reconstruction::WellGeometry& geometry, double spa
 
 void WellScene::addSegment(const reconstruction::SegmentMesh& segment) {
     assertMainThread("WellScene::addSegment");
-    m_segments->addChild(makeSegmentLod(segment));
-    ++m_segmentCount;
-    if (!segment.levels.empty()) m_fullTriangles += segment.levels.front().triangleCount();
+    Record record;
+    record.lod = makeSegmentLod(segment, m_view);
+    record.centre = segment.centre;
+    record.heldFrom = segment.firstLevel;
+    record.coarseFrom = segment.firstLevel;
+    record.shape = segment;
+    record.shape.levels.clear();
+    record.switchDistances = lodSwitchDistances(segment, m_view);
+    m_segments->addChild(record.lod);
+    m_fullTriangles += segment.fullDetailTriangles;
+    m_records.push_back(std::move(record));
 }
 
 void WellScene::buildAll(const reconstruction::WellGeometry& geometry) {
     setPath(geometry);
+    for (std::size_t s = 0; s < geometry.segmentCount(); ++s)
+        addSegment(reconstruction::buildSegmentLevels(geometry, s,
+                                                      reconstruction::kFirstCoarseLevel, 1 << 30));
+}
+
+void WellScene::buildAllLevels(const reconstruction::WellGeometry& geometry) {
+    setPath(geometry);
     for (std::size_t s = 0; s < geometry.segmentCount(); ++s) addSegment(geometry.buildSegment(s));
+}
+
+void WellScene::setRanges(Record& record) {
+    SoMFFloat& range = record.lod->range;
+    const int first = record.heldFrom;
+    const int count = static_cast<int>(record.switchDistances.size()) - first;
+    range.setNum(std::max(count, 0));
+    for (int i = 0; i < count; ++i)
+        range.set1Value(i, record.switchDistances[static_cast<std::size_t>(first + i)]);
+}
+
+void WellScene::setLodView(const LodView& view) {
+    assertMainThread("WellScene::setLodView");
+    m_view = view;
+    for (Record& record : m_records) {
+        record.switchDistances = lodSwitchDistances(record.shape, m_view);
+        setRanges(record);
+    }
+}
+
+std::vector<DetailRequest> WellScene::wantedDetail(const glm::vec3& eye) {
+    ++m_tick;
+    std::vector<DetailRequest> out;
+    for (std::size_t s = 0; s < m_records.size(); ++s) {
+        Record& record = m_records[s];
+        const float distance = glm::length(record.centre - eye);
+        const int level = lodLevelAt(record.switchDistances, distance);
+        if (level < record.coarseFrom) record.lastWanted = m_tick;
+        if (level < record.heldFrom) out.push_back({s, level, record.heldFrom, distance});
+    }
+    std::sort(out.begin(), out.end(), [](const DetailRequest& a, const DetailRequest& b) {
+        return a.distance < b.distance;
+    });
+    return out;
+}
+
+void WellScene::attachFinerLevels(const reconstruction::SegmentMesh& finer) {
+    assertMainThread("WellScene::attachFinerLevels");
+    if (finer.index >= m_records.size()) return;
+    Record& record = m_records[finer.index];
+    // Only the levels it lacks, finest first, in front of those it holds.
+    const int count = std::min(static_cast<int>(finer.levels.size()),
+                               record.heldFrom - finer.firstLevel);
+    if (count <= 0) return;
+    for (int i = count - 1; i >= 0; --i) {
+        const reconstruction::Mesh& mesh = finer.levels[static_cast<std::size_t>(i)];
+        record.lod->insertChild(makeStripSet(mesh), 0);
+        record.fineTriangles += mesh.triangleCount();
+        m_fineTriangles += mesh.triangleCount();
+    }
+    record.heldFrom = finer.firstLevel;
+    record.lastWanted = m_tick;
+    setRanges(record);
+}
+
+std::size_t WellScene::evictFineLevels(std::size_t budgetTriangles) {
+    assertMainThread("WellScene::evictFineLevels");
+    if (m_fineTriangles <= budgetTriangles) return 0;
+    std::vector<std::size_t> held;
+    for (std::size_t s = 0; s < m_records.size(); ++s)
+        if (m_records[s].heldFrom < m_records[s].coarseFrom && m_records[s].lastWanted < m_tick)
+            held.push_back(s);
+    std::sort(held.begin(), held.end(), [&](std::size_t a, std::size_t b) {
+        return m_records[a].lastWanted < m_records[b].lastWanted;
+    });
+    std::size_t dropped = 0;
+    for (std::size_t s : held) {
+        if (m_fineTriangles <= budgetTriangles) break;
+        Record& record = m_records[s];
+        for (int i = record.heldFrom; i < record.coarseFrom; ++i) record.lod->removeChild(0);
+        m_fineTriangles -= record.fineTriangles;
+        record.fineTriangles = 0;
+        record.heldFrom = record.coarseFrom;
+        setRanges(record);
+        ++dropped;
+    }
+    return dropped;
 }
 
 }  // namespace caliper3d::scenegraph

@@ -9,6 +9,7 @@ GeometryOptions geometryOptions(const LoadOptions& options) {
     GeometryOptions g;
     g.splinePoints = options.splinePoints;
     g.segmentLength_m = options.segmentLength_m;
+    g.shapeTolerance_mm = options.shapeTolerance_mm;
     g.radialExaggeration = options.radialExaggeration;
     g.steepInclination_deg = options.steepInclination_deg;
     g.maxArmRadius_mm = options.toolReach_mm;

@@ -29,7 +29,8 @@ struct WellSource {
 struct LoadOptions {
     io::ReadOptions read;
     int splinePoints = 48;
-    double segmentLength_m = 10.0;
+    double segmentLength_m = 1.0;
+    double shapeTolerance_mm = 0.5;  // level-of-detail shape error of the finest coarse level
     double radialExaggeration = 1.0;
     double steepInclination_deg = 15.0;  // above this, arm 1 comes from RB when present
     double toolReach_mm = 1.0e9;         // arm readings beyond this are repaired

@@ -1,5 +1,7 @@
 #include "reconstruction/load/well_load_pipeline.h"
 
+#include "reconstruction/mesh/lod_levels.h"
+
 #include <exception>
 
 namespace caliper3d::reconstruction {
@@ -36,7 +38,7 @@ void WellLoadPipeline::run() {
         std::size_t built = 0;
         for (std::size_t s = 0; s < geometry->segmentCount(); ++s) {
             if (m_cancelled.load()) break;
-            m_events.push(geometry->buildSegment(s));
+            m_events.push(buildSegmentLevels(*geometry, s, kFirstCoarseLevel, 1 << 30));
             ++built;
         }
         m_events.push(LoadFinished{built});

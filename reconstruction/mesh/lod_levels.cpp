@@ -1,5 +1,9 @@
 #include "reconstruction/mesh/lod_levels.h"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -14,18 +18,10 @@ namespace caliper3d::reconstruction {
 
 namespace {
 
-// Appends the ring of one row: the spline samples (spline) or the pads themselves, with outward
-// normals and colours by departure from the bit.
-void appendRing(const WellGeometry& g, Mesh& mesh, std::size_t row, bool spline) {
-    std::vector<double> pads(static_cast<std::size_t>(g.knotCount()));
-    g.sectionKnots(row, pads.data());
-    std::vector<double> radii;
-    if (spline) {
-        radii.resize(static_cast<std::size_t>(g.sampler().samples()));
-        g.sampler().sample(pads.data(), radii.data());
-    } else {
-        radii = pads;
-    }
+// Appends the ring of one row: `radii` at equal angles from arm 1, with outward normals and
+// colours by departure from the bit.
+void appendRing(const WellGeometry& g, Mesh& mesh, std::size_t row,
+                const std::vector<double>& radii) {
     const int points = static_cast<int>(radii.size());
     const SectionFrame& f = g.frame(row);
     const Ned c = g.centre(row);
@@ -58,55 +54,131 @@ bool measuredThrough(const WellGeometry& g, std::size_t first, std::size_t last)
     return true;
 }
 
-// Rings of the measured rows among `rows`; a strip joins two consecutive ones
-// only when every row between them is measured, so a no-data interval is a
-// gap in the wall at every level (the path line still crosses it).
-Mesh buildLevel(const WellGeometry& g, const std::vector<std::size_t>& rows, bool spline) {
+// Rings of the measured rows among `rows`; a strip joins two consecutive ones only when every
+// row between them is measured, so a no-data interval is a gap in the wall at every level
+// (the path line still crosses it). The segment's first and last rows get the full spline at
+// every level: neighbouring segments share those rings exactly, whatever level each shows,
+// so no crack opens between them.
+Mesh buildLevel(const WellGeometry& g, const std::vector<std::size_t>& rows, int points) {
     Mesh mesh;
-    const int points = spline ? g.sampler().samples() : g.knotCount();
-    mesh.positions.reserve(rows.size() * static_cast<std::size_t>(points));
-    std::int32_t rings = 0;
+    const int knots = g.knotCount();
+    const int levelPoints = points > 0 ? points : knots;
+    const int endPoints = g.sampler().samples();
+    std::optional<PeriodicSplineSampler> sampler;
+    if (points > 0 && points != endPoints) sampler.emplace(knots, points);
+    mesh.positions.reserve(rows.size() * static_cast<std::size_t>(levelPoints));
+    std::vector<double> pads(static_cast<std::size_t>(knots));
+    std::vector<double> radii;
+    std::int32_t previousStart = 0;
+    int previousPoints = 0;
     bool joinable = false;  // the last ring appended was rows[i - 1]
     for (std::size_t i = 0; i < rows.size(); ++i) {
         if (!g.measured(rows[i])) {
             joinable = false;
             continue;
         }
-        appendRing(g, mesh, rows[i], spline);
-        ++rings;
+        g.sectionKnots(rows[i], pads.data());
+        const bool end = i == 0 || i + 1 == rows.size();
+        const int ringPoints = end ? endPoints : levelPoints;
+        radii.resize(static_cast<std::size_t>(ringPoints));
+        if (ringPoints == endPoints)
+            g.sampler().sample(pads.data(), radii.data());
+        else if (sampler)
+            sampler->sample(pads.data(), radii.data());
+        else
+            radii = pads;
+        const auto start = static_cast<std::int32_t>(mesh.positions.size());
+        appendRing(g, mesh, rows[i], radii);
         if (joinable && measuredThrough(g, rows[i - 1], rows[i]))
-            appendClosedStrip(mesh.stripIndices, (rings - 2) * points, (rings - 1) * points,
-                              points);
+            appendClosedStrip(mesh.stripIndices, previousStart, previousPoints, start, ringPoints);
+        previousStart = start;
+        previousPoints = ringPoints;
         joinable = true;
     }
     return mesh;
 }
 
-// Rows of a coarse level: picked at a fixed depth spacing, ends always kept so that
-// neighbouring segments meet without a gap at every level.
-std::vector<std::size_t> coarseRows(const WellGeometry& g, std::size_t first, std::size_t last,
-                                    double spacing_m) {
-    const std::vector<double>& depth = g.table().depth_m;
-    std::vector<std::size_t> rows{first};
-    double next = depth[first] + spacing_m;
-    for (std::size_t r = first + 1; r < last; ++r) {
-        // The measured rows next to a gap are kept too, so that the wall
-        // reaches the gap's edges as it does at full detail.
-        const bool gapEdge = g.measured(r) && (!g.measured(r - 1) || !g.measured(r + 1));
-        if (depth[r] >= next || gapEdge) {
-            rows.push_back(r);
-            next = depth[r] + spacing_m;
-        }
-    }
-    rows.push_back(last);
-    return rows;
+// The largest chord error of a closed polygon of `points` vertices on a circle of `radius`.
+double chordError(double radius, int points) {
+    return radius * (1.0 - std::cos(glm::pi<double>() / std::max(points, 3)));
 }
 
 }  // namespace
 
-SegmentMesh buildSegmentMesh(const WellGeometry& geometry, std::size_t segment) {
+std::vector<LodLevel> lodPyramid(const GeometryOptions& options) {
+    const double t = options.shapeTolerance_mm;
+    const int m = std::max(options.splinePoints, 6);
+    return {
+        {0.0, 0.0, m},
+        {t, 0.05, std::max(m / 2, 6)},
+        {4.0 * t, 0.25, std::max(m / 4, 6)},
+        {16.0 * t, 1.0, 0},
+    };
+}
+
+std::vector<std::size_t> decimatedRows(const WellGeometry& g, std::size_t first, std::size_t last,
+                                       const LodLevel& level) {
+    std::vector<std::size_t> rows;
+    if (level.maxSpacing_m <= 0.0) {
+        for (std::size_t r = first; r <= last; ++r) rows.push_back(r);
+        return rows;
+    }
+    const std::vector<double>& depth = g.table().depth_m;
+    const std::size_t knots = static_cast<std::size_t>(g.knotCount());
+    // The knots of every row, once.
+    std::vector<double> values((last - first + 1) * knots);
+    for (std::size_t r = first; r <= last; ++r)
+        if (g.measured(r)) g.sectionKnots(r, values.data() + (r - first) * knots);
+    auto value = [&](std::size_t r, std::size_t k) { return values[(r - first) * knots + k]; };
+    const double tol = level.tolerance_mm;
+    std::vector<double> lo(knots), hi(knots);
+    auto mustKeep = [&](std::size_t r) {
+        return r == first || r == last || !g.measured(r) ||
+               (g.measured(r) && (!g.measured(r - 1) || !g.measured(r + 1)));
+    };
+    rows.push_back(first);
+    std::size_t anchor = first;
+    while (anchor < last) {
+        std::fill(lo.begin(), lo.end(), -std::numeric_limits<double>::infinity());
+        std::fill(hi.begin(), hi.end(), std::numeric_limits<double>::infinity());
+        std::size_t best = anchor + 1;
+        const bool anchorMeasured = g.measured(anchor);
+        for (std::size_t r = anchor + 1; r <= last; ++r) {
+            const double dd = depth[r] - depth[anchor];
+            if (dd > level.maxSpacing_m && r > anchor + 1) break;
+            if (!anchorMeasured || mustKeep(r) || !(dd > 0.0)) {
+                best = r;
+                break;
+            }
+            // r may end the run when the straight line to it stays inside every corridor.
+            bool fits = true;
+            for (std::size_t k = 0; k < knots && fits; ++k) {
+                const double slope = (value(r, k) - value(anchor, k)) / dd;
+                fits = slope >= lo[k] && slope <= hi[k];
+            }
+            if (!fits) break;
+            best = r;
+            bool open = true;
+            for (std::size_t k = 0; k < knots; ++k) {
+                lo[k] = std::max(lo[k], (value(r, k) - tol - value(anchor, k)) / dd);
+                hi[k] = std::min(hi[k], (value(r, k) + tol - value(anchor, k)) / dd);
+                open = open && lo[k] <= hi[k];
+            }
+            if (!open) break;
+        }
+        rows.push_back(best);
+        anchor = best;
+    }
+    return rows;
+}
+
+SegmentMesh buildSegmentLevels(const WellGeometry& geometry, std::size_t segment, int from,
+                               int to) {
     if (segment >= geometry.segmentCount())
-        throw std::out_of_range("buildSegmentMesh: no segment " + std::to_string(segment));
+        throw std::out_of_range("buildSegmentLevels: no segment " + std::to_string(segment));
+    const std::vector<LodLevel> pyramid = lodPyramid(geometry.options());
+    to = std::min(to, static_cast<int>(pyramid.size()));
+    from = std::clamp(from, 0, to);
     const auto [first, last] = geometry.segmentRows(segment);
     SegmentMesh out;
     out.index = segment;
@@ -114,19 +186,43 @@ SegmentMesh buildSegmentMesh(const WellGeometry& geometry, std::size_t segment) 
     out.lastRow = last;
     out.top_m = geometry.table().depth_m[first];
     out.bottom_m = geometry.table().depth_m[last];
+    out.firstLevel = from;
 
-    std::vector<std::size_t> all;
-    for (std::size_t r = first; r <= last; ++r) all.push_back(r);
-    out.levels.push_back(buildLevel(geometry, all, true));
-    for (double spacing :
-         {geometry.options().coarseSpacing_m, geometry.options().coarsestSpacing_m})
-        out.levels.push_back(
-            buildLevel(geometry, coarseRows(geometry, first, last, spacing), false));
+    // The largest drawn radius of the segment bounds every level's error.
+    double maxRadius_mm = 0.0;
+    std::vector<double> knots(static_cast<std::size_t>(geometry.knotCount()));
+    for (std::size_t r = first; r <= last; ++r) {
+        if (!geometry.measured(r)) continue;
+        geometry.sectionKnots(r, knots.data());
+        for (double k : knots) maxRadius_mm = std::max(maxRadius_mm, k);
+    }
+    for (std::size_t r = first; r < last; ++r)
+        if (geometry.measured(r) && geometry.measured(r + 1))
+            out.fullDetailTriangles += 2 * static_cast<std::size_t>(pyramid.front().points);
+    const double drawn_mm = maxRadius_mm * geometry.options().radialExaggeration;
+    out.maxRadius_m = static_cast<float>(drawn_mm / 1000.0);
+    for (std::size_t i = 0; i < pyramid.size(); ++i) {
+        const LodLevel& l = pyramid[i];
+        const double error = i == 0 ? 0.0
+                                    : l.tolerance_mm * geometry.options().radialExaggeration +
+                                          chordError(drawn_mm, l.points > 0
+                                                                   ? l.points
+                                                                   : geometry.knotCount());
+        out.levelError_mm.push_back(static_cast<float>(error));
+    }
+    for (int i = from; i < to; ++i) {
+        const LodLevel& l = pyramid[static_cast<std::size_t>(i)];
+        out.levels.push_back(buildLevel(geometry, decimatedRows(geometry, first, last, l), l.points));
+    }
 
     const glm::dvec3 a = toScene(geometry.centre(first)), b = toScene(geometry.centre(last));
     out.centre = glm::vec3((a + b) / 2.0);
-    out.radius = static_cast<float>(glm::length(b - a) / 2.0 + 1.0);
+    out.radius = static_cast<float>(glm::length(b - a) / 2.0) + out.maxRadius_m;
     return out;
+}
+
+SegmentMesh buildSegmentMesh(const WellGeometry& geometry, std::size_t segment) {
+    return buildSegmentLevels(geometry, segment, 0, std::numeric_limits<int>::max());
 }
 
 }  // namespace caliper3d::reconstruction

@@ -1,20 +1,48 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 #include "reconstruction/mesh/mesh.h"
 
 namespace caliper3d::reconstruction {
 
 class WellGeometry;
+struct GeometryOptions;
 
-// The level-of-detail meshes of one segment of a well (docs/architecture.md, "Data flow"):
-//   level 0  every row, the closed spline of GeometryOptions::splinePoints points;
-//   level 1  the raw N-gon of the pads, a row every GeometryOptions::coarseSpacing_m;
-//   level 2  the raw N-gon, a row every GeometryOptions::coarsestSpacing_m.
-// A new level is one more entry here (and one more SoLOD child in scenegraph/). Rows without
-// data are a gap in the wall at every level. Reads only the geometry's public, immutable state,
-// so any thread may build any segment.
+// One level of a segment's level-of-detail pyramid (docs/architecture.md, "Level of detail").
+struct LodLevel {
+    double tolerance_mm = 0.0;  // a section is left out while the sections kept on either side
+                                //   interpolate every one of its arms within this (shape error)
+    double maxSpacing_m = 0.0;  // kept sections are never further apart (0: keep every section)
+    int points = 0;             // samples of the closed spline per section; 0: the pads' N-gon
+};
+
+// The pyramid, finest first: level 0 every section with GeometryOptions::splinePoints points;
+// each next level a coarser shape tolerance (GeometryOptions::shapeTolerance_mm x 1, 4, 16),
+// a longer longest spacing and fewer points, down to the raw N-gon. A new level is one more
+// entry here; the scene graph adds an empty last level of its own (nothing drawn once a
+// segment is under a pixel or two wide, where the path line shows the well).
+std::vector<LodLevel> lodPyramid(const GeometryOptions& options);
+
+// Levels built for the whole well up front; finer ones are built on demand, near the camera.
+inline constexpr int kFirstCoarseLevel = 2;
+
+// Rows a level keeps among [first, last]: both ends, every measured row next to a no-data
+// row (so the wall reaches a gap's edges at every level), and otherwise a row only where
+// leaving it out would move one of its arms by more than tolerance_mm from the straight line
+// (in depth) between the rows kept on either side, or spread kept rows over maxSpacing_m.
+// One pass, a slope corridor per arm: the rows between two kept rows are checked as the
+// corridor narrows (the swing-door test), never one at a time against every pair.
+std::vector<std::size_t> decimatedRows(const WellGeometry& geometry, std::size_t first,
+                                       std::size_t last, const LodLevel& level);
+
+// Levels [from, to) of one segment's pyramid (to clipped to the pyramid's size). Rows
+// without data are a gap in the wall at every level. Reads only the geometry's public,
+// immutable state, so any thread may build any segment.
+SegmentMesh buildSegmentLevels(const WellGeometry& geometry, std::size_t segment, int from,
+                               int to);
+// Every level.
 SegmentMesh buildSegmentMesh(const WellGeometry& geometry, std::size_t segment);
 
 }  // namespace caliper3d::reconstruction

@@ -27,7 +27,14 @@ struct Mesh {
 void appendClosedStrip(std::vector<std::int32_t>& indices, std::int32_t firstA,
                        std::int32_t firstB, int points);
 
-// One segment's meshes, finest level first.
+// The same between rings of different vertex counts (a coarse level's ring and the full
+// ring a segment ends with): vertices paired by angle, zero-area triangles where one ring
+// has no new vertex, so no crack opens between them.
+void appendClosedStrip(std::vector<std::int32_t>& indices, std::int32_t firstA, int pointsA,
+                       std::int32_t firstB, int pointsB);
+
+// One segment's meshes: levels firstLevel, firstLevel + 1, ... of its pyramid
+// (reconstruction/mesh/lod_levels.h), finest first.
 struct SegmentMesh {
     std::size_t index = 0;
     std::size_t firstRow = 0;  // rows [firstRow, lastRow], sharing lastRow with the next segment
@@ -36,6 +43,10 @@ struct SegmentMesh {
     double bottom_m = 0.0;
     glm::vec3 centre{0.0f};  // scene frame, for LOD distances
     float radius = 0.0f;     // bounding sphere radius, scene units (metres)
+    float maxRadius_m = 0.0f;  // largest drawn radius of the wall
+    int firstLevel = 0;        // pyramid level of levels[0]
+    std::size_t fullDetailTriangles = 0;  // of level 0, built or not
+    std::vector<float> levelError_mm;  // per pyramid level (all of them): drawn shape error
     std::vector<Mesh> levels;
 };
 

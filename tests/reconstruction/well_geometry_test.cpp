@@ -22,7 +22,9 @@ std::shared_ptr<const caliper3d::io::SectionTable> circleWell(double length, dou
 }  // namespace
 
 TEST(WellGeometryTest, SegmentsCoverEveryRowAndShareBoundaries) {
-    WellGeometry g(circleWell(35.0, 0.1), GeometryOptions{});
+    GeometryOptions options;
+    options.segmentLength_m = 10.0;
+    WellGeometry g(circleWell(35.0, 0.1), options);
     ASSERT_EQ(g.segmentCount(), 4u);  // 10 m segments over 35 m
     EXPECT_EQ(g.segmentRows(0).first, 0u);
     for (std::size_t s = 1; s < g.segmentCount(); ++s)
@@ -33,19 +35,32 @@ TEST(WellGeometryTest, SegmentsCoverEveryRowAndShareBoundaries) {
 TEST(WellGeometryTest, FullLevelHasSplineRingsAndCoarseLevelsAreNGons) {
     GeometryOptions options;
     options.splinePoints = 48;
+    options.segmentLength_m = 10.0;
     WellGeometry g(circleWell(10.0, 0.1), options);
     const SegmentMesh seg = g.buildSegment(0);
-    ASSERT_EQ(seg.levels.size(), 3u);
+    ASSERT_EQ(seg.levels.size(), 4u);
     const std::size_t rings = seg.lastRow - seg.firstRow + 1;
     EXPECT_EQ(seg.levels[0].positions.size(), rings * 48);
     EXPECT_EQ(seg.levels[0].triangleCount(), (rings - 1) * 96);
-    EXPECT_EQ(seg.levels[1].positions.size() % 6, 0u);
-    EXPECT_LT(seg.levels[1].positions.size(), seg.levels[0].positions.size() / 8);
-    EXPECT_LE(seg.levels[2].positions.size(), seg.levels[1].positions.size());
+    EXPECT_EQ(seg.fullDetailTriangles, seg.levels[0].triangleCount());
+    // Fewer points per section at each step, the raw 6-gon last.
+    EXPECT_EQ(seg.levels[1].positions.size() % 24, 0u);
+    EXPECT_EQ(seg.levels[2].positions.size() % 12, 0u);
+    EXPECT_EQ(seg.levels[3].positions.size() % 6, 0u);
+    // A gauge circle is interpolated exactly: the coarse levels keep a section a longest spacing.
+    EXPECT_LT(seg.levels[3].positions.size(), seg.levels[0].positions.size() / 8);
+    for (std::size_t l = 1; l < seg.levels.size(); ++l)
+        EXPECT_LT(seg.levels[l].triangleCount(), seg.levels[l - 1].triangleCount()) << l;
+    // Errors grow level by level; full detail has none.
+    ASSERT_EQ(seg.levelError_mm.size(), 4u);
+    EXPECT_EQ(seg.levelError_mm[0], 0.0f);
+    for (std::size_t l = 1; l < 4; ++l) EXPECT_GT(seg.levelError_mm[l], seg.levelError_mm[l - 1]);
 }
 
 TEST(WellGeometryTest, GaugeHoleVerticesLieAtBitRadiusAroundTheAxis) {
-    WellGeometry g(circleWell(10.0, 0.5), GeometryOptions{});
+    GeometryOptions options;
+    options.segmentLength_m = 10.0;
+    WellGeometry g(circleWell(10.0, 0.5), options);
     const SegmentMesh seg = g.buildSegment(0);
     const Mesh& m = seg.levels[0];
     for (std::size_t i = 0; i < m.positions.size(); ++i) {
@@ -78,6 +93,7 @@ TEST(WellGeometryTest, RejectsDepthsThatDoNotIncrease) {
 TEST(WellGeometryTest, RadialExaggerationScalesTheDrawnRadiusOnly) {
     GeometryOptions options;
     options.radialExaggeration = 20.0;
+    options.segmentLength_m = 10.0;
     WellGeometry g(circleWell(10.0, 0.5), options);
     const SegmentMesh segment = g.buildSegment(0);
     const Mesh& m = segment.levels[0];

@@ -27,6 +27,11 @@ protected:
         }
     }
 };
+reconstruction::GeometryOptions tenMetreSegments() {
+    reconstruction::GeometryOptions options;
+    options.segmentLength_m = 10.0;
+    return options;
+}
 }  // namespace
 
 TEST_F(SegmentFeederTest, WorkerSegmentsReachTheSceneOnTheMainThread) {
@@ -35,7 +40,7 @@ TEST_F(SegmentFeederTest, WorkerSegmentsReachTheSceneOnTheMainThread) {
             return reconstruction::makeSyntheticWell(
                 reconstruction::syntheticProfile("example", 80.0, 0.1));
         },
-        reconstruction::GeometryOptions{});
+        tenMetreSegments());
     scenegraph::WellScene scene;
     std::size_t finishedWith = 0;
     bool started = false;

@@ -43,9 +43,11 @@ TEST_F(SegmentNodeBuilderTest, SegmentBecomesLodFinestFirstWithIncreasingRanges)
     reconstruction::WellGeometry geometry(table, reconstruction::GeometryOptions{});
     const reconstruction::SegmentMesh segment = geometry.buildSegment(0);
     auto lod = scenegraph::makeRef(scenegraph::makeSegmentLod(segment));
-    ASSERT_EQ(lod->getNumChildren(), 3);
-    ASSERT_EQ(lod->range.getNum(), 2);
-    EXPECT_LT(lod->range[0], lod->range[1]);
+    // Every level, then an empty group for a segment too far to show.
+    ASSERT_EQ(lod->getNumChildren(), 5);
+    ASSERT_EQ(lod->range.getNum(), 4);
+    for (int i = 1; i < 4; ++i) EXPECT_LT(lod->range[i - 1], lod->range[i]) << i;
+    EXPECT_EQ(lod->getChild(4)->getTypeId(), SoGroup::getClassTypeId());
     EXPECT_EQ(lod->center.getValue(),
               SbVec3f(segment.centre.x, segment.centre.y, segment.centre.z));
     auto count = [&](int child) {
@@ -55,4 +57,5 @@ TEST_F(SegmentNodeBuilderTest, SegmentBecomesLodFinestFirstWithIncreasingRanges)
     EXPECT_EQ(count(0), static_cast<int>(segment.levels[0].positions.size()));
     EXPECT_GT(count(0), count(1));
     EXPECT_GE(count(1), count(2));
+    EXPECT_GE(count(2), count(3));
 }

@@ -1,0 +1,38 @@
+#include "scenegraph/render_stats.h"
+
+#include <sys/resource.h>
+
+#include <Inventor/SbViewportRegion.h>
+#include <Inventor/actions/SoGetPrimitiveCountAction.h>
+#include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/nodes/SoCamera.h>
+
+#include "scenegraph/main_thread.h"
+
+namespace caliper3d::scenegraph {
+
+SoCamera* findCamera(SoNode* root) {
+    assertMainThread("findCamera");
+    SoSearchAction search;
+    search.setType(SoCamera::getClassTypeId());
+    search.setInterest(SoSearchAction::FIRST);
+    search.apply(root);
+    SoPath* path = search.getPath();
+    return path ? static_cast<SoCamera*>(path->getTail()) : nullptr;
+}
+
+std::size_t trianglesDrawn(SoNode* root, int width, int height) {
+    assertMainThread("trianglesDrawn");
+    SoGetPrimitiveCountAction count(SbViewportRegion(static_cast<short>(width),
+                                                     static_cast<short>(height)));
+    count.apply(root);
+    return static_cast<std::size_t>(count.getTriangleCount());
+}
+
+double peakRss_mb() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
+}
+
+}  // namespace caliper3d::scenegraph

@@ -1,0 +1,20 @@
+#pragma once
+
+#include <cstddef>
+
+class SoCamera;
+class SoNode;
+
+namespace caliper3d::scenegraph {
+
+// The first camera under `root` (nullptr when none).
+SoCamera* findCamera(SoNode* root);
+
+// Triangles a render of `root` (camera included) at width x height draws: SoLOD picks its
+// child from the camera as when rendering (SoGetPrimitiveCountAction).
+std::size_t trianglesDrawn(SoNode* root, int width, int height);
+
+// Peak resident memory of this process, MiB (getrusage).
+double peakRss_mb();
+
+}  // namespace caliper3d::scenegraph

@@ -1,0 +1,123 @@
+// Level switching as the camera moves: which levels a WellScene asks for, holds and drops,
+// and what SoLOD then draws (SoGetPrimitiveCountAction, as the render verb counts it).
+#include <algorithm>
+#include <memory>
+#include <vector>
+
+#include <Inventor/actions/SoGetPrimitiveCountAction.h>
+#include <Inventor/nodes/SoPerspectiveCamera.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+#include "coin_fixture.h"
+#include "reconstruction/mesh/lod_levels.h"
+#include "reconstruction/synthetic/synthetic_well.h"
+#include "reconstruction/well_geometry.h"
+#include "scenegraph/node_ref.h"
+#include "scenegraph/render_stats.h"
+#include "scenegraph/segment_node_builder.h"
+#include "scenegraph/well_scene.h"
+
+using namespace caliper3d;
+
+namespace {
+class LevelOfDetailTest : public CoinTest {
+protected:
+    // A 40 m vertical well at 2.5 mm, 1 m segments: 16,001 sections.
+    static std::shared_ptr<const reconstruction::WellGeometry> well(double length_m = 40.0) {
+        return std::make_shared<const reconstruction::WellGeometry>(
+            std::make_shared<const io::SectionTable>(reconstruction::makeSyntheticWell(
+                reconstruction::syntheticProfile("example", length_m, 0.0025))),
+            reconstruction::GeometryOptions{});
+    }
+
+    // Builds and attaches what the scene asks for from `eye`; returns the requests met.
+    static std::size_t refine(scenegraph::WellScene& scene,
+                              const reconstruction::WellGeometry& geometry, const glm::vec3& eye) {
+        const auto wanted = scene.wantedDetail(eye);
+        for (const scenegraph::DetailRequest& r : wanted)
+            scene.attachFinerLevels(
+                reconstruction::buildSegmentLevels(geometry, r.segment, r.level, r.heldFrom));
+        return wanted.size();
+    }
+
+    // Triangles SoLOD draws from a camera at `eye` looking down (scene -y).
+    static std::size_t drawn(scenegraph::WellScene& scene, const glm::vec3& eye) {
+        auto root = scenegraph::makeRef(new SoSeparator);
+        auto* camera = new SoPerspectiveCamera;
+        camera->position.setValue(eye.x, eye.y, eye.z);
+        camera->pointAt(SbVec3f(eye.x, eye.y - 10.0f, eye.z), SbVec3f(0, 0, 1));
+        root->addChild(camera);
+        root->addChild(scene.root());
+        return scenegraph::trianglesDrawn(root.get(), 1280, 800);
+    }
+};
+}  // namespace
+
+TEST_F(LevelOfDetailTest, SegmentsNearTheEyeGetFinerLevelsAndFarOnesKeepTheCoarse) {
+    const auto geometry = well();
+    scenegraph::WellScene scene;
+    scene.buildAll(*geometry);
+    for (std::size_t s = 0; s < scene.segmentCount(); ++s)
+        ASSERT_EQ(scene.heldFrom(s), reconstruction::kFirstCoarseLevel);
+    const std::size_t coarse = drawn(scene, {0.0f, -0.5f, 0.0f});
+
+    const glm::vec3 top{0.0f, -1.0f, 0.0f};  // 1 m below the top, on the axis
+    ASSERT_GT(refine(scene, *geometry, top), 0u);
+    EXPECT_EQ(scene.heldFrom(0), 0);                        // the eye's own segments: full detail
+    EXPECT_EQ(scene.heldFrom(1), 0);
+    EXPECT_EQ(scene.heldFrom(scene.segmentCount() - 1),     // 39 m away: coarse as built
+              reconstruction::kFirstCoarseLevel);
+    EXPECT_EQ(refine(scene, *geometry, top), 0u);  // nothing more wanted from the same place
+    EXPECT_GT(drawn(scene, top), coarse);          // SoLOD draws the finer levels near the eye
+
+    // Moving down the hole asks for the segments there; moving back needs nothing new.
+    const glm::vec3 deeper{0.0f, -30.0f, 0.0f};
+    ASSERT_GT(refine(scene, *geometry, deeper), 0u);
+    EXPECT_EQ(scene.heldFrom(29), 0);
+    EXPECT_EQ(refine(scene, *geometry, top), 0u);
+}
+
+TEST_F(LevelOfDetailTest, SwitchesFollowTheProjectedSizeNotAFixedDistance) {
+    const auto geometry = well(10.0);
+    const reconstruction::SegmentMesh segment =
+        reconstruction::buildSegmentLevels(*geometry, 5, 0, 99);
+    // Twice the pixels over the same field of view, or the same pixels over half the
+    // angle: each level is needed twice as far away.
+    const auto base = scenegraph::lodSwitchDistances(segment, scenegraph::lodViewFor(800, 0.8f));
+    const auto tall = scenegraph::lodSwitchDistances(segment, scenegraph::lodViewFor(1600, 0.8f));
+    const auto narrow =
+        scenegraph::lodSwitchDistances(segment, scenegraph::lodViewFor(800, 2.0f * std::atan(std::tan(0.4f) / 2.0f)));
+    ASSERT_EQ(base.size(), segment.levelError_mm.size());
+    for (std::size_t i = 0; i < base.size(); ++i) {
+        EXPECT_NEAR(tall[i] - segment.radius, 2.0f * (base[i] - segment.radius), 1e-3f) << i;
+        EXPECT_NEAR(narrow[i] - segment.radius, 2.0f * (base[i] - segment.radius), 1e-3f) << i;
+        if (i > 0) EXPECT_GE(base[i], base[i - 1]);
+    }
+    EXPECT_EQ(scenegraph::lodLevelAt(base, 0.0f), 0);
+    EXPECT_EQ(scenegraph::lodLevelAt(base, base.back() + 1.0f),
+              static_cast<int>(base.size()));  // nothing: under the pixel tolerance wide
+}
+
+TEST_F(LevelOfDetailTest, FlyingTheWholeWellKeepsTheFineLevelsWithinTheBudget) {
+    const auto geometry = well(60.0);
+    scenegraph::WellScene scene;
+    scene.buildAll(*geometry);
+    const std::size_t budget = 400'000;  // triangles of finer-than-coarse levels
+    std::size_t most = 0, refined = 0;
+    const std::vector<double>& md = geometry->table().depth_m;
+    for (float depth = 0.0f; depth <= 60.0f; depth += 0.5f) {
+        // On the hole's axis at this measured depth.
+        const auto row = static_cast<std::size_t>(
+            std::lower_bound(md.begin(), md.end(), static_cast<double>(depth)) - md.begin());
+        const glm::vec3 eye(reconstruction::toScene(geometry->centre(std::min(row, md.size() - 1))));
+        refined += refine(scene, *geometry, eye);
+        scene.evictFineLevels(budget);
+        most = std::max(most, scene.fineTriangles());
+        // The segment the eye is in always holds what it needs.
+        const auto segment = static_cast<std::size_t>(std::min(depth, 59.5f));
+        EXPECT_EQ(scene.heldFrom(segment), 0) << depth;
+    }
+    EXPECT_GT(refined, 60u);
+    EXPECT_LE(most, budget);
+    EXPECT_GT(most, budget / 4);  // the budget was used, not everything dropped at once
+}
