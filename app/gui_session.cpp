@@ -10,6 +10,8 @@
 namespace caliper3d::app {
 
 namespace {
+// The message by value is SoQt::FatalErrorCB's signature, which setFatalErrorHandler takes.
+// NOLINTNEXTLINE(performance-unnecessary-value-param): that signature, not ours to change
 void fatalError(const SbString message, SoQt::FatalErrors, void*) {
     std::fprintf(stderr, "caliper3d: OpenGL failure: %s\n", message.getString());
     std::exit(1);

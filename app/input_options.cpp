@@ -1,5 +1,6 @@
 #include "app/input_options.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -124,9 +125,10 @@ LoadOptions inputOptionsFrom(const QCommandLineParser& parser) {
 
 void rejectInapplicable(const QCommandLineParser& parser, const std::string& verb,
                         std::initializer_list<const char*> names, const std::string& why) {
-    for (const char* name : names)
-        if (parser.isSet(name))
-            throw UsageError("caliper3d " + verb + ": --" + name + " does not apply: " + why);
+    const auto set = std::find_if(names.begin(), names.end(),
+                                  [&](const char* name) { return parser.isSet(name); });
+    if (set != names.end())
+        throw UsageError("caliper3d " + verb + ": --" + *set + " does not apply: " + why);
 }
 
 double parseLength_mm(const std::string& value, const std::string& option) {

@@ -73,6 +73,102 @@ void warnWhereCasingDoesNotFit(const reconstruction::WellAnalysis& result,
     }
 }
 
+// The report verb's own options (the input and well-source ones follow them).
+void addReportOptions(QCommandLineParser& p) {
+    p.addOption({{"o", "output"}, "Per-section report (CSV; '-' for standard output).", "OUT"});
+    p.addOption({"step",
+                 "One row every this many metres (the nearest section; default: every section).",
+                 "METRES", "0"});
+    p.addOption({"zones", "Also write the zone table (CSV; '-' for standard output).", "ZONES"});
+    p.addOption(
+        {"las", "Also write the computed curves as LAS 2.0 ('-' for standard output).", "OUT.las"});
+    p.addOption(
+        {"casing-od", "Casing outer diameter for the annular volumes (e.g. 7in).", "LENGTH"});
+    p.addOption({"excess", "Cement excess as a fraction (0.3 = 30 %; default 0).", "F", "0"});
+    p.addOption({"interval",
+                 "Depth interval of the volumes, TOP,BOTTOM in metres (default: the log).",
+                 "TOP,BOTTOM"});
+    p.addOption({"rule",
+                 "Set a classification threshold, NAME=VALUE (repeatable); 'list' prints them "
+                 "with their defaults.",
+                 "NAME=VALUE"});
+    p.addOption({"threads", "Analysis threads (default: the machine's cores).", "N"});
+}
+
+// Applies each --rule in turn; false where one is 'list', which prints the rules (with those
+// before it applied) instead.
+bool applyRules(const QCommandLineParser& p, reconstruction::ClassificationRules& rules) {
+    for (const QString& rule : p.values("rule")) {
+        if (rule == "list") {
+            std::fputs(reconstruction::describeRules(rules).c_str(), stdout);
+            return false;
+        }
+        try {
+            reconstruction::applyRuleSetting(rules, rule.toStdString());
+        } catch (const std::invalid_argument& e) {
+            throw UsageError(std::string("caliper3d report: --rule: ") + e.what());
+        }
+    }
+    return true;
+}
+
+// --casing-od, --excess and --interval.
+void readVolumeOptions(const VerbParser& verb, reconstruction::VolumeOptions& volume) {
+    if (verb.isSet("casing-od"))
+        volume.casingOd_mm = parseLength_mm(verb.value("casing-od"), "--casing-od");
+    volume.excess = nonNegative(verb, "excess");
+    if (verb.isSet("interval"))
+        std::tie(volume.top_m, volume.bottom_m) = interval(verb.value("interval"));
+}
+
+// --threads, or the machine's cores.
+int analysisThreads(const QCommandLineParser& p) {
+    if (!p.isSet("threads"))
+        return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    bool ok = false;
+    const int threads = p.value("threads").toInt(&ok);
+    if (!ok || threads < 1 || threads > 256)
+        throw UsageError("caliper3d report: --threads takes a whole number from 1 to 256");
+    return threads;
+}
+
+// Where the report goes: the section report (-o), and the zone table and the LAS curves where
+// asked for (empty where not); each a file, or standard output for '-' (one of them at most).
+struct ReportOutputs {
+    std::string sections, zones, las;
+    bool toStdout = false;
+};
+
+ReportOutputs reportOutputs(const VerbParser& verb) {
+    ReportOutputs to;
+    to.sections = verb.value("output");
+    to.zones = verb.isSet("zones") ? verb.value("zones") : std::string();
+    to.las = verb.isSet("las") ? verb.value("las") : std::string();
+    const int dashes = (to.sections == "-") + (to.zones == "-") + (to.las == "-");
+    if (dashes > 1)
+        throw UsageError("caliper3d report: only one of -o, --zones and --las can be '-'");
+    to.toStdout = dashes == 1;
+    return to;
+}
+
+// Writes each output asked for, standard output flushed.
+void writeReports(const ReportOutputs& to, const reconstruction::WellAnalysis& result,
+                  const reconstruction::ReportOptions& report, const std::string& wellName) {
+    if (to.sections == "-")
+        reconstruction::writeSectionReport(std::cout, result, report);
+    else
+        reconstruction::writeSectionReport(to.sections, result, report);
+    if (to.zones == "-")
+        reconstruction::writeZoneReport(std::cout, result);
+    else if (!to.zones.empty())
+        reconstruction::writeZoneReport(to.zones, result);
+    if (to.las == "-")
+        reconstruction::writeAnalysisLas(std::cout, result, report, wellName);
+    else if (!to.las.empty())
+        reconstruction::writeAnalysisLas(to.las, result, report, wellName);
+    std::cout.flush();
+}
+
 }  // namespace
 
 int runReport(const QStringList& args) {
@@ -80,42 +176,13 @@ int runReport(const QStringList& args) {
         VerbParser verb("report", "FILE -o OUT.csv",
                         "Analyse every section of a well: shape, class, zones, volumes.");
         QCommandLineParser& p = verb.parser();
-        p.addOption({{"o", "output"}, "Per-section report (CSV; '-' for standard output).", "OUT"});
-        p.addOption(
-            {"step",
-             "One row every this many metres (the nearest section; default: every section).",
-             "METRES", "0"});
-        p.addOption(
-            {"zones", "Also write the zone table (CSV; '-' for standard output).", "ZONES"});
-        p.addOption({"las", "Also write the computed curves as LAS 2.0 ('-' for standard output).",
-                     "OUT.las"});
-        p.addOption(
-            {"casing-od", "Casing outer diameter for the annular volumes (e.g. 7in).", "LENGTH"});
-        p.addOption({"excess", "Cement excess as a fraction (0.3 = 30 %; default 0).", "F", "0"});
-        p.addOption({"interval",
-                     "Depth interval of the volumes, TOP,BOTTOM in metres (default: the log).",
-                     "TOP,BOTTOM"});
-        p.addOption({"rule",
-                     "Set a classification threshold, NAME=VALUE (repeatable); 'list' prints them "
-                     "with their defaults.",
-                     "NAME=VALUE"});
-        p.addOption({"threads", "Analysis threads (default: the machine's cores).", "N"});
+        addReportOptions(p);
         addInputOptions(p);
         addWellSourceOptions(p);
         if (!verb.parse(args, 0)) return kExitOk;
 
         reconstruction::AnalysisOptions analysis;
-        for (const QString& rule : p.values("rule")) {
-            if (rule == "list") {
-                std::fputs(reconstruction::describeRules(analysis.rules).c_str(), stdout);
-                return kExitOk;
-            }
-            try {
-                reconstruction::applyRuleSetting(analysis.rules, rule.toStdString());
-            } catch (const std::invalid_argument& e) {
-                throw UsageError(std::string("caliper3d report: --rule: ") + e.what());
-            }
-        }
+        if (!applyRules(p, analysis.rules)) return kExitOk;
         const std::vector<std::string> files = verb.positional();
         if (files.size() != 1)
             throw UsageError("caliper3d report: give exactly one FILE (found " +
@@ -129,20 +196,8 @@ int runReport(const QStringList& args) {
         reconstruction::ReportOptions report;
         report.step_m = nonNegative(verb, "step");
         report.wellhead = well.wellhead;
-        if (verb.isSet("casing-od"))
-            analysis.volume.casingOd_mm = parseLength_mm(verb.value("casing-od"), "--casing-od");
-        analysis.volume.excess = nonNegative(verb, "excess");
-        if (verb.isSet("interval"))
-            std::tie(analysis.volume.top_m, analysis.volume.bottom_m) =
-                interval(verb.value("interval"));
-        if (verb.isSet("threads")) {
-            bool ok = false;
-            analysis.threads = p.value("threads").toInt(&ok);
-            if (!ok || analysis.threads < 1 || analysis.threads > 256)
-                throw UsageError("caliper3d report: --threads takes a whole number from 1 to 256");
-        } else {
-            analysis.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-        }
+        readVolumeOptions(verb, analysis.volume);
+        analysis.threads = analysisThreads(p);
 
         // The analysis adds the geometry's warnings from its own counts (warnAnalysis).
         options.minValidArmFraction = analysis.rules.minValidArmFraction;
@@ -154,31 +209,11 @@ int runReport(const QStringList& args) {
         const reconstruction::WellAnalysis result = reconstruction::analyseWell(geometry, analysis);
         warnWhereCasingDoesNotFit(result, analysis.volume, well.path, diagnostics);
 
-        // Each output goes to its file, or to standard output for '-' (one of them at most).
-        const std::string out = verb.value("output");
-        const std::string zones = verb.isSet("zones") ? verb.value("zones") : std::string();
-        const std::string las = verb.isSet("las") ? verb.value("las") : std::string();
-        const int dashes = (out == "-") + (zones == "-") + (las == "-");
-        if (dashes > 1)
-            throw UsageError("caliper3d report: only one of -o, --zones and --las can be '-'");
-        const bool toStdout = dashes == 1;
-        const std::string wellName = std::filesystem::path(well.path).stem().string();
-        if (out == "-")
-            reconstruction::writeSectionReport(std::cout, result, report);
-        else
-            reconstruction::writeSectionReport(out, result, report);
-        if (zones == "-")
-            reconstruction::writeZoneReport(std::cout, result);
-        else if (!zones.empty())
-            reconstruction::writeZoneReport(zones, result);
-        if (las == "-")
-            reconstruction::writeAnalysisLas(std::cout, result, report, wellName);
-        else if (!las.empty())
-            reconstruction::writeAnalysisLas(las, result, report, wellName);
-        std::cout.flush();
+        const ReportOutputs to = reportOutputs(verb);
+        writeReports(to, result, report, std::filesystem::path(well.path).stem().string());
 
         // With the report on standard output, everything else goes to standard error.
-        FILE* info = toStdout ? stderr : stdout;
+        FILE* info = to.toStdout ? stderr : stdout;
         reconstruction::warnAnalysis(geometry, result, diagnostics);
         std::fprintf(info,
                      "%s: %zu sections, %zu reported, %zu zones, %zu no data, %zu warnings%s\n",
@@ -188,7 +223,7 @@ int runReport(const QStringList& args) {
                      well.surveyPath.empty() ? "" : (", path from " + well.surveyPath).c_str());
         std::fputs(reconstruction::formatAnalysisSummary(result).c_str(), info);
         printWarnings(diagnostics);
-        for (const std::string& written : {out, zones, las})
+        for (const std::string& written : {to.sections, to.zones, to.las})
             if (!written.empty() && written != "-")
                 std::fprintf(info, "wrote %s\n", written.c_str());
         return kExitOk;

@@ -20,6 +20,7 @@ namespace caliper3d::app {
 
 AssembledScene assembleScene(const std::vector<std::string>& files, const LoadOptions& options) {
     std::vector<WellSource> wells;
+    wells.reserve(files.size());
     for (const std::string& file : files) wells.push_back({file, {}, {}});
     return assembleScene(wells, options);
 }

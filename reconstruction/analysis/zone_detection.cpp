@@ -82,6 +82,25 @@ std::vector<Zone> detectZones(const std::vector<BoreholeClass>& classes,
     return zones;
 }
 
+namespace {
+
+// The WSM quality of summarised breakouts: the first of A to D whose zone count, combined length
+// and spread they meet; E where they have no zones, no spread to measure, or meet none.
+char wsmQuality(const BreakoutSummary& s, const WsmQualityRules& rules) {
+    const double sd = s.circularSd_deg;
+    if (s.zoneCount == 0 || !std::isfinite(sd)) return 'E';
+    if (s.zoneCount >= rules.zonesA && s.combinedLength_m >= rules.lengthA_m && sd <= rules.sdA_deg)
+        return 'A';
+    if (s.zoneCount >= rules.zonesB && s.combinedLength_m >= rules.lengthB_m && sd <= rules.sdB_deg)
+        return 'B';
+    if (s.zoneCount >= rules.zonesC && s.combinedLength_m >= rules.lengthC_m && sd <= rules.sdC_deg)
+        return 'C';
+    if (sd <= rules.sdD_deg) return 'D';
+    return 'E';
+}
+
+}  // namespace
+
 BreakoutSummary summariseBreakouts(const std::vector<Zone>& zones, const WsmQualityRules& rules) {
     BreakoutSummary out;
     std::vector<double> angles, weights;
@@ -96,19 +115,7 @@ BreakoutSummary summariseBreakouts(const std::vector<Zone>& zones, const WsmQual
     out.meanAzimuth_deg = st.mean_deg;
     out.circularSd_deg = st.sd_deg;
     out.shmaxAzimuth_deg = std::isfinite(st.mean_deg) ? std::fmod(st.mean_deg + 90.0, 180.0) : st.mean_deg;
-    if (out.zoneCount == 0 || !std::isfinite(st.sd_deg)) {
-        out.quality = 'E';
-    } else if (out.zoneCount >= rules.zonesA && out.combinedLength_m >= rules.lengthA_m && st.sd_deg <= rules.sdA_deg) {
-        out.quality = 'A';
-    } else if (out.zoneCount >= rules.zonesB && out.combinedLength_m >= rules.lengthB_m && st.sd_deg <= rules.sdB_deg) {
-        out.quality = 'B';
-    } else if (out.zoneCount >= rules.zonesC && out.combinedLength_m >= rules.lengthC_m && st.sd_deg <= rules.sdC_deg) {
-        out.quality = 'C';
-    } else if (st.sd_deg <= rules.sdD_deg) {
-        out.quality = 'D';
-    } else {
-        out.quality = 'E';
-    }
+    out.quality = wsmQuality(out, rules);
     return out;
 }
 

@@ -21,18 +21,20 @@ void prefaultPages(void* data, std::size_t bytes, int threads) {
     const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
     if (bytes == 0 || page == 0) return;
     // madvise takes whole pages; the partial pages at the ends belong to the
-    // buffer's allocation too, so populating them changes nothing.
-    const std::uintptr_t begin = reinterpret_cast<std::uintptr_t>(data) & ~(page - 1);
-    const std::uintptr_t end = reinterpret_cast<std::uintptr_t>(data) + bytes;
-    constexpr std::uintptr_t kChunk = std::uintptr_t{8} << 20;  // 8 MiB per task
-    const std::size_t chunks = static_cast<std::size_t>((end - begin + kChunk - 1) / kChunk);
+    // buffer's allocation too, so populating them changes nothing. The start of
+    // the first page is `data` moved back, not an integer made a pointer.
+    char* const begin =
+        static_cast<char*>(data) - (reinterpret_cast<std::uintptr_t>(data) & (page - 1));
+    char* const end = static_cast<char*>(data) + bytes;
+    constexpr std::size_t kChunk = std::size_t{8} << 20;  // 8 MiB per task
+    const std::size_t chunks = (static_cast<std::size_t>(end - begin) + kChunk - 1) / kChunk;
     forEachBlockInOrder(
         chunks, threads,
         [&](std::size_t chunk, std::size_t) {
-            const std::uintptr_t first = begin + chunk * kChunk;
-            const std::uintptr_t last = std::min(end, first + kChunk);
+            char* const first = begin + chunk * kChunk;
+            const std::size_t length = std::min(static_cast<std::size_t>(end - first), kChunk);
             // Refused by an older kernel (EINVAL): the first write faults instead.
-            madvise(reinterpret_cast<void*>(first), last - first, MADV_POPULATE_WRITE);
+            madvise(first, length, MADV_POPULATE_WRITE);
         },
         [](std::size_t) {});
 #else

@@ -65,20 +65,21 @@ struct LaneSums {
     bool fitted[kL];
 };
 
-// Per lane, the operations of PeriodicSplineSampler::sample,
-// SectionAnalyzer::analyse and fitEllipse in their order: no sum is reordered
-// and no product fused (the library is built with -ffp-contract=off), so each
-// lane's result is bit-identical to the one-section code whatever the vector
-// width. Lanes [offset, offset + width) of the batch; pads, u and v hold kL
-// values per row (u and v: m + 1 rows, the last repeating the first).
+// The kernel's parts below are always inlined into laneSums, itself always
+// inlined into the clones, so each is compiled for the clone's vector width.
+
+// Row j of a lane-interleaved array (kL values per row) from the first lane.
 template <class V>
-__attribute__((always_inline)) inline void laneSums(int knots, int m, const double* weights,
-                                                    const double* cosines, const double* sines,
-                                                    const double* pads, double* u, double* v,
-                                                    int offset, LaneSums& out) {
-    pads += offset;
-    u += offset;
-    v += offset;
+__attribute__((always_inline)) inline V row(const double* p, int j) {
+    return load<V>(p + j * kL);
+}
+
+// PeriodicSplineSampler::sample: the m outline points into u and v, and the
+// first again as row m.
+template <class V>
+__attribute__((always_inline)) inline void sampleOutline(int knots, int m, const double* weights,
+                                                         const double* cosines, const double* sines,
+                                                         const double* pads, double* u, double* v) {
     for (int j = 0; j < m; ++j) {
         const double* w = weights + j * knots;
         V s = splat<V>(0.0);
@@ -88,13 +89,15 @@ __attribute__((always_inline)) inline void laneSums(int knots, int m, const doub
     }
     store(u + m * kL, load<V>(u));
     store(v + m * kL, load<V>(v));
-    auto U = [u](int j) { return load<V>(u + j * kL); };
-    auto W = [v](int j) { return load<V>(v + j * kL); };
+}
 
-    // Shoelace area and centroid (SectionAnalyzer::analyse).
+// Shoelace area and centroid (SectionAnalyzer::analyse).
+template <class V>
+__attribute__((always_inline)) inline void shoelaceSums(int m, const double* u, const double* v,
+                                                        int offset, LaneSums& out) {
     V twiceArea = splat<V>(0.0), cu = splat<V>(0.0), cv = splat<V>(0.0);
     for (int j = 0; j < m; ++j) {
-        const V uj = U(j), uk = U(j + 1), vj = W(j), vk = W(j + 1);
+        const V uj = row<V>(u, j), uk = row<V>(u, j + 1), vj = row<V>(v, j), vk = row<V>(v, j + 1);
         const V cross = uj * vk - uk * vj;
         twiceArea += cross;
         cu += (uj + uk) * cross;
@@ -103,27 +106,35 @@ __attribute__((always_inline)) inline void laneSums(int knots, int m, const doub
     store(out.twiceArea + offset, twiceArea);
     store(out.cu + offset, cu);
     store(out.cv + offset, cv);
-    if (m < 5) {
-        for (int l = 0; l < kWidth<V>; ++l) out.fitted[offset + l] = false;
-        return;
-    }
+}
 
-    // fitEllipse: mean, scale, normal equations.
+// fitEllipse's normal equations, of the points about their mean divided by
+// `scale`: the mean of |u - mean u| + |v - mean v|, or 1 where that is 0.
+template <class V>
+struct NormalEquations {
+    V mat[5][5];
+    V rhs[5];
+    V scale;
+};
+
+template <class V>
+__attribute__((always_inline)) inline NormalEquations<V> normalEquations(int m, const double* u,
+                                                                         const double* v) {
     V mx = splat<V>(0.0), my = splat<V>(0.0), scale = splat<V>(0.0);
     for (int i = 0; i < m; ++i) {
-        mx += U(i);
-        my += W(i);
+        mx += row<V>(u, i);
+        my += row<V>(v, i);
     }
     mx /= static_cast<double>(m);
     my /= static_cast<double>(m);
-    for (int i = 0; i < m; ++i) scale += absolute(U(i) - mx) + absolute(W(i) - my);
+    for (int i = 0; i < m; ++i) scale += absolute(row<V>(u, i) - mx) + absolute(row<V>(v, i) - my);
     scale = scale > 0.0 ? scale / static_cast<double>(m) : splat<V>(1.0);
     const V inv = 1.0 / scale;
     V sxxxx = splat<V>(0.0), sxxxy = sxxxx, sxxyy = sxxxx, sxyyy = sxxxx, syyyy = sxxxx,
       sxxx = sxxxx, sxxy = sxxxx, sxyy = sxxxx, syyy = sxxxx, sxx = sxxxx, sxy = sxxxx, syy = sxxxx,
       sx = sxxxx, sy = sxxxx;
     for (int i = 0; i < m; ++i) {
-        const V x = (U(i) - mx) * inv, y = (W(i) - my) * inv;
+        const V x = (row<V>(u, i) - mx) * inv, y = (row<V>(v, i) - my) * inv;
         const V xx = x * x, xy = x * y, yy = y * y;
         sxxxx += xx * xx;
         sxxxy += xx * xy;
@@ -140,15 +151,19 @@ __attribute__((always_inline)) inline void laneSums(int knots, int m, const doub
         sx += x;
         sy += y;
     }
+    return {{{sxxxx, sxxxy, sxxyy, sxxx, sxxy},
+             {sxxxy, sxxyy, sxyyy, sxxy, sxyy},
+             {sxxyy, sxyyy, syyyy, sxyy, syyy},
+             {sxxx, sxxy, sxyy, sxx, sxy},
+             {sxxy, sxyy, syyy, sxy, syy}},
+            {sxx, sxy, syy, sx, sy},
+            scale};
+}
 
-    // The 5x5 Cholesky solve of fitEllipse; a lane whose pivot fails goes on
-    // with NaNs and is marked not fitted.
-    V mat[5][5] = {{sxxxx, sxxxy, sxxyy, sxxx, sxxy},
-                   {sxxxy, sxxyy, sxyyy, sxxy, sxyy},
-                   {sxxyy, sxyyy, syyyy, sxyy, syyy},
-                   {sxxx, sxxy, sxyy, sxx, sxy},
-                   {sxxy, sxyy, syyy, sxy, syy}};
-    V rhs[5] = {sxx, sxy, syy, sx, sy};
+// The 5x5 Cholesky solve of fitEllipse, in place: rhs becomes the solution.
+// A lane whose pivot fails goes on with NaNs and is false in the mask.
+template <class V>
+__attribute__((always_inline)) inline MaskOf<V> choleskySolve(V (&mat)[5][5], V (&rhs)[5]) {
     MaskOf<V> ok = MaskOf<V>{} - 1;
     for (int j = 0; j < 5; ++j) {
         V d = mat[j][j];
@@ -172,7 +187,34 @@ __attribute__((always_inline)) inline void laneSums(int knots, int m, const doub
         for (int k = i + 1; k < 5; ++k) s -= mat[k][i] * rhs[k];
         rhs[i] = s / mat[i][i];
     }
-    const V A = rhs[0], B = rhs[1], C = rhs[2], D = rhs[3], E = rhs[4];
+    return ok;
+}
+
+// Per lane, the operations of PeriodicSplineSampler::sample,
+// SectionAnalyzer::analyse and fitEllipse in their order: no sum is reordered
+// and no product fused (the library is built with -ffp-contract=off), so each
+// lane's result is bit-identical to the one-section code whatever the vector
+// width. Lanes [offset, offset + width) of the batch; pads, u and v hold kL
+// values per row (u and v: m + 1 rows, the last repeating the first).
+template <class V>
+__attribute__((always_inline)) inline void laneSums(int knots, int m, const double* weights,
+                                                    const double* cosines, const double* sines,
+                                                    const double* pads, double* u, double* v,
+                                                    int offset, LaneSums& out) {
+    pads += offset;
+    u += offset;
+    v += offset;
+    sampleOutline<V>(knots, m, weights, cosines, sines, pads, u, v);
+    shoelaceSums<V>(m, u, v, offset, out);
+    if (m < 5) {
+        for (int l = 0; l < kWidth<V>; ++l) out.fitted[offset + l] = false;
+        return;
+    }
+
+    // fitEllipse: the conic, its centre and its constant.
+    NormalEquations<V> eq = normalEquations<V>(m, u, v);
+    MaskOf<V> ok = choleskySolve(eq.mat, eq.rhs);
+    const V A = eq.rhs[0], B = eq.rhs[1], C = eq.rhs[2], D = eq.rhs[3], E = eq.rhs[4];
     const V det = 4.0 * A * C - B * B;
     const V x0 = (B * E - 2.0 * C * D) / det;
     const V y0 = (B * D - 2.0 * A * E) / det;
@@ -183,7 +225,7 @@ __attribute__((always_inline)) inline void laneSums(int knots, int m, const doub
     store(out.d + offset, D);
     store(out.e + offset, E);
     store(out.k + offset, k);
-    store(out.scale + offset, scale);
+    store(out.scale + offset, eq.scale);
     ok &= (det > 0.0) & (k > 0.0);
     for (int l = 0; l < kWidth<V>; ++l) out.fitted[offset + l] = ok[l] != 0;
 }
