@@ -84,6 +84,7 @@ public:
           m_info(info),
           m_diagnostics(diagnostics) {
         std::vector<std::string> names;
+        names.reserve(columns.size());
         for (const ColumnSpec& c : columns) names.push_back(c.mnemonic);
         try {
             m_roles = assignRoles(names, options.roles);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <string>
 #include <string_view>
@@ -36,7 +37,7 @@ struct CurvePlan {
     std::vector<double> armScale; // file unit -> millimetres of radius (diameters halved)
     int angleColumn[4] = {-1, -1, -1, -1};  // P1AZ, DEVI, HAZI, RB
     double angleScale[4] = {1.0, 1.0, 1.0, 1.0};
-    std::string angleName[4];  // the mnemonics, for messages
+    std::array<std::string, 4> angleName;  // the mnemonics, for messages
     int bitSizeColumn = -1;
     double bitSizeScale = 1.0;
     double bitSizeConstant = kNaN;  // from a parameter or an override

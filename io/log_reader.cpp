@@ -25,12 +25,18 @@ namespace {
 void reserveFilledOnce(std::vector<double>& v, std::size_t n) {
     v.reserve(n);
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
+    // The whole huge pages inside the buffer: its start moved up to the next page boundary
+    // (a pointer moved, not an integer made a pointer).
     constexpr std::uintptr_t kHugePage = 2u << 20;
-    const std::uintptr_t begin = reinterpret_cast<std::uintptr_t>(v.data());
-    const std::uintptr_t end = begin + v.capacity() * sizeof(double);
-    const std::uintptr_t first = (begin + kHugePage - 1) & ~(kHugePage - 1);
-    const std::uintptr_t last = end & ~(kHugePage - 1);
-    if (v.empty() && last > first) ::madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
+    char* const begin = reinterpret_cast<char*>(v.data());
+    const std::uintptr_t address = reinterpret_cast<std::uintptr_t>(begin);
+    const std::size_t bytes = v.capacity() * sizeof(double);
+    const std::size_t skip = static_cast<std::size_t>((kHugePage - (address & (kHugePage - 1))) &
+                                                      (kHugePage - 1));
+    if (v.empty() && bytes > skip) {
+        const std::size_t length = (bytes - skip) & ~static_cast<std::size_t>(kHugePage - 1);
+        if (length > 0) ::madvise(begin + skip, length, MADV_HUGEPAGE);
+    }
 #endif
 }
 

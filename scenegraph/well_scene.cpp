@@ -103,7 +103,8 @@ void WellScene::setRanges(Record& record) {
     const int count = static_cast<int>(record.switchDistances.size()) - first;
     range.setNum(std::max(count, 0));
     for (int i = 0; i < count; ++i)
-        range.set1Value(i, record.switchDistances[static_cast<std::size_t>(first + i)]);
+        range.set1Value(
+            i, record.switchDistances[static_cast<std::size_t>(first) + static_cast<std::size_t>(i)]);
 }
 
 void WellScene::setLodView(const LodView& view) {
