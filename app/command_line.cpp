@@ -31,7 +31,8 @@ const char kUsage[] =
     "common: --arms N --depth-unit m|ft --radius-unit in|mm|cm --bit-size VALUE[in|mm]\n"
     "        --radii MNEM,... --diameters MNEM,... --nulls declared|common --row-step METRES\n"
     "        --survey FILE --wellhead E,N,ELEV (once per FILE) --steep-inclination DEG\n"
-    "        --tool-reach LENGTH --points M --segment-length METRES --shape-tolerance MM --exaggerate F\n"
+    "        --tool-reach LENGTH --points M --segment-length METRES --shape-tolerance MM "
+    "--exaggerate F\n"
     "Run 'caliper3d help VERB' (or 'caliper3d VERB --help') for a verb's options.\n";
 }  // namespace
 

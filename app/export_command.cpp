@@ -31,8 +31,8 @@ int runExport(const QStringList& args) {
         };
         const bool gzipName = endsWith(".iv.gz");
         if (!endsWith(".iv") && !gzipName)
-            throw UsageError("caliper3d export: the output must end in .iv or .iv.gz, got '" +
-                             out + "'");
+            throw UsageError("caliper3d export: the output must end in .iv or .iv.gz, got '" + out +
+                             "'");
         const LoadOptions options = inputOptionsFrom(p);
 
         scenegraph::initCoin();

@@ -5,9 +5,9 @@
 #include "app/verb_parser.h"
 #include "io/log_reader.h"
 #include "io/survey_reader.h"
-#include "reconstruction/section/section_coverage.h"
-#include "reconstruction/path/survey_interpolation.h"
 #include "reconstruction/load/load_well.h"
+#include "reconstruction/path/survey_interpolation.h"
+#include "reconstruction/section/section_coverage.h"
 
 namespace caliper3d::app {
 
@@ -19,8 +19,8 @@ int runInfo(const QStringList& args) {
         addInputOptions(verb.parser());
         if (!verb.parse(args, 1)) return kExitOk;
         rejectInapplicable(verb.parser(), "info",
-                           {"points", "segment-length", "shape-tolerance", "exaggerate", "steep-inclination",
-                            "tool-reach"},
+                           {"points", "segment-length", "shape-tolerance", "exaggerate",
+                            "steep-inclination", "tool-reach"},
                            "info describes the file as read; these shape the 3D reconstruction");
         const LoadOptions options = inputOptionsFrom(verb.parser());
         int failures = 0;

@@ -27,8 +27,8 @@ void addInputOptions(QCommandLineParser& parser) {
          "POLICY", "common"},
         {"bit-size", "Bit size, e.g. 8.5in or 215.9mm (a bare number is inches).", "VALUE"},
         {"points", "Points per section of the closed spline (default 48).", "M", "48"},
-        {"segment-length", "Length of one level-of-detail segment in metres (default 1).",
-         "METRES", "1"},
+        {"segment-length", "Length of one level-of-detail segment in metres (default 1).", "METRES",
+         "1"},
         {"shape-tolerance",
          "Level of detail: a coarse level leaves a section out only while its neighbours "
          "interpolate every arm within this many millimetres (coarser levels 4 and 16 times "
@@ -84,7 +84,8 @@ LoadOptions inputOptionsFrom(const QCommandLineParser& parser) {
     const bool wholeArray =
         o.read.roles.radii.size() == 1 && o.read.roles.radii.front().size() > 2 &&
         o.read.roles.radii.front().compare(o.read.roles.radii.front().size() - 2, 2, "[]") == 0;
-    if ((o.read.roles.radii.size() == 1 && !wholeArray) || o.read.roles.radii.size() > static_cast<std::size_t>(io::kMaxArms))
+    if ((o.read.roles.radii.size() == 1 && !wholeArray) ||
+        o.read.roles.radii.size() > static_cast<std::size_t>(io::kMaxArms))
         throw UsageError(
             "--radii: expected 2 to 256 curve names separated by commas, or one array NAME[]");
     if (o.read.roles.diameters.size() > 4)

@@ -11,9 +11,9 @@
 #include "io/diagnostics.h"
 #include "io/log_reader.h"
 #include "io/section_table.h"
-#include "reconstruction/well_geometry.h"
-#include "reconstruction/path/wellhead.h"
 #include "reconstruction/load/load_well.h"
+#include "reconstruction/path/wellhead.h"
+#include "reconstruction/well_geometry.h"
 
 namespace caliper3d::app {
 

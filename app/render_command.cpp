@@ -108,9 +108,8 @@ int runRender(const QStringList& args) {
             std::printf(
                 "triangles_drawn=%zu frame_ms=%.1f rss_mb=%.0f first_picture_ms=%.0f "
                 "load_ms=%.0f\n",
-                scenegraph::trianglesDrawn(root.get(), width, height),
-                Ms(after - before).count(), scenegraph::peakRss_mb(),
-                Ms(firstPicture - start).count(), scene.load_ms);
+                scenegraph::trianglesDrawn(root.get(), width, height), Ms(after - before).count(),
+                scenegraph::peakRss_mb(), Ms(firstPicture - start).count(), scene.load_ms);
         }
         std::printf("wrote %s (%dx%d)\n", out.c_str(), width, height);
         return scene.failures > 0 ? kExitBadInput : kExitOk;

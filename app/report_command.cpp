@@ -14,8 +14,8 @@
 #include "reconstruction/analysis/report_writer.h"
 #include "reconstruction/analysis/rule_settings.h"
 #include "reconstruction/analysis/well_analysis.h"
-#include "reconstruction/load/well_warnings.h"
 #include "reconstruction/load/load_well.h"
+#include "reconstruction/load/well_warnings.h"
 
 namespace caliper3d::app {
 

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <chrono>
-#include <thread>
 #include <cstdio>
 #include <exception>
 #include <memory>
+#include <thread>
 #include <vector>
 
 #include <Inventor/nodes/SoSeparator.h>
@@ -70,8 +70,8 @@ std::size_t refineForView(AssembledScene& scene, const glm::vec3& eye,
         // Meshes on two threads (they read the immutable geometry only); nodes on this one.
         auto build = [&](std::size_t from) {
             for (std::size_t i = from; i < wanted.size(); i += 2)
-                meshes[i] = reconstruction::buildSegmentLevels(
-                    geometry, wanted[i].segment, wanted[i].level, wanted[i].heldFrom);
+                meshes[i] = reconstruction::buildSegmentLevels(geometry, wanted[i].segment,
+                                                               wanted[i].level, wanted[i].heldFrom);
         };
         std::thread helper(build, 1);
         build(0);

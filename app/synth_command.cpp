@@ -50,8 +50,8 @@ int runSynth(const QStringList& args) {
                              names);
         }
         double arms = 0;
-        if (!io::parseNumber(verb.value("arms"), arms) || arms < io::kMinArms || arms > io::kMaxArms ||
-            arms != std::floor(arms))
+        if (!io::parseNumber(verb.value("arms"), arms) || arms < io::kMinArms ||
+            arms > io::kMaxArms || arms != std::floor(arms))
             throw UsageError("caliper3d synth: --arms takes a whole number from 2 to 256");
         spec.armCount = static_cast<int>(arms);
         const io::SectionTable table = reconstruction::makeSyntheticWell(spec);

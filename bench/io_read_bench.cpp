@@ -31,7 +31,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
+double seconds(Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double>(b - a).count();
+}
 
 // User plus system time of this process: unlike wall time, hardly moved by
 // other jobs on a shared machine.
@@ -64,8 +66,10 @@ int readOne(const std::string& path, int threads) {
     const double s = seconds(start, Clock::now());
     const double mb = static_cast<double>(std::filesystem::file_size(path)) / 1e6;
     const double arrays = static_cast<double>(tableBytes(log.table)) / (1024.0 * 1024.0);
-    std::printf("RESULT reader %.4f s %.1f MB/s rows %zu arrays %.1f MiB peak %.1f MiB ratio %.2f cpu %.3f s\n", s,
-                mb / s, log.table.rowCount(), arrays, peakMiB(), peakMiB() / arrays, cpuSeconds());
+    std::printf(
+        "RESULT reader %.4f s %.1f MB/s rows %zu arrays %.1f MiB peak %.1f MiB ratio %.2f cpu %.3f "
+        "s\n",
+        s, mb / s, log.table.rowCount(), arrays, peakMiB(), peakMiB() / arrays, cpuSeconds());
     return 0;
 }
 
@@ -89,7 +93,8 @@ int plainLoop(const std::string& path) {
         const char* p = buffer.data();
         const char* last = buffer.data() + end;
         while (p < last) {
-            const char* nl = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(last - p)));
+            const char* nl =
+                static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(last - p)));
             if (!nl) nl = last;
             if (!data || *p == '#' || *p == '~') {
                 if (*p == '~' && (p[1] == 'A' || p[1] == 'a')) data = true;
@@ -115,8 +120,8 @@ int plainLoop(const std::string& path) {
     std::fclose(f);
     const double s = seconds(start, Clock::now());
     const double mb = static_cast<double>(std::filesystem::file_size(path)) / 1e6;
-    std::printf("RESULT plain %.4f s %.1f MB/s numbers %zu (sum %.3g) peak %.1f MiB cpu %.3f s\n", s, mb / s, numbers,
-                sum, peakMiB(), cpuSeconds());
+    std::printf("RESULT plain %.4f s %.1f MB/s numbers %zu (sum %.3g) peak %.1f MiB cpu %.3f s\n",
+                s, mb / s, numbers, sum, peakMiB(), cpuSeconds());
     return 0;
 }
 
@@ -139,7 +144,8 @@ Run parseRun(const std::string& line) {
     Run r;
     auto after = [&](const char* key, double& value) {
         const std::size_t at = line.find(key);
-        if (at != std::string::npos) std::sscanf(line.c_str() + at + std::strlen(key), "%lf", &value);
+        if (at != std::string::npos)
+            std::sscanf(line.c_str() + at + std::strlen(key), "%lf", &value);
     };
     after(" s ", r.rate);
     after("peak ", r.peak);
@@ -169,7 +175,9 @@ Summary summarise(std::vector<Run> runs) {
     char text[64];
     std::snprintf(text, sizeof text, "%.2f x parsed arrays", ratio);
     s.ratioText = text;
-    s.cpu = std::min_element(runs.begin(), runs.end(), [](const Run& a, const Run& b) { return a.cpu < b.cpu; })->cpu;
+    s.cpu = std::min_element(runs.begin(), runs.end(), [](const Run& a, const Run& b) {
+                return a.cpu < b.cpu;
+            })->cpu;
     return s;
 }
 
@@ -184,15 +192,24 @@ int main(int argc, char** argv) {
     std::string readPath, plainPath;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string a = argv[i];
-        if (a == "--length") length = std::atof(argv[i + 1]);
-        else if (a == "--step") step = std::atof(argv[i + 1]);
-        else if (a == "--dir") dir = argv[i + 1];
-        else if (a == "--threads") threads = std::atoi(argv[i + 1]);
-        else if (a == "--read") readPath = argv[i + 1];
-        else if (a == "--plain") plainPath = argv[i + 1];
-        else if (a == "--keep") keep = std::atoi(argv[i + 1]) != 0;
-        else if (a == "--reuse") reuse = std::atoi(argv[i + 1]) != 0;
-        else if (a == "--repeat") repeat = std::max(1, std::atoi(argv[i + 1]));
+        if (a == "--length")
+            length = std::atof(argv[i + 1]);
+        else if (a == "--step")
+            step = std::atof(argv[i + 1]);
+        else if (a == "--dir")
+            dir = argv[i + 1];
+        else if (a == "--threads")
+            threads = std::atoi(argv[i + 1]);
+        else if (a == "--read")
+            readPath = argv[i + 1];
+        else if (a == "--plain")
+            plainPath = argv[i + 1];
+        else if (a == "--keep")
+            keep = std::atoi(argv[i + 1]) != 0;
+        else if (a == "--reuse")
+            reuse = std::atoi(argv[i + 1]) != 0;
+        else if (a == "--repeat")
+            repeat = std::max(1, std::atoi(argv[i + 1]));
     }
     if (!readPath.empty()) return readOne(readPath, threads);
     if (!plainPath.empty()) return plainLoop(plainPath);
@@ -205,15 +222,17 @@ int main(int argc, char** argv) {
             caliper3d::reconstruction::syntheticProfile("example", length, step));
         caliper3d::io::writeColumnTextFile(text, well, caliper3d::io::LengthUnit::Millimetre);
         caliper3d::io::writeLasFile(las, well);
-        std::printf("wrote %zu rows: %s (%.1f MB), %s (%.1f MB) in %.1f s\n", well.rowCount(), text.c_str(),
-                    static_cast<double>(std::filesystem::file_size(text)) / 1e6, las.c_str(),
-                    static_cast<double>(std::filesystem::file_size(las)) / 1e6, seconds(start, Clock::now()));
+        std::printf("wrote %zu rows: %s (%.1f MB), %s (%.1f MB) in %.1f s\n", well.rowCount(),
+                    text.c_str(), static_cast<double>(std::filesystem::file_size(text)) / 1e6,
+                    las.c_str(), static_cast<double>(std::filesystem::file_size(las)) / 1e6,
+                    seconds(start, Clock::now()));
     }
     // Each measurement `repeat` times, interleaved so that load from other jobs
     // falls on all three alike; best and median reported.
     for (const std::string& file : {text, las}) {
         runChild(argv[0], "--plain " + file);  // warm the page cache
-        const std::string commands[3] = {"--plain " + file, "--read " + file + " --threads " + std::to_string(threads),
+        const std::string commands[3] = {"--plain " + file,
+                                         "--read " + file + " --threads " + std::to_string(threads),
                                          "--read " + file + " --threads 1"};
         const char* labels[3] = {"plain from_chars loop", "", "reader, 1 thread"};
         std::vector<Run> runs[3];
@@ -224,14 +243,18 @@ int main(int argc, char** argv) {
         Summary summary[3];
         for (int k = 0; k < 3; ++k) {
             summary[k] = summarise(runs[k]);
-            const std::string label = k == 1 ? "reader, " + std::to_string(threads) + " threads" : labels[k];
-            std::printf("  %-22s best %6.1f MB/s  median %6.1f  worst %6.1f  cpu %.3f s  peak %.1f MiB%s\n",
-                        label.c_str(), summary[k].best, summary[k].median, summary[k].worst, summary[k].cpu,
-                        summary[k].peak, k == 0 ? "" : (" (" + summary[k].ratioText + ")").c_str());
+            const std::string label =
+                k == 1 ? "reader, " + std::to_string(threads) + " threads" : labels[k];
+            std::printf(
+                "  %-22s best %6.1f MB/s  median %6.1f  worst %6.1f  cpu %.3f s  peak %.1f MiB%s\n",
+                label.c_str(), summary[k].best, summary[k].median, summary[k].worst, summary[k].cpu,
+                summary[k].peak, k == 0 ? "" : (" (" + summary[k].ratioText + ")").c_str());
         }
-        std::printf("  reader / plain: best %.2f, median %.2f (%d threads); best %.2f, median %.2f (1 thread)\n",
-                    summary[1].best / summary[0].best, summary[1].median / summary[0].median, threads,
-                    summary[2].best / summary[0].best, summary[2].median / summary[0].median);
+        std::printf(
+            "  reader / plain: best %.2f, median %.2f (%d threads); best %.2f, median %.2f (1 "
+            "thread)\n",
+            summary[1].best / summary[0].best, summary[1].median / summary[0].median, threads,
+            summary[2].best / summary[0].best, summary[2].median / summary[0].median);
     }
     if (!keep) {
         std::filesystem::remove(text);

@@ -6,8 +6,8 @@
 
 #include <benchmark/benchmark.h>
 
-#include "reconstruction/synthetic/synthetic_well.h"
 #include "reconstruction/analysis/well_analysis.h"
+#include "reconstruction/synthetic/synthetic_well.h"
 
 using namespace caliper3d;
 using namespace caliper3d::reconstruction;
@@ -15,8 +15,8 @@ using namespace caliper3d::reconstruction;
 namespace {
 
 std::shared_ptr<const io::SectionTable> fourKilometreWell() {
-    static const auto table =
-        std::make_shared<const io::SectionTable>(makeSyntheticWell(syntheticProfile("example", 4000.0, 0.0025)));
+    static const auto table = std::make_shared<const io::SectionTable>(
+        makeSyntheticWell(syntheticProfile("example", 4000.0, 0.0025)));
     return table;
 }
 
@@ -31,8 +31,8 @@ void pathSplineAnalysis(benchmark::State& state) {
         const WellAnalysis analysis = analyseWell(geometry, options);
         benchmark::DoNotOptimize(analysis.sections.data());
     }
-    state.counters["sections/s"] = benchmark::Counter(static_cast<double>(table->rowCount()) * state.iterations(),
-                                                      benchmark::Counter::kIsRate);
+    state.counters["sections/s"] = benchmark::Counter(
+        static_cast<double>(table->rowCount()) * state.iterations(), benchmark::Counter::kIsRate);
     state.counters["sections"] = static_cast<double>(table->rowCount());
 }
 
@@ -45,13 +45,23 @@ void analysisOnly(benchmark::State& state) {
         const WellAnalysis analysis = analyseWell(geometry, options);
         benchmark::DoNotOptimize(analysis.sections.data());
     }
-    state.counters["sections/s"] = benchmark::Counter(static_cast<double>(table->rowCount()) * state.iterations(),
-                                                      benchmark::Counter::kIsRate);
+    state.counters["sections/s"] = benchmark::Counter(
+        static_cast<double>(table->rowCount()) * state.iterations(), benchmark::Counter::kIsRate);
 }
 
 }  // namespace
 
-BENCHMARK(pathSplineAnalysis)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
-BENCHMARK(analysisOnly)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(3);
+BENCHMARK(pathSplineAnalysis)
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(3);
+BENCHMARK(analysisOnly)
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(3);
 
 BENCHMARK_MAIN();

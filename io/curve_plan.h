@@ -21,8 +21,8 @@ struct ColumnSpec {
     std::string mnemonic;
     std::string unit;
     std::string description;
-    bool text = false;      // a string column (LAS 3.0 {S}): never parsed, NaN
-    std::size_t line = 0;   // header line, for messages
+    bool text = false;     // a string column (LAS 3.0 {S}): never parsed, NaN
+    std::size_t line = 0;  // header line, for messages
 };
 
 // How one row of raw column values becomes one row of a SectionTable: which
@@ -31,10 +31,10 @@ struct ColumnSpec {
 // threads: mapRow only reads the plan).
 struct CurvePlan {
     int depthColumn = 0;
-    double depthScale = 1.0;      // file unit -> metres
+    double depthScale = 1.0;  // file unit -> metres
     int armCount = 0;
-    std::vector<int> armColumn;   // per arm
-    std::vector<double> armScale; // file unit -> millimetres of radius (diameters halved)
+    std::vector<int> armColumn;             // per arm
+    std::vector<double> armScale;           // file unit -> millimetres of radius (diameters halved)
     int angleColumn[4] = {-1, -1, -1, -1};  // P1AZ, DEVI, HAZI, RB
     double angleScale[4] = {1.0, 1.0, 1.0, 1.0};
     std::array<std::string, 4> angleName;  // the mnemonics, for messages

@@ -23,19 +23,27 @@ Section classify(std::string_view title) {
     std::string name = lower(trim(title.substr(1)));
     const std::size_t end = name.find_first_of(" \t|");
     if (end != std::string::npos) name.resize(end);
-    if (name.rfind("log_parameter", 0) == 0 || name.rfind("parameter", 0) == 0) return Section::Parameters;
+    if (name.rfind("log_parameter", 0) == 0 || name.rfind("parameter", 0) == 0)
+        return Section::Parameters;
     if (name.rfind("log_definition", 0) == 0 || name.rfind("curve", 0) == 0) return Section::Curves;
     if (name.rfind("log_data", 0) == 0 || name.rfind("ascii", 0) == 0) return Section::Data;
     // Any other LAS 3.0 group (~Core_Data, ~Perforations_Definition, ...) is not a log.
     if (name.find('_') != std::string::npos) return Section::Ignored;
     switch (name.empty() ? '\0' : name.front()) {
-        case 'v': return Section::Version;
-        case 'w': return Section::Well;
-        case 'c': return Section::Curves;
-        case 'p': return Section::Parameters;
-        case 'o': return Section::Other;
-        case 'a': return Section::Data;
-        default: return Section::Ignored;
+        case 'v':
+            return Section::Version;
+        case 'w':
+            return Section::Well;
+        case 'c':
+            return Section::Curves;
+        case 'p':
+            return Section::Parameters;
+        case 'o':
+            return Section::Other;
+        case 'a':
+            return Section::Data;
+        default:
+            return Section::Ignored;
     }
 }
 
@@ -48,10 +56,16 @@ const LasItem* find(const std::vector<LasItem>& items, std::string_view mnemonic
 
 }  // namespace
 
-bool isLasDataTitle(std::string_view title) { return classify(title) == Section::Data; }
+bool isLasDataTitle(std::string_view title) {
+    return classify(title) == Section::Data;
+}
 
-const LasItem* LasHeader::wellItem(std::string_view mnemonic) const { return find(well, mnemonic); }
-const LasItem* LasHeader::parameter(std::string_view mnemonic) const { return find(parameters, mnemonic); }
+const LasItem* LasHeader::wellItem(std::string_view mnemonic) const {
+    return find(well, mnemonic);
+}
+const LasItem* LasHeader::parameter(std::string_view mnemonic) const {
+    return find(parameters, mnemonic);
+}
 
 bool splitLasItem(std::string_view line, LasItem& item) {
     // The description follows the last colon (LAS 2.0, section 5.4); a line
@@ -76,7 +90,8 @@ bool splitLasItem(std::string_view line, LasItem& item) {
     item.mnemonic = std::string(trim(left.substr(0, dot)));
     std::string_view rest = left.substr(dot + 1);
     std::size_t unitEnd = 0;
-    while (unitEnd < rest.size() && !std::isspace(static_cast<unsigned char>(rest[unitEnd]))) ++unitEnd;
+    while (unitEnd < rest.size() && !std::isspace(static_cast<unsigned char>(rest[unitEnd])))
+        ++unitEnd;
     item.unit = std::string(rest.substr(0, unitEnd));
     item.value = std::string(trim(rest.substr(unitEnd)));
     std::string_view d = trim(description);
@@ -114,27 +129,37 @@ void readVersionAndNull(LasHeader& header, const Warn& warn) {
     const std::string& file = header.file;
     if (const LasItem* vers = find(header.versionItems, "VERS")) {
         double v = 0.0;
-        if (parseNumber(vers->value, v)) header.version = v;
-        else warn(vers->line, "VERS '" + vers->value + "' is not a number; reading as LAS 2.0");
+        if (parseNumber(vers->value, v))
+            header.version = v;
+        else
+            warn(vers->line, "VERS '" + vers->value + "' is not a number; reading as LAS 2.0");
     } else {
         warn(1, "no VERS item; reading as LAS 2.0");
     }
-    if (const LasItem* wrap = find(header.versionItems, "WRAP")) header.wrap = upper(wrap->value) == "YES";
+    if (const LasItem* wrap = find(header.versionItems, "WRAP"))
+        header.wrap = upper(wrap->value) == "YES";
     if (const LasItem* dlm = find(header.versionItems, "DLM")) {
         const std::string d = upper(dlm->value);
-        if (d == "COMMA") header.delimiter = ',';
-        else if (d == "TAB") header.delimiter = '\t';
-        else if (d == "SPACE" || d.empty()) header.delimiter = ' ';
-        else throw ParseError(file, dlm->line, 1, "expected DLM SPACE, TAB or COMMA, found '" + dlm->value + "'");
+        if (d == "COMMA")
+            header.delimiter = ',';
+        else if (d == "TAB")
+            header.delimiter = '\t';
+        else if (d == "SPACE" || d.empty())
+            header.delimiter = ' ';
+        else
+            throw ParseError(file, dlm->line, 1,
+                             "expected DLM SPACE, TAB or COMMA, found '" + dlm->value + "'");
     }
-    if (const LasItem* nulls = header.parameter("NULLS")) header.onlyDeclaredNull = upper(nulls->value) == "DECLARED";
+    if (const LasItem* nulls = header.parameter("NULLS"))
+        header.onlyDeclaredNull = upper(nulls->value) == "DECLARED";
     if (const LasItem* null = header.wellItem("NULL")) {
         double v = 0.0;
         if (parseNumber(null->value, v)) {
             header.hasNull = true;
             header.null = v;
         } else if (!null->value.empty()) {
-            warn(null->line, "NULL '" + null->value + "' is not a number; using the common null values");
+            warn(null->line,
+                 "NULL '" + null->value + "' is not a number; using the common null values");
         }
     }
 }
@@ -144,9 +169,12 @@ void readVersionAndNull(LasHeader& header, const Warn& warn) {
 LasHeader parseLasHeader(std::string_view text, const std::string& file, Diagnostics* diagnostics) {
     LasHeader header;
     header.file = file;
-    if (text.size() >= 2 && ((static_cast<unsigned char>(text[0]) == 0xFF && static_cast<unsigned char>(text[1]) == 0xFE) ||
-                             (static_cast<unsigned char>(text[0]) == 0xFE && static_cast<unsigned char>(text[1]) == 0xFF)))
-        throw ParseError(file, 1, 1, "expected LAS text in ASCII or UTF-8, found UTF-16 (convert it first)");
+    if (text.size() >= 2 && ((static_cast<unsigned char>(text[0]) == 0xFF &&
+                              static_cast<unsigned char>(text[1]) == 0xFE) ||
+                             (static_cast<unsigned char>(text[0]) == 0xFE &&
+                              static_cast<unsigned char>(text[1]) == 0xFF)))
+        throw ParseError(file, 1, 1,
+                         "expected LAS text in ASCII or UTF-8, found UTF-16 (convert it first)");
     if (text.size() >= 3 && text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
 
     auto warn = [&](std::size_t line, std::string message) {
@@ -179,11 +207,13 @@ LasHeader parseLasHeader(std::string_view text, const std::string& file, Diagnos
             const int index = static_cast<int>(section);
             skipping = false;
             if (section == Section::Ignored) {
-                warn(lineNumber, "section '" + std::string(line) + "' is not used by caliper3d; skipped");
+                warn(lineNumber,
+                     "section '" + std::string(line) + "' is not used by caliper3d; skipped");
                 continue;
             }
             if (seen[index]) {
-                warn(lineNumber, "section '" + std::string(line) + "' appears again; the first one is used");
+                warn(lineNumber,
+                     "section '" + std::string(line) + "' appears again; the first one is used");
                 skipping = true;
                 continue;
             }
@@ -217,7 +247,8 @@ LasHeader parseLasHeader(std::string_view text, const std::string& file, Diagnos
             // Outside ~C a bad line can be skipped safely; inside, every later
             // column would shift onto the wrong curve.
             if (section != Section::Curves) {
-                warn(lineNumber, "header line without 'MNEM.UNIT' skipped: '" + std::string(line.substr(0, 60)) + "'");
+                warn(lineNumber, "header line without 'MNEM.UNIT' skipped: '" +
+                                     std::string(line.substr(0, 60)) + "'");
                 continue;
             }
             throw ParseError(file, lineNumber, 1,
@@ -225,14 +256,25 @@ LasHeader parseLasHeader(std::string_view text, const std::string& file, Diagnos
                                  std::string(line.substr(0, 60)) + "'");
         }
         switch (section) {
-            case Section::Version: header.versionItems.push_back(item); break;
-            case Section::Well: header.well.push_back(item); break;
-            case Section::Curves: header.curves.push_back(item); break;
-            case Section::Parameters: header.parameters.push_back(item); break;
-            default: break;
+            case Section::Version:
+                header.versionItems.push_back(item);
+                break;
+            case Section::Well:
+                header.well.push_back(item);
+                break;
+            case Section::Curves:
+                header.curves.push_back(item);
+                break;
+            case Section::Parameters:
+                header.parameters.push_back(item);
+                break;
+            default:
+                break;
         }
     }
-    if (!sawSection) throw ParseError(file, 1, 1, "expected a LAS file (sections starting with '~'), found none");
+    if (!sawSection)
+        throw ParseError(file, 1, 1,
+                         "expected a LAS file (sections starting with '~'), found none");
 
     readVersionAndNull(header, warn);
     return header;

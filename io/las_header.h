@@ -34,15 +34,15 @@ struct LasHeader {
     bool onlyDeclaredNull = false;
     std::vector<LasItem> versionItems;
     std::vector<LasItem> well;
-    std::vector<LasItem> curves;      // ~C, or ~Log_Definition in LAS 3.0
-    std::vector<LasItem> parameters;  // ~P, or ~Log_Parameter
-    std::string other;                // ~O text
+    std::vector<LasItem> curves;         // ~C, or ~Log_Definition in LAS 3.0
+    std::vector<LasItem> parameters;     // ~P, or ~Log_Parameter
+    std::string other;                   // ~O text
     std::vector<std::string> dataNames;  // names after "~A" on its own line, if any
 
     bool hasData = false;
-    std::size_t dataBegin = 0;     // byte offset of the first line after the ~A line
-    std::size_t dataEnd = 0;       // byte offset where the data end (next section or end of text)
-    std::size_t dataFirstLine = 0; // 1-based line number at dataBegin
+    std::size_t dataBegin = 0;      // byte offset of the first line after the ~A line
+    std::size_t dataEnd = 0;        // byte offset where the data end (next section or end of text)
+    std::size_t dataFirstLine = 0;  // 1-based line number at dataBegin
 
     const LasItem* wellItem(std::string_view mnemonic) const;
     const LasItem* parameter(std::string_view mnemonic) const;

@@ -9,14 +9,13 @@
 
 #include "io/layout/las_layout.h"
 #include "io/number_parsing.h"
-#include "io/stream/row_parser.h"
 #include "io/parse_error.h"
+#include "io/stream/row_parser.h"
 #include "io/text.h"
 
 namespace caliper3d::io {
 
 namespace {
-
 
 bool allOf(std::string_view s, char c) {
     return !s.empty() && std::all_of(s.begin(), s.end(), [c](char x) { return x == c; });
@@ -41,8 +40,8 @@ void splitArrayName(LasCurve& curve) {
 bool isCommonNullNumber(double v) {
     // Cheap rejection first: this runs on every value of a large log.
     if (v > -999.0 && v < 999.25) return false;
-    return v == -999.25 || v == 999.25 || v == -9999.25 || v == 9999.25 || v == -9999.0 || v == 9999.0 ||
-           v == -999.0;
+    return v == -999.25 || v == 999.25 || v == -9999.25 || v == 9999.25 || v == -9999.0 ||
+           v == 9999.0 || v == -999.0;
 }
 
 std::vector<ColumnSpec> lasColumns(const LasHeader& h, Diagnostics* diagnostics) {
@@ -82,7 +81,8 @@ class CurveSink : public RowSink {
 public:
     explicit CurveSink(LasLog& log) : m_log(log) {}
     void row(const double* raw, std::size_t line) override {
-        for (std::size_t c = 0; c < m_log.curves.size(); ++c) m_log.curves[c].values.push_back(raw[c]);
+        for (std::size_t c = 0; c < m_log.curves.size(); ++c)
+            m_log.curves[c].values.push_back(raw[c]);
         m_log.rowLines.push_back(line);
     }
 
@@ -99,7 +99,8 @@ LasLog readLas(std::string_view text, const std::string& file, const LasReadOpti
     LasLog log;
     log.header = parseLasHeader(text, file, diagnostics);
     const LasHeader& h = log.header;
-    if (h.curves.empty()) throw ParseError(file, 0, 0, "expected a ~C (curve information) section, found none");
+    if (h.curves.empty())
+        throw ParseError(file, 0, 0, "expected a ~C (curve information) section, found none");
     if (!h.hasData) throw ParseError(file, 0, 0, "expected a ~A (data) section, found none");
 
     Diagnostics local;

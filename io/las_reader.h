@@ -5,8 +5,8 @@
 #include <string_view>
 #include <vector>
 
-#include "io/diagnostics.h"
 #include "io/curve_plan.h"
+#include "io/diagnostics.h"
 #include "io/las_header.h"
 #include "io/read_options.h"
 
@@ -23,9 +23,9 @@ struct LasCurve {
     std::string description;
     std::vector<double> values;  // NaN where null
     std::size_t nulls = 0;
-    bool text = false;           // a string column (LAS 3.0 {S}): skipped, values NaN
-    std::string arrayName;       // LAS 3.0 array channel "NMR[3]": "NMR"
-    int arrayIndex = 0;          //   and 3 (1-based); 0 for a plain curve
+    bool text = false;      // a string column (LAS 3.0 {S}): skipped, values NaN
+    std::string arrayName;  // LAS 3.0 array channel "NMR[3]": "NMR"
+    int arrayIndex = 0;     //   and 3 (1-based); 0 for a plain curve
 };
 
 struct LasLog {

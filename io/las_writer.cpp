@@ -25,8 +25,8 @@ void put(std::string& line, double value, double null, int decimals = -1) {
     line.append(buffer, result.ptr);
 }
 
-void item(std::ostream& out, const std::string& mnemonic, const std::string& unit, const std::string& value,
-          const std::string& description) {
+void item(std::ostream& out, const std::string& mnemonic, const std::string& unit,
+          const std::string& value, const std::string& description) {
     std::string left = " " + mnemonic + "." + unit;
     if (left.size() < 16) left.resize(16, ' ');
     std::string middle = " " + value;
@@ -38,7 +38,8 @@ void item(std::ostream& out, const std::string& mnemonic, const std::string& uni
 double nullAbsentFrom(const std::vector<LasColumn>& columns, std::size_t rows, double preferred) {
     std::vector<double> candidates;
     if (std::isfinite(preferred)) candidates.push_back(preferred);
-    for (double power = 1e3; power <= 1e12; power *= 10.0) candidates.push_back(-(power - 0.75));  // -999.25, -9999.25, ...
+    for (double power = 1e3; power <= 1e12; power *= 10.0)
+        candidates.push_back(-(power - 0.75));  // -999.25, -9999.25, ...
     std::vector<char> taken(candidates.size(), 0);
     for (std::size_t c = 1; c < columns.size(); ++c)  // the index is never read as null
         for (std::size_t r = 0; r < rows; ++r) {
@@ -75,7 +76,8 @@ void writeLasColumns(std::ostream& out, std::size_t rows, const std::vector<LasC
         const double nominal = (depth(rows - 1) - depth(0)) / static_cast<double>(rows - 1);
         step = nominal;
         for (std::size_t r = 1; r < rows && step != 0.0; ++r)
-            if (!(std::abs(depth(r) - depth(r - 1) - nominal) <= 1e-3 * std::abs(nominal))) step = 0.0;
+            if (!(std::abs(depth(r) - depth(r - 1) - nominal) <= 1e-3 * std::abs(nominal)))
+                step = 0.0;
     }
     // "%.10g", locale-free: 0.0025, not 0.0024999999999988864.
     char stepText[32];
@@ -88,7 +90,8 @@ void writeLasColumns(std::ostream& out, std::size_t rows, const std::vector<LasC
     for (const LasColumn& c : columns) item(out, c.mnemonic, c.unit, "", c.description);
     if (!options.parameters.empty()) {
         out << "~Parameter information\n";
-        for (const LasParameter& p : options.parameters) item(out, p.mnemonic, p.unit, p.value, p.description);
+        for (const LasParameter& p : options.parameters)
+            item(out, p.mnemonic, p.unit, p.value, p.description);
     }
     if (!options.other.empty()) {
         out << "~Other information\n" << options.other;
@@ -111,7 +114,8 @@ void writeLas(std::ostream& out, const SectionTable& t, const LasWriteOptions& o
     const std::size_t rows = t.rowCount();
     for (std::size_t r = 0; r < rows; ++r)
         if (!std::isfinite(t.depth_m[r]))
-            throw std::invalid_argument("writeLas: depth of row " + std::to_string(r) + " is not finite");
+            throw std::invalid_argument("writeLas: depth of row " + std::to_string(r) +
+                                        " is not finite");
     std::vector<LasColumn> columns;
     columns.push_back({"DEPT", "M", "measured depth", t.depth_m.data(), 1});
     for (int k = 1; k <= t.armCount; ++k)
@@ -122,21 +126,25 @@ void writeLas(std::ostream& out, const SectionTable& t, const LasWriteOptions& o
         const char* unit;
         const char* description;
         const std::vector<double>* values;
-    } optional[] = {{"P1AZ", "DEG", "pad 1 azimuth", &t.p1az_deg},      {"DEVI", "DEG", "deviation", &t.devi_deg},
-                    {"HAZI", "DEG", "hole azimuth", &t.hazi_deg},       {"RB", "DEG", "relative bearing", &t.rb_deg},
+    } optional[] = {{"P1AZ", "DEG", "pad 1 azimuth", &t.p1az_deg},
+                    {"DEVI", "DEG", "deviation", &t.devi_deg},
+                    {"HAZI", "DEG", "hole azimuth", &t.hazi_deg},
+                    {"RB", "DEG", "relative bearing", &t.rb_deg},
                     {"BS", "MM", "bit size", &t.bitSize_mm}};
     for (const auto& o : optional)
         if (o.values->size() == rows && rows > 0)
             columns.push_back({o.mnemonic, o.unit, o.description, o.values->data(), 1});
     for (const ExtraCurve& e : t.extraCurves)
-        if (e.values.size() == rows && rows > 0) columns.push_back({e.mnemonic, e.unit, e.description, e.values.data(), 1});
+        if (e.values.size() == rows && rows > 0)
+            columns.push_back({e.mnemonic, e.unit, e.description, e.values.data(), 1});
     LasWriteOptions exact = options;
     exact.null = nullAbsentFrom(columns, rows, options.null);
     exact.parameters.push_back({"NULLS", "", "DECLARED", "only NULL marks a missing value"});
     writeLasColumns(out, rows, columns, exact);
 }
 
-void writeLasFile(const std::string& path, const SectionTable& table, const LasWriteOptions& options) {
+void writeLasFile(const std::string& path, const SectionTable& table,
+                  const LasWriteOptions& options) {
     std::ofstream out(path, std::ios::binary);
     if (!out) throw std::runtime_error(path + ": cannot open file for writing");
     writeLas(out, table, options);

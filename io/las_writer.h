@@ -52,6 +52,7 @@ void writeLasColumns(std::ostream& out, std::size_t rows, const std::vector<LasC
 // taken for a common null). Throws std::invalid_argument for a depth that is
 // not finite.
 void writeLas(std::ostream& out, const SectionTable& table, const LasWriteOptions& options = {});
-void writeLasFile(const std::string& path, const SectionTable& table, const LasWriteOptions& options = {});
+void writeLasFile(const std::string& path, const SectionTable& table,
+                  const LasWriteOptions& options = {});
 
 }  // namespace caliper3d::io

@@ -21,7 +21,7 @@ struct CurveInfo {
 // What `caliper3d info` prints about a log.
 struct LogInfo {
     std::string file;
-    std::string format;       // "LAS 2.0", "column text (depth R1..R6 P1AZ DEVI HAZI)", ...
+    std::string format;  // "LAS 2.0", "column text (depth R1..R6 P1AZ DEVI HAZI)", ...
     std::string wellName;
     WellLocation location;    // from the LAS header (empty for column text)
     std::string holeAzimuth;  // where the hole azimuth comes from (io::holeAzimuthPlan)
@@ -29,15 +29,15 @@ struct LogInfo {
     std::size_t rows = 0;     // sections read
     double top_m = 0.0;
     double bottom_m = 0.0;
-    double step_m = 0.0;      // median step
+    double step_m = 0.0;  // median step
     int arms = 0;
-    std::string armSource;    // "radii R1..R6", "diameters C1, C2", ...
+    std::string armSource;        // "radii R1..R6", "diameters C1, C2", ...
     double bitSize_mm = kNaN;     // smallest bit size over the log
     double bitSizeMax_mm = kNaN;  // largest (differs when a BS curve steps down the hole)
     std::vector<CurveInfo> curves;
     Diagnostics diagnostics;
-    bool cancelled = false;   // the read was stopped by its cancellation token
-    bool survey = false;      // a deviation survey, described by describeLog: rows are stations
+    bool cancelled = false;  // the read was stopped by its cancellation token
+    bool survey = false;     // a deviation survey, described by describeLog: rows are stations
 };
 
 }  // namespace caliper3d::io

@@ -31,8 +31,8 @@ void reserveFilledOnce(std::vector<double>& v, std::size_t n) {
     char* const begin = reinterpret_cast<char*>(v.data());
     const std::uintptr_t address = reinterpret_cast<std::uintptr_t>(begin);
     const std::size_t bytes = v.capacity() * sizeof(double);
-    const std::size_t skip = static_cast<std::size_t>((kHugePage - (address & (kHugePage - 1))) &
-                                                      (kHugePage - 1));
+    const std::size_t skip =
+        static_cast<std::size_t>((kHugePage - (address & (kHugePage - 1))) & (kHugePage - 1));
     if (v.empty() && bytes > skip) {
         const std::size_t length = (bytes - skip) & ~static_cast<std::size_t>(kHugePage - 1);
         if (length > 0) ::madvise(begin + skip, length, MADV_HUGEPAGE);
@@ -61,9 +61,9 @@ LoadedLog accumulate(const std::function<LogInfo(const ChunkConsumer&, const Str
             const std::size_t rows = std::max(estimate, chunk.rowCount());
             reserveFilledOnce(t.depth_m, rows);
             reserveFilledOnce(t.radius_mm, rows * static_cast<std::size_t>(chunk.armCount));
-            std::vector<double> SectionTable::*const optional[] = {&SectionTable::p1az_deg, &SectionTable::devi_deg,
-                                                                   &SectionTable::hazi_deg, &SectionTable::rb_deg,
-                                                                   &SectionTable::bitSize_mm};
+            std::vector<double> SectionTable::*const optional[] = {
+                &SectionTable::p1az_deg, &SectionTable::devi_deg, &SectionTable::hazi_deg,
+                &SectionTable::rb_deg, &SectionTable::bitSize_mm};
             for (auto curve : optional)
                 if (!(chunk.*curve).empty()) reserveFilledOnce(t.*curve, rows);
             for (const ExtraCurve& e : chunk.extraCurves) {
@@ -80,16 +80,19 @@ LoadedLog accumulate(const std::function<LogInfo(const ChunkConsumer&, const Str
 
 }  // namespace
 
-LoadedLog loadCaliperLog(const std::string& path, const ReadOptions& options, const StreamOptions& stream) {
+LoadedLog loadCaliperLog(const std::string& path, const ReadOptions& options,
+                         const StreamOptions& stream) {
     LoadedLog loaded = accumulate(
-        [&](const ChunkConsumer& consumer, const StreamOptions& s) { return streamCaliperLog(path, options, consumer, s); },
+        [&](const ChunkConsumer& consumer, const StreamOptions& s) {
+            return streamCaliperLog(path, options, consumer, s);
+        },
         stream);
     loaded.table.source = path;
     return loaded;
 }
 
-LoadedLog loadCaliperText(std::string_view text, const std::string& name, const ReadOptions& options,
-                          const StreamOptions& stream) {
+LoadedLog loadCaliperText(std::string_view text, const std::string& name,
+                          const ReadOptions& options, const StreamOptions& stream) {
     LoadedLog loaded = accumulate(
         [&](const ChunkConsumer& consumer, const StreamOptions& s) {
             return streamCaliperText(text, name, options, consumer, s);
@@ -99,13 +102,16 @@ LoadedLog loadCaliperText(std::string_view text, const std::string& name, const 
     return loaded;
 }
 
-SectionTable readCaliperLog(const std::string& path, const ReadOptions& options, Diagnostics* diagnostics) {
+SectionTable readCaliperLog(const std::string& path, const ReadOptions& options,
+                            Diagnostics* diagnostics) {
     LoadedLog loaded = loadCaliperLog(path, options);
     if (loaded.table.armCount == 0)
         throw ParseError(path, 0, 0,
-                         "expected caliper curves (radii R1..Rn, RAD1..n, fingers F01..Fnn, diameters C1, C2, or one "
+                         "expected caliper curves (radii R1..Rn, RAD1..n, fingers F01..Fnn, "
+                         "diameters C1, C2, or one "
                          "diameter CALI), "
-                         "found none among " + std::to_string(loaded.info.curves.size()) +
+                         "found none among " +
+                             std::to_string(loaded.info.curves.size()) +
                              " curves; name them with --radii or --diameters");
     if (diagnostics) diagnostics->merge(loaded.info.diagnostics);
     return std::move(loaded.table);
@@ -129,9 +135,10 @@ LogInfo describeSurvey(const std::string& path, const ReadOptions& options) {
     SurveyReadOptions surveyOptions;
     surveyOptions.depthUnit = options.depthUnit;
     const SurveyTable s = readSurvey(path, surveyOptions, &info.diagnostics);
-    const char* delimiter = s.delimiter == ',' ? "comma-separated" : s.delimiter == ';' ? "semicolon-separated"
-                            : s.delimiter == '\t'                  ? "tab-separated"
-                                                                   : "columns separated by spaces";
+    const char* delimiter = s.delimiter == ','    ? "comma-separated"
+                            : s.delimiter == ';'  ? "semicolon-separated"
+                            : s.delimiter == '\t' ? "tab-separated"
+                                                  : "columns separated by spaces";
     info.format = "deviation survey (" + std::string(delimiter) + ", column names on line " +
                   std::to_string(s.headerLine) + ")";
     info.wellName = s.wellName;
@@ -144,7 +151,8 @@ LogInfo describeSurvey(const std::string& path, const ReadOptions& options) {
     info.step_m = medianInPlace(steps);
     info.armSource = "none: a deviation survey, not a caliper log (give it to a log with --survey)";
     auto nullsIn = [](const std::vector<double>& v) {
-        return static_cast<std::size_t>(std::count_if(v.begin(), v.end(), [](double x) { return std::isnan(x); }));
+        return static_cast<std::size_t>(
+            std::count_if(v.begin(), v.end(), [](double x) { return std::isnan(x); }));
     };
     for (const SurveyColumn& c : s.columns) {
         CurveInfo curve{c.name, c.unit, c.role.empty() ? "not read" : c.role, 0};
@@ -185,25 +193,30 @@ std::string formatLogInfo(const LogInfo& info) {
     out << "rows:      " << info.rows << (info.survey ? " stations\n" : " sections\n");
     out.setf(std::ios::fixed);
     out.precision(4);
-    out << (info.survey ? "MD:        " : "depth:     ") << info.top_m << " to " << info.bottom_m << " m, step "
-        << info.step_m << (info.survey ? " m (median)" : " m");
+    out << (info.survey ? "MD:        " : "depth:     ") << info.top_m << " to " << info.bottom_m
+        << " m, step " << info.step_m << (info.survey ? " m (median)" : " m");
     if (!info.depthUnit.empty()) out << " (file unit " << info.depthUnit << ")";
     out << "\n";
     out << "arms:      " << info.arms << " from " << info.armSource << "\n";
     out.precision(1);
     if (info.survey) {
-    } else if (std::isfinite(info.bitSize_mm) && std::isfinite(info.bitSizeMax_mm) && info.bitSizeMax_mm > info.bitSize_mm)
+    } else if (std::isfinite(info.bitSize_mm) && std::isfinite(info.bitSizeMax_mm) &&
+               info.bitSizeMax_mm > info.bitSize_mm)
         out << "bit size:  " << info.bitSize_mm << " to " << info.bitSizeMax_mm << " mm\n";
-    else if (std::isfinite(info.bitSize_mm)) out << "bit size:  " << info.bitSize_mm << " mm\n";
-    else out << "bit size:  unknown (give --bit-size)\n";
+    else if (std::isfinite(info.bitSize_mm))
+        out << "bit size:  " << info.bitSize_mm << " mm\n";
+    else
+        out << "bit size:  unknown (give --bit-size)\n";
     if (!info.holeAzimuth.empty()) out << "hole azi:  " << info.holeAzimuth << "\n";
     out << (info.survey ? "columns:\n" : "curves:\n");
     // Characters, not bytes: a decoded UTF-16 header may hold non-ASCII mnemonics.
     auto shown = [](const std::string& s) {
-        return static_cast<std::size_t>(
-            std::count_if(s.begin(), s.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
+        return static_cast<std::size_t>(std::count_if(s.begin(), s.end(), [](char c) {
+            return (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+        }));
     };
-    std::size_t width = 12;  // long survey column names ("Measured Depth ( ft )") widen the name column
+    std::size_t width =
+        12;  // long survey column names ("Measured Depth ( ft )") widen the name column
     std::size_t unitWidth = 8;  // "in (assumed)" widens the unit column
     for (const CurveInfo& c : info.curves) {
         width = std::max(width, shown(c.mnemonic));
@@ -225,7 +238,8 @@ std::string formatLogInfo(const LogInfo& info) {
         out << ": " << w.message << "\n";
     }
     if (info.diagnostics.warningCount > info.diagnostics.warnings.size())
-        out << "  (" << info.diagnostics.warningCount - info.diagnostics.warnings.size() << " more)\n";
+        out << "  (" << info.diagnostics.warningCount - info.diagnostics.warnings.size()
+            << " more)\n";
     return out.str();
 }
 

@@ -22,20 +22,23 @@ struct LoadedLog {
 // Thrown by the whole-log readers when StreamOptions::cancel stopped them.
 class ReadCancelled : public std::runtime_error {
 public:
-    explicit ReadCancelled(const std::string& file) : std::runtime_error(file + ": reading cancelled") {}
+    explicit ReadCancelled(const std::string& file)
+        : std::runtime_error(file + ": reading cancelled") {}
 };
 
 // Reads a column-text or LAS 1.2/2.0/3.0 file (detected from its content)
 // into a section table in metres, millimetres and degrees, sorted by depth.
 // Throws ParseError naming file, line and what was expected.
-LoadedLog loadCaliperLog(const std::string& path, const ReadOptions& options, const StreamOptions& stream = {});
+LoadedLog loadCaliperLog(const std::string& path, const ReadOptions& options,
+                         const StreamOptions& stream = {});
 
 // The same, refusing a log without caliper curves; warnings go to `diagnostics`.
-SectionTable readCaliperLog(const std::string& path, const ReadOptions& options, Diagnostics* diagnostics);
+SectionTable readCaliperLog(const std::string& path, const ReadOptions& options,
+                            Diagnostics* diagnostics);
 
 // The same from text in memory (`name` is used in messages).
-LoadedLog loadCaliperText(std::string_view text, const std::string& name, const ReadOptions& options,
-                          const StreamOptions& stream = {});
+LoadedLog loadCaliperText(std::string_view text, const std::string& name,
+                          const ReadOptions& options, const StreamOptions& stream = {});
 
 // What `caliper3d info FILE` prints, read without keeping the rows. A
 // deviation survey (io::looksLikeSurvey) is described too: its stations,

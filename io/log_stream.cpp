@@ -252,8 +252,7 @@ private:
                 run.substr(m_pieceBegin[i], m_pieceBegin[i + 1] - m_pieceBegin[i]);
             Piece& piece = m_pieces[i];
             piece.rows.reset(m_layout.plan, m_layout.columns, m_name);
-            parseRows(m_layout.format, text, 1, finalRun && i + 1 == pieces, piece.rows,
-                      piece.run);
+            parseRows(m_layout.format, text, 1, finalRun && i + 1 == pieces, piece.rows, piece.run);
         };
         m_sharing->run(pieces, parsePiece);
         const DepthOrdering::Emit emit = [this](const SectionTable& rows) { deliver(rows); };
@@ -346,10 +345,11 @@ private:
         if (!m_steps.empty()) m_info.step_m = medianInPlace(m_steps);
         if (m_info.rows == 0 && !m_info.cancelled) {
             if (m_layout.format.las)
-                throw ParseError(m_name, m_lineNumber, 0, "expected data rows after ~A, found none");
-            throw ParseError(m_name, 0, 0,
-                             "expected rows of numbers (" + m_layout.format.layout +
-                                 "), found none");
+                throw ParseError(m_name, m_lineNumber, 0,
+                                 "expected data rows after ~A, found none");
+            throw ParseError(
+                m_name, 0, 0,
+                "expected rows of numbers (" + m_layout.format.layout + "), found none");
         }
         return std::move(m_info);
     }

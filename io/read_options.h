@@ -28,16 +28,16 @@ inline constexpr int kMinRadiiOnlyColumns = 8;
 // How to read a caliper log of any supported format. Every lenient behaviour
 // is a named option here with its default.
 struct ReadOptions {
-    int armCount = 6;                       // column text: radii per line
-    std::optional<LengthUnit> depthUnit;    // overrides the file's (column text default: metres)
-    std::optional<LengthUnit> radiusUnit;   // overrides the file's (column text default: inches,
-                                            //   millimetres when inches would be implausible)
-    bool allowRadiiOnly = true;             // column text of radii only: depth = row x rowStep_m
-    double rowStep_m = 0.01;                // column text with radii only: depth step per row
+    int armCount = 6;                      // column text: radii per line
+    std::optional<LengthUnit> depthUnit;   // overrides the file's (column text default: metres)
+    std::optional<LengthUnit> radiusUnit;  // overrides the file's (column text default: inches,
+                                           //   millimetres when inches would be implausible)
+    bool allowRadiiOnly = true;            // column text of radii only: depth = row x rowStep_m
+    double rowStep_m = 0.01;               // column text with radii only: depth step per row
     NullPolicy nullPolicy = NullPolicy::Common;
     DepthOrder depthOrder = DepthOrder::SkipBackwards;
     RoleOverrides roles;
-    std::optional<double> bitSize_mm;       // overrides the file's BS
+    std::optional<double> bitSize_mm;  // overrides the file's BS
 };
 
 }  // namespace caliper3d::io

@@ -39,10 +39,13 @@ void SectionTable::append(const SectionTable& other) {
     appendCurve(hazi_deg, other.hazi_deg);
     appendCurve(rb_deg, other.rb_deg);
     appendCurve(bitSize_mm, other.bitSize_mm);
-    if (empty && extraCurves.empty()) extraCurves = other.extraCurves;
+    if (empty && extraCurves.empty())
+        extraCurves = other.extraCurves;
     else if (extraCurves.size() == other.extraCurves.size())
-        for (std::size_t i = 0; i < extraCurves.size(); ++i) appendCurve(extraCurves[i].values, other.extraCurves[i].values);
-    else throw std::invalid_argument("SectionTable::append: extra curves differ");
+        for (std::size_t i = 0; i < extraCurves.size(); ++i)
+            appendCurve(extraCurves[i].values, other.extraCurves[i].values);
+    else
+        throw std::invalid_argument("SectionTable::append: extra curves differ");
 }
 
 void SectionTable::appendRows(const SectionTable& other, std::size_t first, std::size_t last) {

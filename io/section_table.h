@@ -28,16 +28,16 @@ struct ExtraCurve {
 // vector has one value per row. Optional curves are empty when the log lacks
 // them; a missing value inside a present curve is NaN.
 struct SectionTable {
-    std::string source;   // file the table came from (for messages)
-    int armCount = 0;     // radii per row
+    std::string source;  // file the table came from (for messages)
+    int armCount = 0;    // radii per row
 
     std::vector<double> depth_m;
-    std::vector<double> radius_mm;  // row-major: armCount values per row
-    std::vector<double> p1az_deg;   // azimuth of arm 1 from north, clockwise
-    std::vector<double> devi_deg;   // inclination, 0 = vertical down
-    std::vector<double> hazi_deg;   // hole azimuth from north, clockwise
-    std::vector<double> rb_deg;     // relative bearing of arm 1 from the high side
-    std::vector<double> bitSize_mm; // bit size per row (from a parameter or a curve)
+    std::vector<double> radius_mm;   // row-major: armCount values per row
+    std::vector<double> p1az_deg;    // azimuth of arm 1 from north, clockwise
+    std::vector<double> devi_deg;    // inclination, 0 = vertical down
+    std::vector<double> hazi_deg;    // hole azimuth from north, clockwise
+    std::vector<double> rb_deg;      // relative bearing of arm 1 from the high side
+    std::vector<double> bitSize_mm;  // bit size per row (from a parameter or a curve)
     std::vector<ExtraCurve> extraCurves;
     // Where hole_azimuth came from (docs/conventions.md, "Hole azimuth"):
     // read from the log (or not needed: no HAZI and no inclination), derived

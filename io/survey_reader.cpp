@@ -48,7 +48,8 @@ std::vector<Field> split(std::string_view line, char delimiter) {
     std::size_t start = 0;
     while (true) {
         const std::size_t end = line.find(delimiter, start);
-        const std::string_view raw = line.substr(start, end == std::string_view::npos ? line.npos : end - start);
+        const std::string_view raw =
+            line.substr(start, end == std::string_view::npos ? line.npos : end - start);
         std::size_t lead = 0;
         while (lead < raw.size() && std::isspace(static_cast<unsigned char>(raw[lead]))) ++lead;
         out.push_back({trim(raw), start + lead + 1});
@@ -63,11 +64,13 @@ std::optional<LengthUnit> unitOfName(std::string_view name) {
     const std::size_t open = name.find('(');
     if (open != std::string_view::npos) {
         const std::size_t close = name.find(')', open);
-        const std::string_view inside = trim(name.substr(open + 1, close == name.npos ? name.npos : close - open - 1));
+        const std::string_view inside =
+            trim(name.substr(open + 1, close == name.npos ? name.npos : close - open - 1));
         if (auto u = parseLengthUnit(inside)) return u;
     }
     const std::size_t underscore = name.rfind('_');
-    if (underscore != std::string_view::npos) return parseLengthUnit(trim(name.substr(underscore + 1)));
+    if (underscore != std::string_view::npos)
+        return parseLengthUnit(trim(name.substr(underscore + 1)));
     return std::nullopt;
 }
 
@@ -80,11 +83,13 @@ std::string normalise(std::string_view name) {
     const std::size_t underscore = name.rfind('_');
     if (underscore != std::string_view::npos) {
         const std::string_view suffix = trim(name.substr(underscore + 1));
-        if (parseLengthUnit(suffix) || suffix == "deg" || suffix == "DEG") name = name.substr(0, underscore);
+        if (parseLengthUnit(suffix) || suffix == "deg" || suffix == "DEG")
+            name = name.substr(0, underscore);
     }
     std::string out;
     for (char c : name)
-        if (std::isalnum(static_cast<unsigned char>(c))) out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        if (std::isalnum(static_cast<unsigned char>(c)))
+            out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     return out;
 }
 
@@ -145,8 +150,8 @@ namespace {
 // info lists them, the stations, and the choice of well in a multi-well table.
 class SurveyParser {
 public:
-    SurveyParser(const std::string& text, const std::string& name,
-                 const SurveyReadOptions& options, Diagnostics* diagnostics)
+    SurveyParser(const std::string& text, const std::string& name, const SurveyReadOptions& options,
+                 Diagnostics* diagnostics)
         : m_name(name), m_options(options), m_diagnostics(diagnostics) {
         splitLines(text);
         m_table.source = name;
@@ -159,9 +164,9 @@ public:
         readStations();
         if (m_wellColumn >= 0) chooseWell();
         if (m_table.stationCount() < 2)
-            throw ParseError(m_name, 0, 0,
-                             "expected at least two stations, found " +
-                                 std::to_string(m_table.stationCount()));
+            throw ParseError(
+                m_name, 0, 0,
+                "expected at least two stations, found " + std::to_string(m_table.stationCount()));
         return std::move(m_table);
     }
 
@@ -192,7 +197,8 @@ private:
         }
     }
 
-    // The first line naming MD, inclination and azimuth columns; its delimiter, units and well column.
+    // The first line naming MD, inclination and azimuth columns; its delimiter, units and well
+    // column.
     void findHeader() {
         for (; m_i < m_lines.size(); ++m_i) {
             if (isComment(m_lines[m_i])) continue;
@@ -311,15 +317,14 @@ private:
                     std::size_t footer = 0;
                     for (std::size_t j = m_i; j < m_lines.size(); ++j)
                         footer += !isComment(m_lines[j]);
-                    warn(lineNumber, std::to_string(footer) +
-                                         " lines of text after the last station skipped");
+                    warn(lineNumber,
+                         std::to_string(footer) + " lines of text after the last station skipped");
                     break;
                 }
                 const bool hasMd = fields.size() > column(kMd);
                 const std::size_t col = hasMd ? fields[column(kMd)].column : 1;
-                const std::string found =
-                    std::string((hasMd ? trim(fields[column(kMd)].text) : trim(m_lines[m_i]))
-                                    .substr(0, 40));
+                const std::string found = std::string(
+                    (hasMd ? trim(fields[column(kMd)].text) : trim(m_lines[m_i])).substr(0, 40));
                 throw ParseError(m_name, lineNumber, col,
                                  "expected a number (measured depth), found '" + found + "'");
             }
@@ -456,8 +461,8 @@ bool looksLikeSurvey(std::string_view head) {
         // "DEPTH R1 .. R6 P1AZ DEVI HAZI" names depth, deviation and azimuth too: a caliper log.
         for (const Field& f : fields) {
             const CurveRole role = guessRole(splitColumnName(trim(f.text)).first).role;
-            if (role == CurveRole::Radius || role == CurveRole::Finger || role == CurveRole::Diameter ||
-                role == CurveRole::PadAzimuth)
+            if (role == CurveRole::Radius || role == CurveRole::Finger ||
+                role == CurveRole::Diameter || role == CurveRole::PadAzimuth)
                 return false;
         }
         return true;
@@ -465,7 +470,8 @@ bool looksLikeSurvey(std::string_view head) {
     return false;
 }
 
-SurveyTable readSurvey(const std::string& path, const SurveyReadOptions& options, Diagnostics* diagnostics) {
+SurveyTable readSurvey(const std::string& path, const SurveyReadOptions& options,
+                       Diagnostics* diagnostics) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw ParseError(path, 0, 0, "cannot open the survey file");
     std::ostringstream buffer;

@@ -28,7 +28,7 @@ struct SurveyTable {
     std::vector<double> md_m;
     std::vector<double> inc_deg;
     std::vector<double> azi_deg;
-    std::vector<double> tvd_m;    // NaN where the cell is empty
+    std::vector<double> tvd_m;  // NaN where the cell is empty
     std::vector<double> north_m;
     std::vector<double> east_m;
     LengthUnit depthUnit = LengthUnit::Metre;  // unit of MD as written in the file
@@ -65,8 +65,8 @@ struct SurveyReadOptions {
 // ParseError (file, line, column, expected, found) on a station that is not
 // numbers, on depths that decrease, on an inclination outside [0, 180], on
 // fewer than two stations, or when no header is found.
-SurveyTable parseSurvey(const std::string& text, const std::string& name, const SurveyReadOptions& options = {},
-                        Diagnostics* diagnostics = nullptr);
+SurveyTable parseSurvey(const std::string& text, const std::string& name,
+                        const SurveyReadOptions& options = {}, Diagnostics* diagnostics = nullptr);
 SurveyTable readSurvey(const std::string& path, const SurveyReadOptions& options = {},
                        Diagnostics* diagnostics = nullptr);
 

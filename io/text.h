@@ -13,7 +13,9 @@ std::string lower(std::string_view s);
 // Without leading and trailing white space (std::isspace: blanks, tabs, line ends).
 std::string_view trim(std::string_view s);
 // A blank inside a line of data: space, tab or the CR of a CRLF line end.
-inline bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+inline bool isBlank(char c) {
+    return c == ' ' || c == '\t' || c == '\r';
+}
 // The fields of a line separated by runs of blanks.
 std::vector<std::string_view> splitBlank(std::string_view s);
 

@@ -27,7 +27,8 @@ std::string fromUtf16IfMarked(std::string text, const std::string& name) {
     std::size_t line = 1;
     for (std::size_t i = 2; i + 1 < text.size(); i += 2) {
         unsigned c = unit(i);
-        if (c >= 0xD800 && c <= 0xDBFF && i + 3 < text.size() && unit(i + 2) >= 0xDC00 && unit(i + 2) <= 0xDFFF) {
+        if (c >= 0xD800 && c <= 0xDBFF && i + 3 < text.size() && unit(i + 2) >= 0xDC00 &&
+            unit(i + 2) <= 0xDFFF) {
             c = 0x10000 + ((c - 0xD800) << 10) + (unit(i + 2) - 0xDC00);
             i += 2;
         } else if (c >= 0xD800 && c <= 0xDFFF) {

@@ -8,8 +8,8 @@
 #include <glm/vec3.hpp>
 
 #include "io/section_table.h"
-#include "reconstruction/parallel/fill_array.h"
 #include "reconstruction/mesh/mesh.h"
+#include "reconstruction/parallel/fill_array.h"
 #include "reconstruction/path/minimum_curvature.h"
 #include "reconstruction/section/periodic_spline.h"
 #include "reconstruction/section/section_coverage.h"

@@ -23,8 +23,8 @@ SoCamera* findCamera(SoNode* root) {
 
 std::size_t trianglesDrawn(SoNode* root, int width, int height) {
     assertMainThread("trianglesDrawn");
-    SoGetPrimitiveCountAction count(SbViewportRegion(static_cast<short>(width),
-                                                     static_cast<short>(height)));
+    SoGetPrimitiveCountAction count(
+        SbViewportRegion(static_cast<short>(width), static_cast<short>(height)));
     count.apply(root);
     return static_cast<std::size_t>(count.getTriangleCount());
 }

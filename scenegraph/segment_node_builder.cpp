@@ -56,8 +56,8 @@ std::vector<float> lodSwitchDistances(const reconstruction::SegmentMesh& segment
     const float scale = view.focal_px / view.pixelTolerance / 1000.0f;  // mm of error -> m
     float previous = 0.0f;
     for (std::size_t i = 0; i < levels; ++i) {
-        const float error_mm = i + 1 < levels ? segment.levelError_mm[i + 1]
-                                              : 2000.0f * segment.maxRadius_m;
+        const float error_mm =
+            i + 1 < levels ? segment.levelError_mm[i + 1] : 2000.0f * segment.maxRadius_m;
         previous = std::max(previous, error_mm * scale + segment.radius);
         out[i] = previous;
     }
@@ -78,8 +78,8 @@ SoLOD* makeSegmentLod(const reconstruction::SegmentMesh& segment, const LodView&
     lod->center.setValue(segment.centre.x, segment.centre.y, segment.centre.z);
     const std::vector<float> distances = lodSwitchDistances(segment, view);
     int i = 0;
-    for (std::size_t level = static_cast<std::size_t>(segment.firstLevel);
-         level < distances.size(); ++level)
+    for (std::size_t level = static_cast<std::size_t>(segment.firstLevel); level < distances.size();
+         ++level)
         lod->range.set1Value(i++, distances[level]);
     if (i == 0) lod->range.setNum(0);
     for (const auto& mesh : segment.levels) lod->addChild(makeStripSet(mesh));

@@ -1,8 +1,8 @@
 #include "scenegraph/well_scene.h"
 
 #include <Inventor/nodes/SoCoordinate3.h>
-#include <Inventor/nodes/SoIndexedTriangleStripSet.h>
 #include <Inventor/nodes/SoDrawStyle.h>
+#include <Inventor/nodes/SoIndexedTriangleStripSet.h>
 #include <Inventor/nodes/SoLOD.h>
 #include <Inventor/nodes/SoLightModel.h>
 #include <Inventor/nodes/SoLineSet.h>
@@ -104,7 +104,8 @@ void WellScene::setRanges(Record& record) {
     range.setNum(std::max(count, 0));
     for (int i = 0; i < count; ++i)
         range.set1Value(
-            i, record.switchDistances[static_cast<std::size_t>(first) + static_cast<std::size_t>(i)]);
+            i,
+            record.switchDistances[static_cast<std::size_t>(first) + static_cast<std::size_t>(i)]);
 }
 
 void WellScene::setLodView(const LodView& view) {
@@ -137,8 +138,8 @@ void WellScene::attachFinerLevels(const reconstruction::SegmentMesh& finer) {
     if (finer.index >= m_records.size()) return;
     Record& record = m_records[finer.index];
     // Only the levels it lacks, finest first, in front of those it holds.
-    const int count = std::min(static_cast<int>(finer.levels.size()),
-                               record.heldFrom - finer.firstLevel);
+    const int count =
+        std::min(static_cast<int>(finer.levels.size()), record.heldFrom - finer.firstLevel);
     if (count <= 0) return;
     for (int i = count - 1; i >= 0; --i) {
         const reconstruction::Mesh& mesh = finer.levels[static_cast<std::size_t>(i)];

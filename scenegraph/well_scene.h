@@ -18,9 +18,9 @@ namespace caliper3d::scenegraph {
 // A finer level a segment should show from where the camera is (and does not hold yet).
 struct DetailRequest {
     std::size_t segment = 0;
-    int level = 0;         // the finest pyramid level wanted
-    int heldFrom = 0;      // the finest level held now: build [level, heldFrom)
-    float distance = 0.0f; // eye to the segment's centre, metres
+    int level = 0;          // the finest pyramid level wanted
+    int heldFrom = 0;       // the finest level held now: build [level, heldFrom)
+    float distance = 0.0f;  // eye to the segment's centre, metres
 };
 
 // The nodes of one well: shape hints and material, the path as a line, and
@@ -77,8 +77,8 @@ private:
         SoLOD* lod = nullptr;
         glm::vec3 centre{0.0f};
         std::vector<float> switchDistances;
-        int heldFrom = 0;      // finest level held
-        int coarseFrom = 0;    // the first level it arrived with
+        int heldFrom = 0;    // finest level held
+        int coarseFrom = 0;  // the first level it arrived with
         std::size_t fineTriangles = 0;
         std::uint64_t lastWanted = 0;
         reconstruction::SegmentMesh shape;  // the metadata (no meshes), for the switch distances

@@ -25,8 +25,8 @@ inline std::filesystem::path scratch(const std::string& name) {
 }  // namespace caliper3d::test
 
 // Skips the current test when a reference data file is absent.
-#define CALIPER3D_REQUIRE_DATA(path)                                            \
-    do {                                                                        \
-        if (!std::filesystem::exists(path))                                     \
+#define CALIPER3D_REQUIRE_DATA(path)                                           \
+    do {                                                                       \
+        if (!std::filesystem::exists(path))                                    \
             GTEST_SKIP() << "reference data not present: " << (path).string(); \
     } while (0)

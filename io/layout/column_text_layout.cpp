@@ -19,7 +19,7 @@ constexpr double kMaxPlausibleRadius_in = 30.0;
 struct FirstLines {
     std::vector<std::string_view> numbers;  // fields of the first line holding a number
     std::size_t numbersLine = 0;
-    std::vector<std::string_view> names;    // a line of names before it
+    std::vector<std::string_view> names;  // a line of names before it
     std::size_t namesLine = 0;
     std::vector<std::string_view> commentNames;  // the '#' line right before it
     std::size_t commentLine = 0;
@@ -64,8 +64,8 @@ FirstLines readFirstLines(std::string_view text) {
 // Column text without units: radii in inches, unless the first row's median
 // radius is over kMaxPlausibleRadius_in inches: those are far likelier
 // millimetres, read so with a warning.
-LengthUnit unitlessRadiusUnit(std::vector<double> radii, const std::string& file,
-                              std::size_t line, Diagnostics& diagnostics) {
+LengthUnit unitlessRadiusUnit(std::vector<double> radii, const std::string& file, std::size_t line,
+                              Diagnostics& diagnostics) {
     if (radii.empty()) return LengthUnit::Inch;
     const double median = medianInPlace(radii);
     if (!(median > kMaxPlausibleRadius_in)) return LengthUnit::Inch;
@@ -125,8 +125,8 @@ LogLayout namedLayout(const std::vector<std::string_view>& names, std::size_t li
         if (layout.plan.bitSizeColumn >= 0)
             info.curves[static_cast<std::size_t>(layout.plan.bitSizeColumn)].unit = radius;
     }
-    info.format = "column text (" + std::to_string(names.size()) + " named columns, names on line " +
-                  std::to_string(line) + ")";
+    info.format = "column text (" + std::to_string(names.size()) +
+                  " named columns, names on line " + std::to_string(line) + ")";
     layout.format = columnTextFormat(file, layout);
     for (const ColumnSpec& c : layout.columns) layout.format.names.push_back(c.mnemonic);
     layout.format.layout = std::to_string(layout.columns.size()) + " named columns";
@@ -158,7 +158,8 @@ LogLayout referenceLayout(const FirstLines& first, const std::string& file,
             double v = 0.0;
             if (at < first.numbers.size() && parseNumber(first.numbers[at], v)) radii.push_back(v);
         }
-        radiusUnit = unitlessRadiusUnit(std::move(radii), file, first.numbersLine, info.diagnostics);
+        radiusUnit =
+            unitlessRadiusUnit(std::move(radii), file, first.numbersLine, info.diagnostics);
     }
     const LengthUnit depthUnit = options.depthUnit.value_or(LengthUnit::Metre);
     const std::string radiusUnitName(unitName(radiusUnit));
@@ -188,9 +189,9 @@ LogLayout referenceLayout(const FirstLines& first, const std::string& file,
     layout.format.firstColumn = radiiOnly ? 1 : 0;
     for (const ColumnSpec& c : layout.columns)
         layout.format.names.push_back(c.mnemonic == "DEPTH" ? "depth" : c.mnemonic);
-    layout.format.layout = radiiOnly ? std::to_string(arms) + " radii"
-                                     : std::to_string(arms + 4) + " columns (depth " + armRange +
-                                           " P1AZ DEVI HAZI)";
+    layout.format.layout =
+        radiiOnly ? std::to_string(arms) + " radii"
+                  : std::to_string(arms + 4) + " columns (depth " + armRange + " P1AZ DEVI HAZI)";
     layout.format.depthColumn = 0;
     return layout;
 }

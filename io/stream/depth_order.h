@@ -25,8 +25,8 @@ public:
 
     // `empty`: a table with the log's curves and no rows. `depthScale` turns
     // metres back into the file's unit for messages.
-    DepthOrdering(const SectionTable& empty, DepthOrder policy, std::string file,
-                  double depthScale, std::size_t chunkRows);
+    DepthOrdering(const SectionTable& empty, DepthOrder policy, std::string file, double depthScale,
+                  std::size_t chunkRows);
 
     // Takes a run of rows in file order (`lines`: the line of each). A run
     // wholly in order and of at least chunkRows rows goes to `emit` at once,

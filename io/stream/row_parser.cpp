@@ -88,8 +88,7 @@ private:
             } else if (f.las && c != static_cast<std::size_t>(f.depthColumn) &&
                        isNullToken(token, f.nullPolicy)) {
                 v = kNaN;
-                overflow =
-                    !token.empty() && token.find_first_not_of('*') == std::string_view::npos;
+                overflow = !token.empty() && token.find_first_not_of('*') == std::string_view::npos;
             } else {
                 throw ParseError(f.file, m_lineNumber, column(token.data()),
                                  "expected a number for " + (f.las ? "curve " : std::string()) +
@@ -199,9 +198,9 @@ private:
                                            " values (truncated file?); skipped");
                 return;
             } else {
-                throw ParseError(f.file, lineNumber, 0,
-                                 "expected " + f.layout + ", found " + std::to_string(r.next) +
-                                     " values");
+                throw ParseError(
+                    f.file, lineNumber, 0,
+                    "expected " + f.layout + ", found " + std::to_string(r.next) + " values");
             }
         }
         emit(lineNumber);
@@ -240,8 +239,8 @@ private:
 
 }  // namespace
 
-void parseRows(const RowFormat& format, std::string_view text, std::size_t firstLine,
-               bool finalRun, RowSink& sink, RowRun& out) {
+void parseRows(const RowFormat& format, std::string_view text, std::size_t firstLine, bool finalRun,
+               RowSink& sink, RowRun& out) {
     out.diagnostics = Diagnostics{};
     out.linesConsumed = 0;
     out.stopped = false;

@@ -44,16 +44,16 @@ struct RowRun {
     std::vector<std::size_t> nulls;  // per declared column
     Diagnostics diagnostics;         // lines numbered as in parseRows
     std::size_t linesConsumed = 0;
-    bool stopped = false;            // a '~' section line ended the data (LAS)
-    std::size_t stopOffset = 0;      //   at this offset of the text
-    std::exception_ptr error;        // the ParseError that stopped it, if any
+    bool stopped = false;        // a '~' section line ended the data (LAS)
+    std::size_t stopOffset = 0;  //   at this offset of the text
+    std::exception_ptr error;    // the ParseError that stopped it, if any
 };
 
 // Parses the data lines of `text`, numbering them from `firstLine`; blank and
 // '#' lines are skipped. `finalRun` says the text ends the file (a short last
 // line is then a counted warning, not an error). Runs on any thread and never
 // throws: the error is kept in `out.error` for the caller to rethrow.
-void parseRows(const RowFormat& format, std::string_view text, std::size_t firstLine,
-               bool finalRun, RowSink& sink, RowRun& out);
+void parseRows(const RowFormat& format, std::string_view text, std::size_t firstLine, bool finalRun,
+               RowSink& sink, RowRun& out);
 
 }  // namespace caliper3d::io

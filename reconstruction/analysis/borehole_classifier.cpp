@@ -7,12 +7,18 @@ namespace caliper3d::reconstruction {
 
 std::string_view className(BoreholeClass c) {
     switch (c) {
-        case BoreholeClass::InGauge: return "in_gauge";
-        case BoreholeClass::Undergauge: return "undergauge";
-        case BoreholeClass::Washout: return "washout";
-        case BoreholeClass::Breakout: return "breakout";
-        case BoreholeClass::Keyseat: return "keyseat";
-        case BoreholeClass::NoData: return "no_data";
+        case BoreholeClass::InGauge:
+            return "in_gauge";
+        case BoreholeClass::Undergauge:
+            return "undergauge";
+        case BoreholeClass::Washout:
+            return "washout";
+        case BoreholeClass::Breakout:
+            return "breakout";
+        case BoreholeClass::Keyseat:
+            return "keyseat";
+        case BoreholeClass::NoData:
+            return "no_data";
     }
     return "in_gauge";
 }
@@ -51,8 +57,10 @@ double maxTurnPerWindow(const Accessor& mdAt, const Accessor& toolAzimuthAt, std
         if (!std::isfinite(a)) continue;
         if (std::isfinite(previous)) {
             double d = a - previous;
-            if (d > 180.0) offset -= 360.0;
-            else if (d < -180.0) offset += 360.0;
+            if (d > 180.0)
+                offset -= 360.0;
+            else if (d < -180.0)
+                offset += 360.0;
         }
         previous = a;
         unwrapped.push_back(a + offset);

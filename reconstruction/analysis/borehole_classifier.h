@@ -30,14 +30,14 @@ std::string_view className(BoreholeClass c);
 // 184-185 for the key-seat test; JewelSuite caliper-filter defaults for the
 // millimetre tolerances.
 struct ClassificationRules {
-    double gaugeTolerance_mm = 6.0;      // in_gauge: dmin and dmax within this of bit size
-    double undergauge_mm = 6.0;          // undergauge: dmax < bit - this
-    double washout_mm = 12.7;            // washout: dmin > bit + this (0.5 in)
-    double elongation_mm = 6.0;          // breakout/keyseat: dmax - dmin >= this
-    double breakoutMinGauge_mm = 12.7;   // ... with dmin within this of bit size
-    double minBreakoutLength_m = 1.0;    // a breakout zone is at least this long
-    double maxToolRotation_deg = 45.0;   // ... and the tool turns less than this
-    double rotationWindow_m = 5.0;       //     per this length
+    double gaugeTolerance_mm = 6.0;        // in_gauge: dmin and dmax within this of bit size
+    double undergauge_mm = 6.0;            // undergauge: dmax < bit - this
+    double washout_mm = 12.7;              // washout: dmin > bit + this (0.5 in)
+    double elongation_mm = 6.0;            // breakout/keyseat: dmax - dmin >= this
+    double breakoutMinGauge_mm = 12.7;     // ... with dmin within this of bit size
+    double minBreakoutLength_m = 1.0;      // a breakout zone is at least this long
+    double maxToolRotation_deg = 45.0;     // ... and the tool turns less than this
+    double rotationWindow_m = 5.0;         //     per this length
     double deviatedInclination_deg = 5.0;  // above this the high-side test applies
     double highSideTolerance_deg = 15.0;   // major axis within this of high/low side: keyseat
     // Below this dmax - dmin the section is round: it has no major axis, and its
@@ -54,10 +54,10 @@ struct ClassifierInput {
     double md_m = 0.0;
     double dmin_mm = 0.0;
     double dmax_mm = 0.0;
-    double bit_mm = 0.0;              // NaN: unknown (the section is in_gauge)
+    double bit_mm = 0.0;  // NaN: unknown (the section is in_gauge)
     double inc_deg = 0.0;
     double majorFromHighSide_deg = 0.0;  // major axis angle from the high side
-    double toolAzimuth_deg = 0.0;     // pad-1 azimuth (or RB), NaN when unknown
+    double toolAzimuth_deg = 0.0;        // pad-1 azimuth (or RB), NaN when unknown
 };
 
 // Class of one section from its shape alone; breakouts are only candidates

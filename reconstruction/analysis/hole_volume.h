@@ -9,20 +9,20 @@ namespace caliper3d::reconstruction {
 // trapezoid rule along the hole on section areas (perpendicular to the hole
 // axis, so the integral along MD is the volume).
 struct VolumeOptions {
-    double top_m = -1e300;          // interval; clipped to the sections
+    double top_m = -1e300;  // interval; clipped to the sections
     double bottom_m = 1e300;
-    double casingOd_mm = 0.0;       // casing outer diameter; 0 = open hole only
-    double excess = 0.0;            // cement excess as a fraction (0.3 = 30 %)
+    double casingOd_mm = 0.0;  // casing outer diameter; 0 = open hole only
+    double excess = 0.0;       // cement excess as a fraction (0.3 = 30 %)
 };
 struct HoleVolume {
     double top_m = 0.0, bottom_m = 0.0;
-    double hole_m3 = 0.0;           // from the true section areas
-    double gaugeHole_m3 = 0.0;      // from the bit size (nominal hole)
-    double annulus_m3 = 0.0;        // true hole minus casing
-    double gaugeAnnulus_m3 = 0.0;   // bit-size hole minus casing
-    double cement_m3 = 0.0;         // annulus * (1 + excess)
-    double gaugeCement_m3 = 0.0;    // gaugeAnnulus * (1 + excess)
-    double casingOd_mm = 0.0;       // as asked for
+    double hole_m3 = 0.0;          // from the true section areas
+    double gaugeHole_m3 = 0.0;     // from the bit size (nominal hole)
+    double annulus_m3 = 0.0;       // true hole minus casing
+    double gaugeAnnulus_m3 = 0.0;  // bit-size hole minus casing
+    double cement_m3 = 0.0;        // annulus * (1 + excess)
+    double gaugeCement_m3 = 0.0;   // gaugeAnnulus * (1 + excess)
+    double casingOd_mm = 0.0;      // as asked for
     double excess = 0.0;
     // Where a step touches a section without data neither volume is
     // integrated: these [top, bottom] MD intervals (clipped to the interval,

@@ -33,10 +33,12 @@ struct ReportOptions {
 // an empty field; a no_data section keeps its position, path and bit size and
 // leaves every measurement and repaired_arms empty. Decimal point, no thousands separator, whatever
 // the locale.
-void writeSectionReport(std::ostream& out, const WellAnalysis& analysis, const ReportOptions& options = {});
+void writeSectionReport(std::ostream& out, const WellAnalysis& analysis,
+                        const ReportOptions& options = {});
 
 // The sections a report lists (indices into analysis.sections, ascending).
-std::vector<std::size_t> reportedSections(const WellAnalysis& analysis, const ReportOptions& options);
+std::vector<std::size_t> reportedSections(const WellAnalysis& analysis,
+                                          const ReportOptions& options);
 
 // The report's rows as LAS 2.0 curves (one line per reported section), read
 // back by any LAS reader: DEPT (M), TVD, NORTH, EAST (M), INC, AZI (DEG),
@@ -44,10 +46,10 @@ std::vector<std::size_t> reportedSections(const WellAnalysis& analysis, const Re
 // DEQ, CENOFF (MM), CENAZ (DEG), CLASS (code: 0 in_gauge, 1 undergauge,
 // 2 washout, 3 breakout, 4 keyseat) and REPAIRED (arms interpolated).
 // Undefined values are the null value. `wellName` goes into ~Well.
-void writeAnalysisLas(std::ostream& out, const WellAnalysis& analysis, const ReportOptions& options = {},
-                      const std::string& wellName = "CALIPER3D");
-void writeAnalysisLas(const std::string& path, const WellAnalysis& analysis, const ReportOptions& options = {},
-                      const std::string& wellName = "CALIPER3D");
+void writeAnalysisLas(std::ostream& out, const WellAnalysis& analysis,
+                      const ReportOptions& options = {}, const std::string& wellName = "CALIPER3D");
+void writeAnalysisLas(const std::string& path, const WellAnalysis& analysis,
+                      const ReportOptions& options = {}, const std::string& wellName = "CALIPER3D");
 
 // The zone table: kind,top_m,bottom_m,length_m,mean_azimuth_deg,
 // circular_sd_deg,mean_dmax_mm,mean_dmin_mm,sections.
@@ -59,7 +61,8 @@ void writeZoneReport(std::ostream& out, const WellAnalysis& analysis);
 std::string formatAnalysisSummary(const WellAnalysis& analysis);
 
 // The same to files; throw std::runtime_error naming the file when it cannot be written.
-void writeSectionReport(const std::string& path, const WellAnalysis& analysis, const ReportOptions& options = {});
+void writeSectionReport(const std::string& path, const WellAnalysis& analysis,
+                        const ReportOptions& options = {});
 void writeZoneReport(const std::string& path, const WellAnalysis& analysis);
 
 }  // namespace caliper3d::reconstruction

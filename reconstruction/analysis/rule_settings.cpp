@@ -43,25 +43,27 @@ void applyRuleSetting(ClassificationRules& rules, std::string_view assignment) {
     for (const RuleSetting& s : ruleSettings()) {
         if (s.name != name) continue;
         double v = 0.0;
-        const std::string text(eq == std::string_view::npos ? std::string_view() : assignment.substr(eq + 1));
+        const std::string text(eq == std::string_view::npos ? std::string_view()
+                                                            : assignment.substr(eq + 1));
         if (!io::parseNumber(text, v) || !std::isfinite(v) || v < 0.0)
-            throw std::invalid_argument("rule " + std::string(name) + ": expected a number >= 0, found '" + text +
-                                        "'");
+            throw std::invalid_argument("rule " + std::string(name) +
+                                        ": expected a number >= 0, found '" + text + "'");
         rules.*s.field = v;
         return;
     }
     std::string known;
-    for (const RuleSetting& s : ruleSettings()) known += (known.empty() ? "" : ", ") + std::string(s.name);
-    throw std::invalid_argument("unknown rule '" + std::string(name) + "'; expected NAME=VALUE with NAME one of " +
-                                known);
+    for (const RuleSetting& s : ruleSettings())
+        known += (known.empty() ? "" : ", ") + std::string(s.name);
+    throw std::invalid_argument("unknown rule '" + std::string(name) +
+                                "'; expected NAME=VALUE with NAME one of " + known);
 }
 
 std::string describeRules(const ClassificationRules& rules) {
     std::string out;
     char buf[160];
     for (const RuleSetting& s : ruleSettings()) {
-        std::snprintf(buf, sizeof buf, "%s=%g (%.*s)\n", std::string(s.name).c_str(), rules.*s.field,
-                      static_cast<int>(s.meaning.size()), s.meaning.data());
+        std::snprintf(buf, sizeof buf, "%s=%g (%.*s)\n", std::string(s.name).c_str(),
+                      rules.*s.field, static_cast<int>(s.meaning.size()), s.meaning.data());
         out += buf;
     }
     return out;

@@ -4,11 +4,11 @@
 #include <vector>
 
 #include "reconstruction/analysis/borehole_classifier.h"
-#include "reconstruction/parallel/fill_array.h"
 #include "reconstruction/analysis/hole_volume.h"
+#include "reconstruction/analysis/zone_detection.h"
+#include "reconstruction/parallel/fill_array.h"
 #include "reconstruction/path/orientation_check.h"
 #include "reconstruction/well_geometry.h"
-#include "reconstruction/analysis/zone_detection.h"
 
 namespace caliper3d::reconstruction {
 
@@ -17,14 +17,14 @@ namespace caliper3d::reconstruction {
 struct SectionResult {
     double md_m = 0.0, tvd_m = 0.0, north_m = 0.0, east_m = 0.0;
     double inc_deg = 0.0, azi_deg = 0.0, dls_degPer30m = 0.0;
-    double bit_mm = 0.0;                 // gauge used (NaN when unknown)
+    double bit_mm = 0.0;  // gauge used (NaN when unknown)
     double area_mm2 = 0.0, equivalentDiameter_mm = 0.0;
     double dmin_mm = 0.0, dmax_mm = 0.0, ellipticity = 1.0;
-    double majorAzimuth_deg = 0.0;       // world azimuth of the major axis, [0, 180); NaN if vertical
-    double majorFromHighSide_deg = 0.0;  // clockwise from the high side, [0, 180)
-    double centreOffset_mm = 0.0;        // tool axis to hole centre
+    double majorAzimuth_deg = 0.0;  // world azimuth of the major axis, [0, 180); NaN if vertical
+    double majorFromHighSide_deg = 0.0;    // clockwise from the high side, [0, 180)
+    double centreOffset_mm = 0.0;          // tool axis to hole centre
     double centreOffsetAzimuth_deg = 0.0;  // direction from tool axis to hole centre, [0, 360)
-    int repairedArms = 0;                // arms interpolated on this section
+    int repairedArms = 0;                  // arms interpolated on this section
     // NoData: too few valid arms; every measurement above from area_mm2 on is NaN.
     BoreholeClass cls = BoreholeClass::InGauge;
 };
@@ -32,15 +32,15 @@ struct SectionResult {
 struct AnalysisOptions {
     ClassificationRules rules;
     WsmQualityRules wsm;
-    VolumeOptions volume;                // interval, casing and excess for the volumes
-    double bitSize_mm = io::kNaN;        // --bit-size: overrides the log's BS when finite
-    int threads = 1;                     // sections are analysed in this many chunks at once
+    VolumeOptions volume;          // interval, casing and excess for the volumes
+    double bitSize_mm = io::kNaN;  // --bit-size: overrides the log's BS when finite
+    int threads = 1;               // sections are analysed in this many chunks at once
 };
 
 // The interval results and the counts the command reports as warnings.
 struct WellAnalysis {
-    FillArray<SectionResult> sections;   // one per section, in depth order
-    std::vector<Zone> zones;             // every class but in_gauge, in depth order
+    FillArray<SectionResult> sections;  // one per section, in depth order
+    std::vector<Zone> zones;            // every class but in_gauge, in depth order
     BreakoutSummary breakouts;
     HoleVolume volume;
     OrientationOffset padAzimuthOffset;  // P1AZ - f(HAZI, DEVI, RB); samples 0 when not all present
@@ -49,9 +49,9 @@ struct WellAnalysis {
     std::size_t unorientedSections = 0;  // no P1AZ nor RB: arm 1 assumed north (measured sections)
     std::vector<NoDataInterval> noData;  // runs of sections without data (class no_data)
     std::size_t noDataSections = 0;
-    bool bitSizeFromSections = false;    // no bit size anywhere: median equivalent diameter used
-    bool holeAzimuthUnknown = false;     // inclined, no HAZI nor survey: see docs/conventions.md
-    bool twoPads = false;                // a two-pad tool: round sections, no breakout nor keyseat seen
+    bool bitSizeFromSections = false;  // no bit size anywhere: median equivalent diameter used
+    bool holeAzimuthUnknown = false;   // inclined, no HAZI nor survey: see docs/conventions.md
+    bool twoPads = false;  // a two-pad tool: round sections, no breakout nor keyseat seen
 };
 
 // Analyses every section of the well (path, spline, shape, class), then the

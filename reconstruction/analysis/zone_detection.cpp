@@ -7,7 +7,8 @@
 
 namespace caliper3d::reconstruction {
 
-AxialStatistics axialStatistics(const std::vector<double>& angles_deg, const std::vector<double>& weights) {
+AxialStatistics axialStatistics(const std::vector<double>& angles_deg,
+                                const std::vector<double>& weights) {
     double c = 0.0, s = 0.0, w = 0.0;
     for (std::size_t i = 0; i < angles_deg.size(); ++i) {
         const double a = angles_deg[i];
@@ -28,11 +29,13 @@ AxialStatistics axialStatistics(const std::vector<double>& angles_deg, const std
     if (mean >= 180.0) mean -= 180.0;
     out.mean_deg = mean;
     const double r = std::min(1.0, std::hypot(c, s) / w);
-    out.sd_deg = r > 0.0 ? glm::degrees(std::sqrt(std::max(0.0, -2.0 * std::log(r)))) / 2.0 : 90.0;  // r = 1 gives 0, not -0
+    out.sd_deg = r > 0.0 ? glm::degrees(std::sqrt(std::max(0.0, -2.0 * std::log(r)))) / 2.0
+                         : 90.0;  // r = 1 gives 0, not -0
     return out;
 }
 
-std::vector<Zone> detectZones(const std::vector<double>& md, const std::vector<BoreholeClass>& classes,
+std::vector<Zone> detectZones(const std::vector<double>& md,
+                              const std::vector<BoreholeClass>& classes,
                               const std::vector<double>& azimuth, const std::vector<double>& dmax,
                               const std::vector<double>& dmin) {
     return detectZones(
@@ -114,7 +117,8 @@ BreakoutSummary summariseBreakouts(const std::vector<Zone>& zones, const WsmQual
     const AxialStatistics st = axialStatistics(angles, weights);
     out.meanAzimuth_deg = st.mean_deg;
     out.circularSd_deg = st.sd_deg;
-    out.shmaxAzimuth_deg = std::isfinite(st.mean_deg) ? std::fmod(st.mean_deg + 90.0, 180.0) : st.mean_deg;
+    out.shmaxAzimuth_deg =
+        std::isfinite(st.mean_deg) ? std::fmod(st.mean_deg + 90.0, 180.0) : st.mean_deg;
     out.quality = wsmQuality(out, rules);
     return out;
 }

@@ -14,9 +14,9 @@ namespace caliper3d::reconstruction {
 // mean = atan2(sum w sin 2a, sum w cos 2a) / 2, R = |resultant| / sum w,
 // circular SD = sqrt(-2 ln R) / 2 (in degrees). NaN inputs are skipped.
 struct AxialStatistics {
-    double mean_deg = 0.0;   // [0, 180), NaN when no data
-    double sd_deg = 0.0;     // NaN when no data
-    double weight = 0.0;     // sum of the weights used
+    double mean_deg = 0.0;  // [0, 180), NaN when no data
+    double sd_deg = 0.0;    // NaN when no data
+    double weight = 0.0;    // sum of the weights used
 };
 AxialStatistics axialStatistics(const std::vector<double>& angles_deg,
                                 const std::vector<double>& weights = {});
@@ -26,10 +26,10 @@ struct Zone {
     BoreholeClass kind = BoreholeClass::Breakout;
     double top_m = 0.0;
     double bottom_m = 0.0;
-    double length_m = 0.0;        // bottom - top, plus half a step at each end
+    double length_m = 0.0;  // bottom - top, plus half a step at each end
     std::size_t firstSection = 0;
     std::size_t lastSection = 0;
-    double meanAzimuth_deg = 0.0; // of the major axis, doubled-angle mean, [0, 180)
+    double meanAzimuth_deg = 0.0;  // of the major axis, doubled-angle mean, [0, 180)
     double circularSd_deg = 0.0;
     double meanDmax_mm = 0.0;
     double meanDmin_mm = 0.0;
@@ -37,9 +37,11 @@ struct Zone {
 
 // Zones of every class but in_gauge and no_data, in depth order. `majorAzimuth_deg` may
 // hold NaN (a horizontal hole with a vertical major axis): skipped in the mean.
-std::vector<Zone> detectZones(const std::vector<double>& md_m, const std::vector<BoreholeClass>& classes,
+std::vector<Zone> detectZones(const std::vector<double>& md_m,
+                              const std::vector<BoreholeClass>& classes,
                               const std::vector<double>& majorAzimuth_deg,
-                              const std::vector<double>& dmax_mm, const std::vector<double>& dmin_mm);
+                              const std::vector<double>& dmax_mm,
+                              const std::vector<double>& dmin_mm);
 // The same for a caller that keeps its sections in another layout: the
 // functions give section i's values (asked only for sections in a zone and
 // their neighbours).
@@ -63,11 +65,12 @@ struct WsmQualityRules {
 struct BreakoutSummary {
     int zoneCount = 0;
     double combinedLength_m = 0.0;
-    double meanAzimuth_deg = 0.0;   // length-weighted doubled-angle mean of the zones (NaN: none)
+    double meanAzimuth_deg = 0.0;  // length-weighted doubled-angle mean of the zones (NaN: none)
     double circularSd_deg = 0.0;
     double shmaxAzimuth_deg = 0.0;  // breakouts form along Shmin: SHmax = mean + 90 (vertical well)
     char quality = 'E';
 };
-BreakoutSummary summariseBreakouts(const std::vector<Zone>& zones, const WsmQualityRules& rules = {});
+BreakoutSummary summariseBreakouts(const std::vector<Zone>& zones,
+                                   const WsmQualityRules& rules = {});
 
 }  // namespace caliper3d::reconstruction

@@ -10,8 +10,8 @@
 #include "io/section_table.h"
 #include "io/survey_reader.h"
 #include "reconstruction/path/survey_interpolation.h"
-#include "reconstruction/well_geometry.h"
 #include "reconstruction/path/wellhead.h"
+#include "reconstruction/well_geometry.h"
 
 namespace caliper3d::reconstruction {
 

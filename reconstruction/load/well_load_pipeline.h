@@ -9,8 +9,8 @@
 
 #include "io/diagnostics.h"
 #include "io/section_table.h"
-#include "reconstruction/parallel/segment_queue.h"
 #include "reconstruction/load/load_well.h"
+#include "reconstruction/parallel/segment_queue.h"
 #include "reconstruction/well_geometry.h"
 
 namespace caliper3d::reconstruction {

@@ -7,10 +7,14 @@ namespace caliper3d::reconstruction {
 
 namespace {
 std::uint32_t pack(double r, double g, double b) {
-    auto c = [](double v) { return static_cast<std::uint32_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)); };
+    auto c = [](double v) {
+        return static_cast<std::uint32_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0));
+    };
     return (c(r) << 24) | (c(g) << 16) | (c(b) << 8) | 0xFFu;
 }
-double mix(double a, double b, double t) { return a + (b - a) * t; }
+double mix(double a, double b, double t) {
+    return a + (b - a) * t;
+}
 }  // namespace
 
 std::uint32_t gaugeColour(double radius_mm, double bitRadius_mm) {

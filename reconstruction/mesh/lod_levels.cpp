@@ -203,16 +203,16 @@ SegmentMesh buildSegmentLevels(const WellGeometry& geometry, std::size_t segment
     out.maxRadius_m = static_cast<float>(drawn_mm / 1000.0);
     for (std::size_t i = 0; i < pyramid.size(); ++i) {
         const LodLevel& l = pyramid[i];
-        const double error = i == 0 ? 0.0
-                                    : l.tolerance_mm * geometry.options().radialExaggeration +
-                                          chordError(drawn_mm, l.points > 0
-                                                                   ? l.points
-                                                                   : geometry.knotCount());
+        const double error =
+            i == 0 ? 0.0
+                   : l.tolerance_mm * geometry.options().radialExaggeration +
+                         chordError(drawn_mm, l.points > 0 ? l.points : geometry.knotCount());
         out.levelError_mm.push_back(static_cast<float>(error));
     }
     for (int i = from; i < to; ++i) {
         const LodLevel& l = pyramid[static_cast<std::size_t>(i)];
-        out.levels.push_back(buildLevel(geometry, decimatedRows(geometry, first, last, l), l.points));
+        out.levels.push_back(
+            buildLevel(geometry, decimatedRows(geometry, first, last, l), l.points));
     }
 
     const glm::dvec3 a = toScene(geometry.centre(first)), b = toScene(geometry.centre(last));

@@ -40,8 +40,7 @@ std::vector<std::size_t> decimatedRows(const WellGeometry& geometry, std::size_t
 // Levels [from, to) of one segment's pyramid (to clipped to the pyramid's size). Rows
 // without data are a gap in the wall at every level. Reads only the geometry's public,
 // immutable state, so any thread may build any segment.
-SegmentMesh buildSegmentLevels(const WellGeometry& geometry, std::size_t segment, int from,
-                               int to);
+SegmentMesh buildSegmentLevels(const WellGeometry& geometry, std::size_t segment, int from, int to);
 // Every level.
 SegmentMesh buildSegmentMesh(const WellGeometry& geometry, std::size_t segment);
 

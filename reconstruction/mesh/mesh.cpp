@@ -24,8 +24,8 @@ std::size_t Mesh::stripCount() const {
     return strips;
 }
 
-void appendClosedStrip(std::vector<std::int32_t>& indices, std::int32_t firstA,
-                       std::int32_t firstB, int points) {
+void appendClosedStrip(std::vector<std::int32_t>& indices, std::int32_t firstA, std::int32_t firstB,
+                       int points) {
     for (int j = 0; j < points; ++j) {
         indices.push_back(firstA + j);
         indices.push_back(firstB + j);

@@ -13,8 +13,8 @@ namespace caliper3d::reconstruction {
 // of SoIndexedTriangleStripSet::coordIndex.
 struct Mesh {
     std::vector<glm::vec3> positions;
-    std::vector<glm::vec3> normals;           // one per position
-    std::vector<std::uint32_t> colours;       // optional, one per position, 0xRRGGBBAA
+    std::vector<glm::vec3> normals;      // one per position
+    std::vector<std::uint32_t> colours;  // optional, one per position, 0xRRGGBBAA
     std::vector<std::int32_t> stripIndices;
 
     std::size_t triangleCount() const;
@@ -24,8 +24,8 @@ struct Mesh {
 // Appends the closed strip that joins ring A (first vertex firstA) to ring B
 // (firstB), each of `points` vertices, in the reference's order
 // A0 B0 A1 B1 ... A(m-1) B(m-1) A0 B0, then -1: 2*points triangles.
-void appendClosedStrip(std::vector<std::int32_t>& indices, std::int32_t firstA,
-                       std::int32_t firstB, int points);
+void appendClosedStrip(std::vector<std::int32_t>& indices, std::int32_t firstA, std::int32_t firstB,
+                       int points);
 
 // The same between rings of different vertex counts (a coarse level's ring and the full
 // ring a segment ends with): vertices paired by angle, zero-area triangles where one ring
@@ -41,12 +41,12 @@ struct SegmentMesh {
     std::size_t lastRow = 0;
     double top_m = 0.0;
     double bottom_m = 0.0;
-    glm::vec3 centre{0.0f};  // scene frame, for LOD distances
-    float radius = 0.0f;     // bounding sphere radius, scene units (metres)
-    float maxRadius_m = 0.0f;  // largest drawn radius of the wall
-    int firstLevel = 0;        // pyramid level of levels[0]
+    glm::vec3 centre{0.0f};               // scene frame, for LOD distances
+    float radius = 0.0f;                  // bounding sphere radius, scene units (metres)
+    float maxRadius_m = 0.0f;             // largest drawn radius of the wall
+    int firstLevel = 0;                   // pyramid level of levels[0]
     std::size_t fullDetailTriangles = 0;  // of level 0, built or not
-    std::vector<float> levelError_mm;  // per pyramid level (all of them): drawn shape error
+    std::vector<float> levelError_mm;     // per pyramid level (all of them): drawn shape error
     std::vector<Mesh> levels;
 };
 

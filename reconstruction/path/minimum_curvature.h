@@ -23,7 +23,7 @@ struct PathPoint {
     double tvd = 0.0;
     double inc_deg = 0.0;
     double azi_deg = 0.0;
-    double dogleg_deg = 0.0;  // dogleg angle from the previous station
+    double dogleg_deg = 0.0;     // dogleg angle from the previous station
     double dls_degPer30m = 0.0;  // dogleg severity of the course that ends here (md in metres)
 };
 

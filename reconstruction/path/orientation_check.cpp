@@ -21,8 +21,11 @@ PadAzimuthSums padAzimuthSums(const io::SectionTable& t, std::size_t first, std:
     PadAzimuthSums out;
     HoleDirection direction;
     for (std::size_t i = first; i < last; ++i) {
-        const double p1az = t.p1az_deg[i], hazi = t.hazi_deg[i], rb = t.rb_deg[i], inc = t.devi_deg[i];
-        if (!std::isfinite(p1az) || !std::isfinite(hazi) || !std::isfinite(rb) || !std::isfinite(inc)) continue;
+        const double p1az = t.p1az_deg[i], hazi = t.hazi_deg[i], rb = t.rb_deg[i],
+                     inc = t.devi_deg[i];
+        if (!std::isfinite(p1az) || !std::isfinite(hazi) || !std::isfinite(rb) ||
+            !std::isfinite(inc))
+            continue;
         if (inc < minInclination_deg) continue;
         direction.update(inc, hazi);
         // The predicted pad-1 direction; its azimuth is that of its horizontal
@@ -51,7 +54,8 @@ OrientationOffset padAzimuthOffset(const PadAzimuthSums& sums) {
     out.mean_deg = glm::degrees(std::atan2(sums.sinSum, sums.cosSum));
     const double r =
         std::min(1.0, std::hypot(sums.cosSum, sums.sinSum) / static_cast<double>(out.samples));
-    out.sd_deg = r > 0.0 ? glm::degrees(std::sqrt(std::max(0.0, -2.0 * std::log(r)))) : 180.0;  // r = 1 gives 0, not -0
+    out.sd_deg = r > 0.0 ? glm::degrees(std::sqrt(std::max(0.0, -2.0 * std::log(r))))
+                         : 180.0;  // r = 1 gives 0, not -0
     return out;
 }
 

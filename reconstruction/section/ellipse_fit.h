@@ -6,10 +6,10 @@ namespace caliper3d::reconstruction {
 struct Ellipse {
     double centreX = 0.0;
     double centreY = 0.0;
-    double major = 0.0;       // full length of the major axis (a diameter)
-    double minor = 0.0;       // full length of the minor axis
+    double major = 0.0;           // full length of the major axis (a diameter)
+    double minor = 0.0;           // full length of the minor axis
     double majorAngle_rad = 0.0;  // angle of the major axis from +X towards +Y, in [0, pi)
-    bool valid = false;       // false when the points do not determine an ellipse
+    bool valid = false;           // false when the points do not determine an ellipse
 };
 
 // Least-squares ellipse through n >= 5 points: the conic

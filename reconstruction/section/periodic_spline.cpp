@@ -86,8 +86,8 @@ double PeriodicSpline::operator()(double t) const {
 double PeriodicSpline::derivative(double t) const {
     const Span s = locate(t, m_values.size());
     const double u = s.u, a = 1.0 - u;
-    return m_values[s.i1] - m_values[s.i0] -
-           (3.0 * a * a - 1.0) / 6.0 * m_second[s.i0] + (3.0 * u * u - 1.0) / 6.0 * m_second[s.i1];
+    return m_values[s.i1] - m_values[s.i0] - (3.0 * a * a - 1.0) / 6.0 * m_second[s.i0] +
+           (3.0 * u * u - 1.0) / 6.0 * m_second[s.i1];
 }
 
 double PeriodicSpline::secondDerivative(double t) const {

@@ -16,12 +16,12 @@ struct SectionShape {
     double equivalentDiameter_mm = 0.0;  // circle of the same area
     double centroidU_mm = 0.0;           // hole centre (centroid of the area)
     double centroidV_mm = 0.0;
-    double centreOffset_mm = 0.0;        // tool axis to hole centre
-    double dmax_mm = 0.0;                // least-squares ellipse, full axes
+    double centreOffset_mm = 0.0;  // tool axis to hole centre
+    double dmax_mm = 0.0;          // least-squares ellipse, full axes
     double dmin_mm = 0.0;
-    double ellipticity = 1.0;            // dmax / dmin
-    double majorAngle_deg = 0.0;         // major axis, clockwise from arm 1, [0, 180)
-    bool ellipseFitted = false;          // false: dmax/dmin from the area's second moments
+    double ellipticity = 1.0;     // dmax / dmin
+    double majorAngle_deg = 0.0;  // major axis, clockwise from arm 1, [0, 180)
+    bool ellipseFitted = false;   // false: dmax/dmin from the area's second moments
 };
 
 // Analyses sections of `knots` pads sampled at `samples` points (design

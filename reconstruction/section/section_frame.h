@@ -43,6 +43,8 @@ SectionFrame frameFromRelativeBearing(const HoleDirection& d, double rb_deg);
 
 // The scene (Coin, Y up) frame is x = east, y = up, z = south. This is the
 // one place where analysis-frame vectors become scene vectors.
-inline glm::dvec3 toScene(const Ned& v) { return {v.y, -v.z, -v.x}; }
+inline glm::dvec3 toScene(const Ned& v) {
+    return {v.y, -v.z, -v.x};
+}
 
 }  // namespace caliper3d::reconstruction

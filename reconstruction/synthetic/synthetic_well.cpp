@@ -50,7 +50,8 @@ SyntheticWellSpec syntheticProfile(const std::string& name, double length_m, dou
         return spec;
     }
     if (name == "undergauge") {
-        spec.features.push_back({K::Undergauge, 0.4 * L, 0.6 * L, bit - 12.0, bit - 12.0, 0.0, 0.0});
+        spec.features.push_back(
+            {K::Undergauge, 0.4 * L, 0.6 * L, bit - 12.0, bit - 12.0, 0.0, 0.0});
         return spec;
     }
     if (name == "keyseat") {
@@ -89,8 +90,8 @@ SyntheticWellSpec syntheticProfile(const std::string& name, double length_m, dou
 }
 
 std::vector<std::string> syntheticProfileNames() {
-    return {"example", "circle", "vertical", "ellipse", "washout", "undergauge", "keyseat",
-            "offcentre", "stuck-arm", "build", "hold", "turn"};
+    return {"example", "circle",    "vertical",  "ellipse", "washout", "undergauge",
+            "keyseat", "offcentre", "stuck-arm", "build",   "hold",    "turn"};
 }
 
 double syntheticInclination_deg(const SyntheticWellSpec& spec, double md_m) {
@@ -103,7 +104,8 @@ double syntheticInclination_deg(const SyntheticWellSpec& spec, double md_m) {
 
 double syntheticAzimuth_deg(const SyntheticWellSpec& spec, double md_m) {
     if (md_m <= spec.turnStart_m) return wrap360(spec.holeAzimuth_deg);
-    return wrap360(spec.holeAzimuth_deg + (md_m - spec.turnStart_m) * spec.turnRate_degPer30m / 30.0);
+    return wrap360(spec.holeAzimuth_deg +
+                   (md_m - spec.turnStart_m) * spec.turnRate_degPer30m / 30.0);
 }
 
 namespace {
@@ -118,7 +120,8 @@ double angleInFrame_rad(const SectionFrame& f, const Ned& v) {
 double rayToEllipse(double phi, double a, double b, double theta, glm::dvec2 c) {
     const glm::dvec2 d(std::cos(phi), std::sin(phi));
     const glm::dvec2 e1(std::cos(theta), std::sin(theta)), e2(-std::sin(theta), std::cos(theta));
-    const double dx = glm::dot(d, e1), dy = glm::dot(d, e2), cx = glm::dot(c, e1), cy = glm::dot(c, e2);
+    const double dx = glm::dot(d, e1), dy = glm::dot(d, e2), cx = glm::dot(c, e1),
+                 cy = glm::dot(c, e2);
     const double A = dx * dx / (a * a) + dy * dy / (b * b);
     const double B = -2.0 * (dx * cx / (a * a) + dy * cy / (b * b));
     const double C = cx * cx / (a * a) + cy * cy / (b * b) - 1.0;
@@ -161,7 +164,8 @@ io::SectionTable makeSyntheticWell(const SyntheticWellSpec& spec) {
         double a = spec.bitSize_mm / 2.0, b = a, theta = 0.0;
         glm::dvec2 centre(0.0);
         if (spec.toolOffset_mm != 0.0) {
-            const double dir = angleInFrame_rad(frame, frameFromPadAzimuth(inc, azi, spec.toolOffsetAzimuth_deg).arm1);
+            const double dir = angleInFrame_rad(
+                frame, frameFromPadAzimuth(inc, azi, spec.toolOffsetAzimuth_deg).arm1);
             centre += spec.toolOffset_mm * glm::dvec2(std::cos(dir), std::sin(dir));
         }
         if (feature) {
@@ -173,12 +177,14 @@ io::SectionTable makeSyntheticWell(const SyntheticWellSpec& spec) {
                 case SyntheticFeature::Kind::Breakout:
                     a = feature->dmax_mm / 2.0;
                     b = feature->dmin_mm / 2.0;
-                    theta = angleInFrame_rad(frame, frameFromPadAzimuth(inc, azi, feature->majorAzimuth_deg).arm1);
+                    theta = angleInFrame_rad(
+                        frame, frameFromPadAzimuth(inc, azi, feature->majorAzimuth_deg).arm1);
                     break;
                 case SyntheticFeature::Kind::Keyseat:
                     a = feature->dmax_mm / 2.0;
                     b = feature->dmin_mm / 2.0;
-                    theta = angleInFrame_rad(frame, frameFromRelativeBearing(inc, azi, feature->majorAzimuth_deg).arm1);
+                    theta = angleInFrame_rad(
+                        frame, frameFromRelativeBearing(inc, azi, feature->majorAzimuth_deg).arm1);
                     centre += feature->offset_mm * glm::dvec2(std::cos(theta), std::sin(theta));
                     break;
             }
@@ -186,7 +192,8 @@ io::SectionTable makeSyntheticWell(const SyntheticWellSpec& spec) {
         for (int k = 1; k <= spec.armCount; ++k) {
             const double phi = glm::radians(armClockwiseAngle_deg(k, spec.armCount));
             double r = rayToEllipse(phi, a, b, theta, centre);
-            if (k == spec.stuckArm && md >= spec.stuckTop_m && md <= spec.stuckBottom_m) r = spec.stuckValue_mm;
+            if (k == spec.stuckArm && md >= spec.stuckTop_m && md <= spec.stuckBottom_m)
+                r = spec.stuckValue_mm;
             t.radius_mm.push_back(r);
         }
     }

@@ -35,8 +35,8 @@ struct SyntheticWellSpec {
     double length_m = 300.0;
     double step_m = 0.05;
     int armCount = 6;
-    double bitSize_mm = 215.9;     // 8.5 in
-    double kickoff_m = 1e9;        // no build by default
+    double bitSize_mm = 215.9;  // 8.5 in
+    double kickoff_m = 1e9;     // no build by default
     double buildRate_degPer30m = 0.0;
     double endOfBuild_m = 1e9;
     // Real wells land near horizontal and hold: a build never goes past this,
@@ -55,7 +55,8 @@ struct SyntheticWellSpec {
     // The hole centre lies this far from the tool axis, towards this azimuth.
     double toolOffset_mm = 0.0;
     double toolOffsetAzimuth_deg = 0.0;
-    // Arm `stuckArm` (1-based; 0: none) reads stuckValue_mm (0 = closed) over [stuckTop_m, stuckBottom_m].
+    // Arm `stuckArm` (1-based; 0: none) reads stuckValue_mm (0 = closed) over [stuckTop_m,
+    // stuckBottom_m].
     int stuckArm = 0;
     double stuckTop_m = 0.0;
     double stuckBottom_m = 0.0;

@@ -12,7 +12,9 @@
 namespace {
 
 using caliper3d::test::CommandRun;
-CommandRun run(const std::string& arguments) { return caliper3d::test::runCaliper3d(arguments); }
+CommandRun run(const std::string& arguments) {
+    return caliper3d::test::runCaliper3d(arguments);
+}
 CommandRun stdoutOf(const std::string& arguments) {
     return caliper3d::test::runCaliper3d(arguments, false);
 }
@@ -43,15 +45,12 @@ TEST_P(VerbHelpTest, HelpDashHAndHelpVerbPrintTheVerbsOwnOptions) {
         << helpAll.output;
 }
 
-INSTANTIATE_TEST_SUITE_P(EveryVerb, VerbHelpTest,
-                         testing::Values(VerbHelp{"view", "--survey"}, VerbHelp{"info", "--nulls"},
-                                         VerbHelp{"export", "--binary"},
-                                         VerbHelp{"render", "--view"},
-                                         VerbHelp{"report", "--casing-od"},
-                                         VerbHelp{"synth", "--profile"}),
-                         [](const testing::TestParamInfo<VerbHelp>& info) {
-                             return std::string(info.param.verb);
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    EveryVerb, VerbHelpTest,
+    testing::Values(VerbHelp{"view", "--survey"}, VerbHelp{"info", "--nulls"},
+                    VerbHelp{"export", "--binary"}, VerbHelp{"render", "--view"},
+                    VerbHelp{"report", "--casing-od"}, VerbHelp{"synth", "--profile"}),
+    [](const testing::TestParamInfo<VerbHelp>& info) { return std::string(info.param.verb); });
 
 std::filesystem::path exampleLog() {
     static const std::filesystem::path log = [] {
@@ -79,7 +78,8 @@ TEST(CommandHelpTest, AFileAsTheFirstArgumentOpensTheWindowOnIt) {
     // With no display the window cannot open, and view says so: proof that the
     // file went to view, not to "unknown verb".
     const std::string file = exampleLog().string();
-    const CommandRun r = caliper3d::test::runCaliper3dStderr(file, "env -u DISPLAY -u WAYLAND_DISPLAY");
+    const CommandRun r =
+        caliper3d::test::runCaliper3dStderr(file, "env -u DISPLAY -u WAYLAND_DISPLAY");
     EXPECT_EQ(r.status, 2) << r.output;
     EXPECT_NE(r.output.find("caliper3d view: no display"), std::string::npos) << r.output;
     const CommandRun typo = run("exprot " + file);
@@ -111,8 +111,7 @@ TEST(CommandHelpTest, RenderAtOnlyWithTheHoleViewAndWithinTheLog) {
         << iso.output;
     const CommandRun beyond = run("render " + log + " -o " + png + " --view hole --at 41");
     EXPECT_EQ(beyond.status, 2);
-    EXPECT_NE(beyond.output.find("outside the logged depths"), std::string::npos)
-        << beyond.output;
+    EXPECT_NE(beyond.output.find("outside the logged depths"), std::string::npos) << beyond.output;
     EXPECT_NE(beyond.output.find("(0.00 to 40.00 m)"), std::string::npos) << beyond.output;
     const CommandRun inside =
         run("render " + log + " -o " + png + " --view hole --at 20 --width 64 --height 48");

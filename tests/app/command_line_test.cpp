@@ -7,7 +7,9 @@
 
 namespace {
 using caliper3d::test::CommandRun;
-CommandRun run(const std::string& arguments) { return caliper3d::test::runCaliper3d(arguments); }
+CommandRun run(const std::string& arguments) {
+    return caliper3d::test::runCaliper3d(arguments);
+}
 }  // namespace
 
 TEST(CommandLineTest, SynthThenExportWritesAnInventorFile) {

@@ -68,7 +68,8 @@ TEST(RealDataSmokeTest, InfoDescribesEveryReferenceFile) {
             SCOPED_TRACE(path);
             const InfoRun r = info(path);
             const std::string name = entry.path().filename().string();
-            if (name == "missing_a_section.las" || name == "missing_well_curves_ascii_section.las" ||
+            if (name == "missing_a_section.las" ||
+                name == "missing_well_curves_ascii_section.las" ||
                 entry.path().extension() == ".json") {
                 EXPECT_EQ(r.status, 1) << r.output;
                 EXPECT_EQ(r.output.rfind("caliper3d info: " + path + ":", 0), 0u) << r.output;
@@ -80,7 +81,8 @@ TEST(RealDataSmokeTest, InfoDescribesEveryReferenceFile) {
             EXPECT_EQ(r.output.rfind("file:      " + path + "\nformat:    ", 0), 0u) << r.output;
             EXPECT_NE(r.output.find("\nwarnings:  "), std::string::npos) << r.output;
             if (std::string(folder) == "surveys") {
-                EXPECT_NE(r.output.find("format:    deviation survey"), std::string::npos) << r.output;
+                EXPECT_NE(r.output.find("format:    deviation survey"), std::string::npos)
+                    << r.output;
             }
             ++described;
         }

@@ -14,8 +14,9 @@ using namespace caliper3d;
 TEST(SceneAssemblyTest, WellheadsPlaceWellsRelativeToTheFirst) {
     scenegraph::initCoin();
     const auto log = test::scratch("assembly_circle.txt");
-    io::writeColumnTextFile(log.string(), reconstruction::makeSyntheticWell(
-                                              reconstruction::syntheticProfile("circle", 20.0, 0.5)));
+    io::writeColumnTextFile(
+        log.string(),
+        reconstruction::makeSyntheticWell(reconstruction::syntheticProfile("circle", 20.0, 0.5)));
     app::WellSource first{log.string(), {}, reconstruction::Wellhead{1000.0, 2000.0, 50.0}};
     app::WellSource second{log.string(), {}, reconstruction::Wellhead{1100.0, 1950.0, 40.0}};
     const app::AssembledScene scene = app::assembleScene({first, second}, app::LoadOptions{});
@@ -36,8 +37,9 @@ TEST(SceneAssemblyTest, WellheadsPlaceWellsRelativeToTheFirst) {
 TEST(SceneAssemblyTest, AMissingSurveyFailsThatWellOnly) {
     scenegraph::initCoin();
     const auto log = test::scratch("assembly_circle2.txt");
-    io::writeColumnTextFile(log.string(), reconstruction::makeSyntheticWell(
-                                              reconstruction::syntheticProfile("circle", 20.0, 0.5)));
+    io::writeColumnTextFile(
+        log.string(),
+        reconstruction::makeSyntheticWell(reconstruction::syntheticProfile("circle", 20.0, 0.5)));
     app::WellSource good{log.string(), {}, {}};
     app::WellSource bad{log.string(), test::scratch("no_such_survey.csv").string(), {}};
     const app::AssembledScene scene = app::assembleScene({bad, good}, app::LoadOptions{});

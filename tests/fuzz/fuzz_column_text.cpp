@@ -4,9 +4,9 @@
 #include <cstdint>
 #include <string>
 
-#include "support/column_text_reader.h"
 #include "io/log_reader.h"
 #include "io/parse_error.h"
+#include "support/column_text_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);

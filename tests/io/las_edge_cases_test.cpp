@@ -16,7 +16,9 @@ using namespace caliper3d::io;
 
 namespace {
 
-std::filesystem::path edgeCases() { return caliper3d::test::sharedData() / "las_edge_cases"; }
+std::filesystem::path edgeCases() {
+    return caliper3d::test::sharedData() / "las_edge_cases";
+}
 
 LoadedLog load(const std::string& name) {
     return loadCaliperLog((edgeCases() / name).string(), ReadOptions{});
@@ -64,11 +66,12 @@ TEST(LasEdgeCasesTest, EveryFileIsReadOrRefusedPrecisely) {
         return load(name);
     };
 
-    for (const char* name : {"sample_v_section_second.las", "sample_2.0_tab_dlm.las", "null_policy_9999.las",
-                             "null_policy_ERR.las", "null_policy_dashes.las", "comma_decimal_mark.las",
-                             "duplicate_step.las", "sample_duplicate_sections.las",
-                             "sample_sections_after_a_section.las", "encodings_utf16lebom.las",
-                             "mnemonic_duplicate.las", "sample_lastcolblanked.las"}) {
+    for (const char* name :
+         {"sample_v_section_second.las", "sample_2.0_tab_dlm.las", "null_policy_9999.las",
+          "null_policy_ERR.las", "null_policy_dashes.las", "comma_decimal_mark.las",
+          "duplicate_step.las", "sample_duplicate_sections.las",
+          "sample_sections_after_a_section.las", "encodings_utf16lebom.las",
+          "mnemonic_duplicate.las", "sample_lastcolblanked.las"}) {
         SCOPED_TRACE(name);
         expectSample(check(name));
     }
@@ -98,8 +101,10 @@ TEST(LasEdgeCasesTest, EveryFileIsReadOrRefusedPrecisely) {
         const LoadedLog log = check("sample_sections_after_a_section.las");
         EXPECT_TRUE(warned(log.info, "'~T"));
     }
-    // After sorting, row 0 is 1669.750 (DT 10000), row 1 1669.875 (DT 9999), row 2 1670.0 (DT 9998).
-    for (const char* name : {"null_policy_9999.las", "null_policy_ERR.las", "null_policy_dashes.las"}) {
+    // After sorting, row 0 is 1669.750 (DT 10000), row 1 1669.875 (DT 9999), row 2 1670.0 (DT
+    // 9998).
+    for (const char* name :
+         {"null_policy_9999.las", "null_policy_ERR.las", "null_policy_dashes.las"}) {
         SCOPED_TRACE(name);
         const LoadedLog log = check(name);
         const ExtraCurve* dt = extra(log.table, "DT");
@@ -117,16 +122,17 @@ TEST(LasEdgeCasesTest, EveryFileIsReadOrRefusedPrecisely) {
     {
         const LoadedLog log = check("null_policy_dashes.las");
         const ExtraCurve* rhob = extra(log.table, "RHOB");
-        EXPECT_TRUE(std::isnan(rhob->values[0]));          // "--"
-        EXPECT_DOUBLE_EQ(rhob->values[1], -2550.0);        // a negative number, not a dash
-        EXPECT_TRUE(std::isnan(rhob->values[2]));          // "-"
+        EXPECT_TRUE(std::isnan(rhob->values[0]));    // "--"
+        EXPECT_DOUBLE_EQ(rhob->values[1], -2550.0);  // a negative number, not a dash
+        EXPECT_TRUE(std::isnan(rhob->values[2]));    // "-"
         EXPECT_EQ(curve(log.info, "RHOB")->nulls, 2u);
     }
     {
         // Under the declared policy, 9999 is a value and ERR is refused with its place.
         ReadOptions declared;
         declared.nullPolicy = NullPolicy::Declared;
-        const LoadedLog log = loadCaliperLog((edgeCases() / "null_policy_9999.las").string(), declared);
+        const LoadedLog log =
+            loadCaliperLog((edgeCases() / "null_policy_9999.las").string(), declared);
         EXPECT_DOUBLE_EQ(extra(log.table, "DT")->values[1], 9999.0);
         try {
             loadCaliperLog((edgeCases() / "null_policy_ERR.las").string(), declared);
@@ -192,7 +198,8 @@ TEST(LasEdgeCasesTest, EveryFileIsReadOrRefusedPrecisely) {
             load("missing_a_section.las");
             ADD_FAILURE() << "missing_a_section.las: expected a refusal";
         } catch (const ParseError& e) {
-            EXPECT_NE(std::string(e.what()).find("expected data rows after ~A"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("expected data rows after ~A"), std::string::npos)
+                << e.what();
         }
     }
     {
@@ -201,10 +208,12 @@ TEST(LasEdgeCasesTest, EveryFileIsReadOrRefusedPrecisely) {
             load("missing_well_curves_ascii_section.las");
             ADD_FAILURE() << "missing_well_curves_ascii_section.las: expected a refusal";
         } catch (const ParseError& e) {
-            EXPECT_NE(std::string(e.what()).find("~C (curve information)"), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("~C (curve information)"), std::string::npos)
+                << e.what();
         }
     }
     // Every file of the folder was looked at.
     for (const auto& entry : std::filesystem::directory_iterator(edgeCases()))
-        EXPECT_TRUE(checked.count(entry.path().filename().string())) << "not walked: " << entry.path();
+        EXPECT_TRUE(checked.count(entry.path().filename().string()))
+            << "not walked: " << entry.path();
 }

@@ -15,7 +15,8 @@ const char kHeader[] =
 }
 
 TEST(LasReaderTest, ReadsValuesAndCountsDeclaredAndCommonNulls) {
-    const std::string text = std::string(kHeader) + "~A\n100.0 50.5 8.5\n100.5 -999.25 ERR\n101.0 -9999 ---\n";
+    const std::string text =
+        std::string(kHeader) + "~A\n100.0 50.5 8.5\n100.5 -999.25 ERR\n101.0 -9999 ---\n";
     const LasLog log = readLas(text, "t.las", {}, nullptr);
     ASSERT_EQ(log.rowCount(), 3u);
     EXPECT_DOUBLE_EQ(log.curves[1].values[0], 50.5);
@@ -41,7 +42,8 @@ TEST(LasReaderTest, DeclaredNullPolicyRefusesTextNullsAndKeepsOtherNumbers) {
     } catch (const ParseError& e) {
         EXPECT_EQ(e.line(), 11u);
         EXPECT_EQ(e.column(), 7u);
-        EXPECT_NE(std::string(e.what()).find("expected a number for curve GR, found 'ERR'"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("expected a number for curve GR, found 'ERR'"),
+                  std::string::npos);
     }
 }
 
@@ -51,7 +53,8 @@ TEST(LasReaderTest, EveryCommonNullTokenIsNull) {
     EXPECT_TRUE(isNullToken("***", NullPolicy::Declared));
     EXPECT_FALSE(isNullToken("ERR", NullPolicy::Declared));
     EXPECT_FALSE(isNullToken("12", NullPolicy::Common));
-    for (const char* number : {"-999.25", "999.25", "-9999.25", "9999.25", "-9999", "9999", "-999"}) {
+    for (const char* number :
+         {"-999.25", "999.25", "-9999.25", "9999.25", "-9999", "9999", "-999"}) {
         const std::string text = std::string(kHeader) + "~A\n1 " + number + " 2\n";
         EXPECT_TRUE(std::isnan(readLas(text, "n.las", {}, nullptr).curves[1].values[0])) << number;
     }
@@ -59,7 +62,8 @@ TEST(LasReaderTest, EveryCommonNullTokenIsNull) {
 
 TEST(LasReaderTest, WrappedRowsSpanLinesAndTruncatedLastRowIsCounted) {
     const std::string text =
-        "~V\n VERS. 2.0 :\n WRAP. YES :\n~C\n DEPT.M :\n A. :\n B. :\n C. :\n~A\n1\n 2 3\n 4\n2\n 5 6\n";
+        "~V\n VERS. 2.0 :\n WRAP. YES :\n~C\n DEPT.M :\n A. :\n B. :\n C. :\n~A\n1\n 2 3\n 4\n2\n "
+        "5 6\n";
     Diagnostics d;
     const LasLog log = readLas(text, "w.las", {}, &d);
     ASSERT_EQ(log.rowCount(), 1u);
@@ -85,7 +89,8 @@ TEST(LasReaderTest, TruncatedLastLineIsSkippedWithAWarningButAShortLineInsideIsA
 
 TEST(LasReaderTest, DuplicatedMnemonicsAreRenamedAndTextColumnsSkipped) {
     const std::string text =
-        "~V\n VERS. 3.0 :\n DLM. COMMA :\n~Log_Definition\n DEPT.M : {F}\n GR.GAPI : {F}\n GR.GAPI : {F}\n"
+        "~V\n VERS. 3.0 :\n DLM. COMMA :\n~Log_Definition\n DEPT.M : {F}\n GR.GAPI : {F}\n GR.GAPI "
+        ": {F}\n"
         " NOTE. : remark {S}\n~Log_Data\n1.0, 10, 20, hello\n";
     Diagnostics d;
     const LasLog log = readLas(text, "d.las", {}, &d);
@@ -101,8 +106,10 @@ TEST(LasReaderTest, DuplicatedMnemonicsAreRenamedAndTextColumnsSkipped) {
 // as an array element.
 TEST(LasReaderTest, ArrayIndexOutsideIntRangeIsAPlainName) {
     const std::string text =
-        "~Version\n VERS. 3.0 : v\n WRAP. NO : w\n DLM. COMMA : d\n~Log_Definition\n DEPT.M : depth {F}\n"
-        " NMR[4000000000000000000000].MS : echo {AF}\n NMR[2].MS : echo {AF}\n NMR[1.5].MS : echo {AF}\n"
+        "~Version\n VERS. 3.0 : v\n WRAP. NO : w\n DLM. COMMA : d\n~Log_Definition\n DEPT.M : "
+        "depth {F}\n"
+        " NMR[4000000000000000000000].MS : echo {AF}\n NMR[2].MS : echo {AF}\n NMR[1.5].MS : echo "
+        "{AF}\n"
         " NMR[0].MS : echo {AF}\n~Log_Data | Log_Definition\n1.0,2.0,3.0,4.0,5.0\n";
     const LasLog log = readLas(text, "a.las", {}, nullptr);
     ASSERT_EQ(log.curves.size(), 5u);
@@ -116,7 +123,8 @@ TEST(LasReaderTest, ArrayIndexOutsideIntRangeIsAPlainName) {
 }
 
 TEST(LasReaderTest, AFileThatDeclaresItsNullOnlyKeepsCommonNullNumbers) {
-    const std::string text = std::string(kHeader) + "~P\n NULLS.  DECLARED : only NULL marks a missing value\n" +
+    const std::string text = std::string(kHeader) +
+                             "~P\n NULLS.  DECLARED : only NULL marks a missing value\n" +
                              "~A\n100.0 9999 -999.25\n100.5 -9999 8.5\n";
     const LasLog log = readLas(text, "d.las", {}, nullptr);  // the reader's policy: common
     EXPECT_TRUE(log.header.onlyDeclaredNull);
@@ -128,7 +136,8 @@ TEST(LasReaderTest, AFileThatDeclaresItsNullOnlyKeepsCommonNullNumbers) {
 
 TEST(LasReaderTest, AQuotedStringHoldingTheDelimiterIsOneValue) {
     const std::string text =
-        "~Version\n VERS. 3.0 : v\n WRAP. NO : w\n DLM. COMMA : d\n~Log_Definition\n DEPT.M : depth {F}\n"
+        "~Version\n VERS. 3.0 : v\n WRAP. NO : w\n DLM. COMMA : d\n~Log_Definition\n DEPT.M : "
+        "depth {F}\n"
         " LITH. : lithology {S}\n GR.GAPI : gamma {F}\n~Log_Data | Log_Definition\n"
         "1.0, \"SAND, SHALY\" ,45.5\n2.0,SAND,46.5\n";
     const LasLog log = readLas(text, "q.las", {}, nullptr);

@@ -26,7 +26,8 @@ SectionTable sample() {
     }
     t.radius_mm[7] = kNaN;
     t.extraCurves.push_back({"GR", "GAPI", "gamma ray", {}});
-    for (int r = 0; r < 50; ++r) t.extraCurves[0].values.push_back(r % 5 == 0 ? kNaN : 40.0 + std::sqrt(r));
+    for (int r = 0; r < 50; ++r)
+        t.extraCurves[0].values.push_back(r % 5 == 0 ? kNaN : 40.0 + std::sqrt(r));
     return t;
 }
 
@@ -34,7 +35,8 @@ SectionTable sample() {
 std::string itemValue(const std::string& text, const std::string& start) {
     const std::size_t at = text.find("\n" + start);
     if (at == std::string::npos) return "(absent)";
-    std::istringstream line(text.substr(at + 1 + start.size(), text.find('\n', at + 1) - at - 1 - start.size()));
+    std::istringstream line(
+        text.substr(at + 1 + start.size(), text.find('\n', at + 1) - at - 1 - start.size()));
     std::string value;
     line >> value;
     return value;
@@ -43,8 +45,10 @@ std::string itemValue(const std::string& text, const std::string& start) {
 void expectSame(const std::vector<double>& a, const std::vector<double>& b, const char* what) {
     ASSERT_EQ(a.size(), b.size()) << what;
     for (std::size_t i = 0; i < a.size(); ++i) {
-        if (std::isnan(a[i])) EXPECT_TRUE(std::isnan(b[i])) << what << " " << i;
-        else EXPECT_EQ(a[i], b[i]) << what << " " << i;  // exact, not near
+        if (std::isnan(a[i]))
+            EXPECT_TRUE(std::isnan(b[i])) << what << " " << i;
+        else
+            EXPECT_EQ(a[i], b[i]) << what << " " << i;  // exact, not near
     }
 }
 }  // namespace
@@ -118,15 +122,17 @@ TEST(LasWriterTest, ColumnsWithStrideDecimalsParametersAndOtherReadBack) {
 
 TEST(LasWriterTest, TrueValuesEqualToNullMarkersReadBackAsValues) {
     SectionTable t = sample();
-    t.radius_mm[3] = -999.25;               // the preferred NULL: another is chosen
-    t.extraCurves[0].values[1] = 9999.0;    // common nulls, kept because the file declares its NULL only
+    t.radius_mm[3] = -999.25;  // the preferred NULL: another is chosen
+    t.extraCurves[0].values[1] =
+        9999.0;  // common nulls, kept because the file declares its NULL only
     t.extraCurves[0].values[2] = -9999.0;
     t.extraCurves[0].values[3] = 999.25;
     std::ostringstream out;
     writeLas(out, t);
     EXPECT_EQ(itemValue(out.str(), " NULL."), "-9999.25") << "NULL not moved off -999.25";
     EXPECT_EQ(itemValue(out.str(), " NULLS."), "DECLARED");
-    const LoadedLog read = loadCaliperText(out.str(), "nulls.las", ReadOptions{});  // default: common nulls
+    const LoadedLog read =
+        loadCaliperText(out.str(), "nulls.las", ReadOptions{});  // default: common nulls
     expectSame(t.radius_mm, read.table.radius_mm, "radii");
     expectSame(t.extraCurves[0].values, read.table.extraCurves[0].values, "GR");
     EXPECT_EQ(read.table.radius_mm[3], -999.25);
@@ -158,7 +164,8 @@ TEST(LasWriterTest, ALargeTableReadBackOnTwoThreadsInSmallBlocksIsExact) {
     t.armCount = 8;
     for (int r = 0; r < 20000; ++r) {
         t.depth_m.push_back(250.0 + 0.0025 * r);
-        for (int k = 0; k < 8; ++k) t.radius_mm.push_back(100.0 + std::sin(0.001 * r + k) * 7.0 + 1e-9 * r);
+        for (int k = 0; k < 8; ++k)
+            t.radius_mm.push_back(100.0 + std::sin(0.001 * r + k) * 7.0 + 1e-9 * r);
         t.rb_deg.push_back(std::fmod(0.37 * r, 360.0));
     }
     const auto path = caliper3d::test::scratch("round_trip_large.las");
@@ -177,8 +184,8 @@ TEST(LasWriterTest, ALargeTableReadBackOnTwoThreadsInSmallBlocksIsExact) {
 TEST(LasWriterTest, RealLogsRoundTripExactly) {
     const auto dir = caliper3d::test::sharedData() / "real";
     CALIPER3D_REQUIRE_DATA(dir);
-    for (const char* name : {"1AA072209208W400_WL_0477502_STAR_FIELD.las", "1AA063409108W400_FMI_SONIC_MAIN.las",
-                             "multifinger40_data.txt"}) {
+    for (const char* name : {"1AA072209208W400_WL_0477502_STAR_FIELD.las",
+                             "1AA063409108W400_FMI_SONIC_MAIN.las", "multifinger40_data.txt"}) {
         SCOPED_TRACE(name);
         const LoadedLog first = loadCaliperLog((dir / name).string(), ReadOptions{});
         std::ostringstream out;

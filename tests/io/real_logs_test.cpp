@@ -13,7 +13,9 @@
 using namespace caliper3d::io;
 
 namespace {
-std::filesystem::path real(const char* name) { return caliper3d::test::sharedData() / "real" / name; }
+std::filesystem::path real(const char* name) {
+    return caliper3d::test::sharedData() / "real" / name;
+}
 
 std::string roleOf(const LogInfo& info, const std::string& mnemonic) {
     for (const CurveInfo& c : info.curves)
@@ -65,7 +67,8 @@ TEST(RealLogsTest, FmiFourArmImagerTurnsPadPairDiametersIntoRadii) {
     EXPECT_EQ(roleOf(log.info, "DEPTH"), "second depth (checked against the index)");
     bool warned = false;
     for (const Warning& w : log.info.diagnostics.warnings)
-        warned = warned || w.message.find("DEPTH differs from the index DEPT on 122 rows") != std::string::npos;
+        warned = warned || w.message.find("DEPTH differs from the index DEPT on 122 rows") !=
+                               std::string::npos;
     EXPECT_TRUE(warned);
     EXPECT_NEAR(log.info.bitSize_mm, 156.0, 1.0);
     EXPECT_NEAR(log.info.bitSizeMax_mm, 251.0, 1.0);
@@ -96,8 +99,8 @@ TEST(RealLogsTest, FormatsReferenceShowsTheInfoPrintedToday) {
     const auto data = caliper3d::test::sharedData();
     CALIPER3D_REQUIRE_DATA(data / "real");
     std::string expected;
-    for (const char* name : {"1AA072209208W400_WL_0477502_STAR_FIELD.las", "1AA063409108W400_FMI_SONIC_MAIN.las",
-                             "multifinger40_data.txt"}) {
+    for (const char* name : {"1AA072209208W400_WL_0477502_STAR_FIELD.las",
+                             "1AA063409108W400_FMI_SONIC_MAIN.las", "multifinger40_data.txt"}) {
         LogInfo info = describeLog((data / "real" / name).string(), ReadOptions{});
         // As printed from ../shared/data: paths relative to it.
         const std::string shown = std::string("real/") + name;
@@ -109,5 +112,6 @@ TEST(RealLogsTest, FormatsReferenceShowsTheInfoPrintedToday) {
     ASSERT_TRUE(in) << "docs/formats.md not found";
     const std::string doc((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     EXPECT_NE(doc.find("```\n" + expected + "```\n"), std::string::npos)
-        << "docs/formats.md is out of date; today's output:\n" << expected;
+        << "docs/formats.md is out of date; today's output:\n"
+        << expected;
 }

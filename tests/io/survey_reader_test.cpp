@@ -11,7 +11,8 @@
 using namespace caliper3d::io;
 
 TEST(SurveyReaderTest, ReadsPlainCsvWithUnitSuffixes) {
-    const SurveyTable s = parseSurvey("MD_ft,INC_deg,AZI_deg,TVD_ft\n0,0,0,0\n100,10,45,99.5\n", "s.csv");
+    const SurveyTable s =
+        parseSurvey("MD_ft,INC_deg,AZI_deg,TVD_ft\n0,0,0,0\n100,10,45,99.5\n", "s.csv");
     ASSERT_EQ(s.stationCount(), 2u);
     EXPECT_EQ(s.depthUnit, LengthUnit::Foot);
     EXPECT_DOUBLE_EQ(s.md_m[1], 30.48);
@@ -39,14 +40,17 @@ TEST(SurveyReaderTest, SkipsReportPreambleUnitsLineAndFooter) {
 }
 
 TEST(SurveyReaderTest, UnitsLineInFeetConvertsDepths) {
-    const SurveyTable s = parseSurvey("Measured Depth,Incl.,Azim.,Vertical Depth\n ft , , , ft\n0,0,0,0\n10,0,0,10\n", "f.csv");
+    const SurveyTable s = parseSurvey(
+        "Measured Depth,Incl.,Azim.,Vertical Depth\n ft , , , ft\n0,0,0,0\n10,0,0,10\n", "f.csv");
     EXPECT_EQ(s.depthUnit, LengthUnit::Foot);
     EXPECT_DOUBLE_EQ(s.md_m[1], 3.048);
     EXPECT_DOUBLE_EQ(s.tvd_m[1], 3.048);
 }
 
 TEST(SurveyReaderTest, WhitespaceTableWithCommentsAndDecimalComma) {
-    const SurveyTable s = parseSurvey("# trace\n MD  X  TVD  INCL  AZIM_TN AZIM_GN\n0 5 0 0 0 359\n12,5 5 12,5 0,5 26,6 26,5\n", "t.txt");
+    const SurveyTable s = parseSurvey(
+        "# trace\n MD  X  TVD  INCL  AZIM_TN AZIM_GN\n0 5 0 0 0 359\n12,5 5 12,5 0,5 26,6 26,5\n",
+        "t.txt");
     ASSERT_EQ(s.stationCount(), 2u);
     EXPECT_DOUBLE_EQ(s.md_m[1], 12.5);
     EXPECT_DOUBLE_EQ(s.inc_deg[1], 0.5);
@@ -124,14 +128,16 @@ TEST(SurveyReaderTest, ReadsEveryPublishedSurveyLayout) {
 
 TEST(SurveyReaderTest, AWellColumnGivesOneWellTheFirstOrTheOneAskedFor) {
     const std::string text =
-        "well,MD_m,INC_deg,AZI_deg\nA,0,0,0\nA,30,1,10\nB well,0,0,0\nB well,30,2,20\nB well,60,4,22\nA,60,2,12\n";
+        "well,MD_m,INC_deg,AZI_deg\nA,0,0,0\nA,30,1,10\nB well,0,0,0\nB well,30,2,20\nB "
+        "well,60,4,22\nA,60,2,12\n";
     Diagnostics diagnostics;
     const SurveyTable a = parseSurvey(text, "wells.csv", {}, &diagnostics);
     EXPECT_EQ(a.wellName, "A");
     EXPECT_EQ(a.wellCount, 2u);
     EXPECT_EQ(a.md_m, (std::vector<double>{0, 30, 60}));
     ASSERT_EQ(diagnostics.warningCount, 1u);
-    EXPECT_NE(diagnostics.warnings[0].message.find("holds 2 wells in column 'well'; read 'A' (3 stations), 3 stations"),
+    EXPECT_NE(diagnostics.warnings[0].message.find(
+                  "holds 2 wells in column 'well'; read 'A' (3 stations), 3 stations"),
               std::string::npos)
         << diagnostics.warnings[0].message;
     SurveyReadOptions options;
@@ -145,7 +151,8 @@ TEST(SurveyReaderTest, AWellColumnGivesOneWellTheFirstOrTheOneAskedFor) {
     } catch (const ParseError& e) {
         EXPECT_EQ(e.line(), 1u);
         EXPECT_EQ(e.column(), 1u);
-        EXPECT_NE(std::string(e.what()).find("expected stations of well 'C' in column 'well', found only 'A', 'B well'"),
+        EXPECT_NE(std::string(e.what()).find(
+                      "expected stations of well 'C' in column 'well', found only 'A', 'B well'"),
                   std::string::npos)
             << e.what();
     }
@@ -153,8 +160,9 @@ TEST(SurveyReaderTest, AWellColumnGivesOneWellTheFirstOrTheOneAskedFor) {
 
 TEST(SurveyReaderTest, ColumnsAreListedWithTheirRolesAndAGridAzimuthIsWarnedAbout) {
     Diagnostics diagnostics;
-    const SurveyTable s = parseSurvey("Measured Depth ( ft ),Inclination,Azimuth Grid ( deg ),DLS\n0,0,0,0\n10,1,2,3\n",
-                                      "grid.csv", {}, &diagnostics);
+    const SurveyTable s = parseSurvey(
+        "Measured Depth ( ft ),Inclination,Azimuth Grid ( deg ),DLS\n0,0,0,0\n10,1,2,3\n",
+        "grid.csv", {}, &diagnostics);
     ASSERT_EQ(s.columns.size(), 4u);
     EXPECT_EQ(s.columns[0].name, "Measured Depth ( ft )");
     EXPECT_EQ(s.columns[0].role, "measured depth");
@@ -162,7 +170,8 @@ TEST(SurveyReaderTest, ColumnsAreListedWithTheirRolesAndAGridAzimuthIsWarnedAbou
     EXPECT_EQ(s.columns[2].role, "azimuth");
     EXPECT_EQ(s.columns[3].role, "");
     ASSERT_EQ(diagnostics.warningCount, 1u);
-    EXPECT_NE(diagnostics.warnings[0].message.find("grid-north column 'Azimuth Grid ( deg )'"), std::string::npos);
+    EXPECT_NE(diagnostics.warnings[0].message.find("grid-north column 'Azimuth Grid ( deg )'"),
+              std::string::npos);
 }
 
 TEST(SurveyReaderTest, ErrorsSayWhatWasExpectedAndWhatWasFound) {
@@ -175,20 +184,27 @@ TEST(SurveyReaderTest, ErrorsSayWhatWasExpectedAndWhatWasFound) {
         return std::string("(no error)");
     };
     EXPECT_EQ(message("MD,INC,AZI\n10,0,0\n5,0,0\n"),
-              "e.csv:3:1: expected measured depths that do not decrease (at least the 10 of the station before), "
+              "e.csv:3:1: expected measured depths that do not decrease (at least the 10 of the "
+              "station before), "
               "found 5");
-    EXPECT_EQ(message("MD,INC,AZI\n0,0,0\n5,181,0\n"), "e.csv:3:3: expected an inclination between 0 and 180 degrees, found 181");
-    EXPECT_EQ(message("MD,INC,AZI\n0,0,0\nx,1,1\n20,1,1\n"), "e.csv:3:1: expected a number (measured depth), found 'x'");
+    EXPECT_EQ(message("MD,INC,AZI\n0,0,0\n5,181,0\n"),
+              "e.csv:3:3: expected an inclination between 0 and 180 degrees, found 181");
+    EXPECT_EQ(message("MD,INC,AZI\n0,0,0\nx,1,1\n20,1,1\n"),
+              "e.csv:3:1: expected a number (measured depth), found 'x'");
     EXPECT_EQ(message("depth,gamma\n0,1\n"),
-              "e.csv: expected a survey header, a line naming measured depth, inclination and azimuth columns "
+              "e.csv: expected a survey header, a line naming measured depth, inclination and "
+              "azimuth columns "
               "(e.g. MD,INC,AZI), found none in 2 lines");
 }
 
 TEST(SurveyReaderTest, ASurveyIsToldFromACaliperLog) {
     EXPECT_TRUE(looksLikeSurvey("# trace\n MD  X  TVD  INCL  AZIM_TN\n0 5 0 0 0\n"));
-    EXPECT_TRUE(looksLikeSurvey("Report\nClient: X\n\nMD,Inc,Azim.,TVD\n(m),(Deg),(Deg),(m)\n0,0,0,0\n"));
-    EXPECT_FALSE(looksLikeSurvey("DEPTH R1 R2 R3 R4 R5 R6 P1AZ DEVI HAZI\n1 2 2 2 2 2 2 0 0 0\n"));  // caliper names
-    EXPECT_FALSE(looksLikeSurvey("1 2 3\nMD INC AZI\n"));                                            // numbers first
-    EXPECT_FALSE(looksLikeSurvey("~Version\n VERS. 2.0 :\n~Curve\n MD.M :\n INC.DEG :\n AZI.DEG :\n"));  // LAS
+    EXPECT_TRUE(
+        looksLikeSurvey("Report\nClient: X\n\nMD,Inc,Azim.,TVD\n(m),(Deg),(Deg),(m)\n0,0,0,0\n"));
+    EXPECT_FALSE(looksLikeSurvey(
+        "DEPTH R1 R2 R3 R4 R5 R6 P1AZ DEVI HAZI\n1 2 2 2 2 2 2 0 0 0\n"));  // caliper names
+    EXPECT_FALSE(looksLikeSurvey("1 2 3\nMD INC AZI\n"));                   // numbers first
+    EXPECT_FALSE(looksLikeSurvey(
+        "~Version\n VERS. 2.0 :\n~Curve\n MD.M :\n INC.DEG :\n AZI.DEG :\n"));  // LAS
     EXPECT_FALSE(looksLikeSurvey("depth,gamma\n0,1\n"));
 }

@@ -11,8 +11,8 @@ TEST(UnitsTest, EveryUnitConvertsToMillimetresAndBack) {
     EXPECT_DOUBLE_EQ(toMillimetres(LengthUnit::Centimetre), 10.0);
     EXPECT_DOUBLE_EQ(toMillimetres(LengthUnit::Millimetre), 1.0);
     EXPECT_DOUBLE_EQ(toMetres(LengthUnit::Foot), 0.3048);
-    for (LengthUnit u : {LengthUnit::Metre, LengthUnit::Foot, LengthUnit::Inch, LengthUnit::Millimetre,
-                         LengthUnit::Centimetre}) {
+    for (LengthUnit u : {LengthUnit::Metre, LengthUnit::Foot, LengthUnit::Inch,
+                         LengthUnit::Millimetre, LengthUnit::Centimetre}) {
         EXPECT_EQ(parseLengthUnit(unitName(u)), u) << unitName(u);
     }
 }

@@ -14,9 +14,9 @@
 #include <boost/math/constants/constants.hpp>
 
 #include "reconstruction/analysis/report_writer.h"
+#include "reconstruction/analysis/well_analysis.h"
 #include "reconstruction/section/section_coverage.h"
 #include "reconstruction/synthetic/synthetic_well.h"
-#include "reconstruction/analysis/well_analysis.h"
 #include "reconstruction/well_geometry.h"
 
 using namespace caliper3d::reconstruction;

@@ -8,17 +8,19 @@
 #include <gtest/gtest.h>
 
 #include "io/log_reader.h"
-#include "reconstruction/section/section_analysis.h"
 #include "reconstruction/analysis/well_analysis.h"
+#include "reconstruction/section/section_analysis.h"
 #include "test_support.h"
 
 using namespace caliper3d;
 using namespace caliper3d::reconstruction;
 
 namespace {
-WellAnalysis analyseFile(const std::filesystem::path& file, std::shared_ptr<const io::SectionTable>* keep = nullptr) {
+WellAnalysis analyseFile(const std::filesystem::path& file,
+                         std::shared_ptr<const io::SectionTable>* keep = nullptr) {
     io::Diagnostics diagnostics;
-    auto table = std::make_shared<const io::SectionTable>(io::readCaliperLog(file.string(), io::ReadOptions{}, &diagnostics));
+    auto table = std::make_shared<const io::SectionTable>(
+        io::readCaliperLog(file.string(), io::ReadOptions{}, &diagnostics));
     if (keep) *keep = table;
     const WellGeometry geometry(table, GeometryOptions{});
     return analyseWell(geometry, AnalysisOptions{});

@@ -100,7 +100,7 @@ TEST(WellGeometryTest, RadialExaggerationScalesTheDrawnRadiusOnly) {
     for (const glm::vec3& p : m.positions)
         EXPECT_NEAR(std::hypot(p.x, p.z), 20.0f * 0.21590f / 2, 1e-4f);
     for (double r : repairedRadii(g, 3)) EXPECT_NEAR(r, 215.9 / 2, 1e-9);  // the data stay true
-    EXPECT_NEAR(m.positions.back().y, -10.0f, 1e-4f);                     // and so does the path
+    EXPECT_NEAR(m.positions.back().y, -10.0f, 1e-4f);                      // and so does the path
 }
 
 namespace {

@@ -63,9 +63,9 @@ TEST_F(LevelOfDetailTest, SegmentsNearTheEyeGetFinerLevelsAndFarOnesKeepTheCoars
 
     const glm::vec3 top{0.0f, -1.0f, 0.0f};  // 1 m below the top, on the axis
     ASSERT_GT(refine(scene, *geometry, top), 0u);
-    EXPECT_EQ(scene.heldFrom(0), 0);                        // the eye's own segments: full detail
+    EXPECT_EQ(scene.heldFrom(0), 0);  // the eye's own segments: full detail
     EXPECT_EQ(scene.heldFrom(1), 0);
-    EXPECT_EQ(scene.heldFrom(scene.segmentCount() - 1),     // 39 m away: coarse as built
+    EXPECT_EQ(scene.heldFrom(scene.segmentCount() - 1),  // 39 m away: coarse as built
               reconstruction::kFirstCoarseLevel);
     EXPECT_EQ(refine(scene, *geometry, top), 0u);  // nothing more wanted from the same place
     EXPECT_GT(drawn(scene, top), coarse);          // SoLOD draws the finer levels near the eye
@@ -85,8 +85,8 @@ TEST_F(LevelOfDetailTest, SwitchesFollowTheProjectedSizeNotAFixedDistance) {
     // angle: each level is needed twice as far away.
     const auto base = scenegraph::lodSwitchDistances(segment, scenegraph::lodViewFor(800, 0.8f));
     const auto tall = scenegraph::lodSwitchDistances(segment, scenegraph::lodViewFor(1600, 0.8f));
-    const auto narrow =
-        scenegraph::lodSwitchDistances(segment, scenegraph::lodViewFor(800, 2.0f * std::atan(std::tan(0.4f) / 2.0f)));
+    const auto narrow = scenegraph::lodSwitchDistances(
+        segment, scenegraph::lodViewFor(800, 2.0f * std::atan(std::tan(0.4f) / 2.0f)));
     ASSERT_EQ(base.size(), segment.levelError_mm.size());
     for (std::size_t i = 0; i < base.size(); ++i) {
         EXPECT_NEAR(tall[i] - segment.radius, 2.0f * (base[i] - segment.radius), 1e-3f) << i;
@@ -109,7 +109,8 @@ TEST_F(LevelOfDetailTest, FlyingTheWholeWellKeepsTheFineLevelsWithinTheBudget) {
         // On the hole's axis at this measured depth.
         const auto row = static_cast<std::size_t>(
             std::lower_bound(md.begin(), md.end(), static_cast<double>(depth)) - md.begin());
-        const glm::vec3 eye(reconstruction::toScene(geometry->centre(std::min(row, md.size() - 1))));
+        const glm::vec3 eye(
+            reconstruction::toScene(geometry->centre(std::min(row, md.size() - 1))));
         refined += refine(scene, *geometry, eye);
         scene.evictFineLevels(budget);
         most = std::max(most, scene.fineTriangles());

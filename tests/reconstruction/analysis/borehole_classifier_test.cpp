@@ -30,9 +30,11 @@ TEST(BoreholeClassifierTest, ShapeClassesFollowTheDefaultThresholds) {
     EXPECT_EQ(classifyShape(section(228.5, 240), r), BoreholeClass::Breakout);
     EXPECT_EQ(classifyShape(section(216, 221.8), r), BoreholeClass::InGauge);  // elongation < 6
     EXPECT_EQ(classifyShape(section(216, 240, 20.0, 10.0), r), BoreholeClass::Keyseat);
-    EXPECT_EQ(classifyShape(section(216, 240, 20.0, 172.0), r), BoreholeClass::Keyseat);  // low side
+    EXPECT_EQ(classifyShape(section(216, 240, 20.0, 172.0), r),
+              BoreholeClass::Keyseat);  // low side
     EXPECT_EQ(classifyShape(section(216, 240, 20.0, 30.0), r), BoreholeClass::Breakout);
-    EXPECT_EQ(classifyShape(section(216, 240, 4.0, 10.0), r), BoreholeClass::Breakout);  // not deviated
+    EXPECT_EQ(classifyShape(section(216, 240, 4.0, 10.0), r),
+              BoreholeClass::Breakout);  // not deviated
     ClassifierInput unknown = section(216, 240);
     unknown.bit_mm = std::nan("");
     EXPECT_EQ(classifyShape(unknown, r), BoreholeClass::InGauge);
@@ -49,7 +51,8 @@ TEST(BoreholeClassifierTest, ThresholdsAreParameters) {
 TEST(BoreholeClassifierTest, BreakoutRunShorterThanOneMetreIsNotABreakout) {
     std::vector<ClassifierInput> s;
     for (int i = 0; i < 100; ++i) {
-        const bool elongated = (i >= 10 && i < 17) || (i >= 40 && i < 60);  // 0.7 m and 2.0 m at 0.1 m
+        const bool elongated =
+            (i >= 10 && i < 17) || (i >= 40 && i < 60);  // 0.7 m and 2.0 m at 0.1 m
         ClassifierInput c = elongated ? section(216, 240) : section(215, 216);
         c.md_m = 0.1 * i;
         c.toolAzimuth_deg = 0.0;
@@ -66,7 +69,7 @@ TEST(BoreholeClassifierTest, RotatingToolRejectsABreakoutAcrossNorth) {
     std::vector<ClassifierInput> slow, fast;
     for (int i = 0; i < 100; ++i) {
         ClassifierInput c = section(216, 240);
-        c.md_m = 0.1 * i;  // a 10 m zone
+        c.md_m = 0.1 * i;                                       // a 10 m zone
         c.toolAzimuth_deg = std::fmod(350.0 + 0.8 * i, 360.0);  // 40 deg per 5 m, wraps at north
         slow.push_back(c);
         c.toolAzimuth_deg = std::fmod(350.0 + 1.0 * i, 360.0);  // 50 deg per 5 m

@@ -31,7 +31,8 @@ TEST(HoleVolumeTest, CylinderOfBitSizeAndItsAnnulusWithExcess) {
 }
 
 TEST(HoleVolumeTest, IntervalIsClippedAndAreasInterpolatedInsideASection) {
-    const std::vector<double> md{0, 10}, area{1e6, 3e6}, bit{std::nan(""), std::nan("")};  // 1 and 3 m^2
+    const std::vector<double> md{0, 10}, area{1e6, 3e6},
+        bit{std::nan(""), std::nan("")};  // 1 and 3 m^2
     VolumeOptions o;
     o.top_m = 5.0;
     o.bottom_m = 20.0;

@@ -1,10 +1,10 @@
 #include "reconstruction/analysis/report_writer.h"
 
-#include <memory>
-#include <sstream>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <memory>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -17,7 +17,8 @@ using namespace caliper3d::reconstruction;
 
 namespace {
 WellAnalysis exampleAnalysis() {
-    auto table = std::make_shared<const io::SectionTable>(makeSyntheticWell(syntheticProfile("example", 300.0, 0.5)));
+    auto table = std::make_shared<const io::SectionTable>(
+        makeSyntheticWell(syntheticProfile("example", 300.0, 0.5)));
     WellGeometry g(table, GeometryOptions{});
     return analyseWell(g, {});
 }
@@ -32,14 +33,16 @@ TEST(ReportWriterTest, HeaderStartsWithTheExactColumns) {
     std::ostringstream out;
     writeSectionReport(out, exampleAnalysis());
     const std::string s = out.str();
-    EXPECT_EQ(s.rfind("md_m,tvd_m,north_m,east_m,inc_deg,azi_deg,dmin_mm,dmax_mm,ellipticity,major_azimuth_deg,"
+    EXPECT_EQ(s.rfind("md_m,tvd_m,north_m,east_m,inc_deg,azi_deg,dmin_mm,dmax_mm,ellipticity,major_"
+                      "azimuth_deg,"
                       "area_mm2,centre_offset_mm,class,",
                       0),
               0u);
     EXPECT_EQ(lines(s), 1u + 601u);
     EXPECT_NE(s.find(",breakout,"), std::string::npos);
     EXPECT_NE(s.find(",washout,"), std::string::npos);
-    EXPECT_NE(s.find("\n0.0000,0.0000,0.0000,0.0000,0.000,45.000,215.90,215.90,1.0000,"), std::string::npos);
+    EXPECT_NE(s.find("\n0.0000,0.0000,0.0000,0.0000,0.000,45.000,215.90,215.90,1.0000,"),
+              std::string::npos);
 }
 
 TEST(ReportWriterTest, StepKeepsOneSectionPerStep) {
@@ -54,7 +57,10 @@ TEST(ReportWriterTest, ZoneTableAndSummary) {
     std::ostringstream out;
     writeZoneReport(out, a);
     const std::string s = out.str();
-    EXPECT_EQ(s.rfind("kind,top_m,bottom_m,length_m,mean_azimuth_deg,circular_sd_deg,mean_dmax_mm,mean_dmin_mm,sections\n", 0), 0u);
+    EXPECT_EQ(s.rfind("kind,top_m,bottom_m,length_m,mean_azimuth_deg,circular_sd_deg,mean_dmax_mm,"
+                      "mean_dmin_mm,sections\n",
+                      0),
+              0u);
     EXPECT_NE(s.find("\nbreakout,59.7500,"), std::string::npos);
     EXPECT_NE(s.find("\nwashout,"), std::string::npos);
     const std::string summary = formatAnalysisSummary(a);
@@ -62,7 +68,8 @@ TEST(ReportWriterTest, ZoneTableAndSummary) {
 }
 
 TEST(ReportWriterTest, UnwritableFileIsAnError) {
-    EXPECT_THROW(writeSectionReport("/nonexistent/dir/out.csv", exampleAnalysis()), std::runtime_error);
+    EXPECT_THROW(writeSectionReport("/nonexistent/dir/out.csv", exampleAnalysis()),
+                 std::runtime_error);
 }
 
 TEST(ReportWriterTest, AnalysisLasHoldsTheReportedSectionsCurveByCurve) {
@@ -96,8 +103,10 @@ TEST(ReportWriterTest, AnalysisLasHoldsTheReportedSectionsCurveByCurve) {
         EXPECT_NEAR(tvd[k], r.tvd_m, 5e-5);
         EXPECT_NEAR(dmax[k], r.dmax_mm, 5e-3);
         EXPECT_EQ(cls[k], static_cast<double>(r.cls)) << r.md_m;
-        if (std::isnan(r.majorAzimuth_deg)) EXPECT_TRUE(std::isnan(majaz[k]));
-        else EXPECT_NEAR(majaz[k], r.majorAzimuth_deg, 5e-3);
+        if (std::isnan(r.majorAzimuth_deg))
+            EXPECT_TRUE(std::isnan(majaz[k]));
+        else
+            EXPECT_NEAR(majaz[k], r.majorAzimuth_deg, 5e-3);
     }
     // The example's breakout spans 60-80 m: the 70 m row carries the breakout code.
     EXPECT_EQ(cls[7], static_cast<double>(BoreholeClass::Breakout));
@@ -119,8 +128,8 @@ TEST(ReportWriterTest, WellheadAddsMapCoordinatesAndDepthBelowDatum) {
     while (std::getline(in, line)) last = line;
     const SectionResult& r = a.sections.back();
     char expected[128];
-    std::snprintf(expected, sizeof expected, ",%.4f,%.4f,%.4f", 500000.0 + r.east_m, 6800000.0 + r.north_m,
-                  r.tvd_m - 30.0);
+    std::snprintf(expected, sizeof expected, ",%.4f,%.4f,%.4f", 500000.0 + r.east_m,
+                  6800000.0 + r.north_m, r.tvd_m - 30.0);
     ASSERT_GT(r.east_m, 1.0);
     EXPECT_EQ(last.substr(last.size() - std::strlen(expected)), expected);
 }

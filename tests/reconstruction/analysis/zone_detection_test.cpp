@@ -11,7 +11,8 @@ TEST(ZoneDetectionTest, DoubledAnglesAverageAcrossTheZeroOneEightySeam) {
     const AxialStatistics s = axialStatistics({170.0, 10.0});
     EXPECT_NEAR(std::min(s.mean_deg, 180.0 - s.mean_deg), 0.0, 1e-9);
     // R = cos(20 deg) for doubled angles +-20: SD = sqrt(-2 ln cos 20) / 2.
-    EXPECT_NEAR(s.sd_deg, std::sqrt(-2.0 * std::log(std::cos(20.0 * M_PI / 180))) / 2.0 * 180 / M_PI, 1e-9);
+    EXPECT_NEAR(s.sd_deg,
+                std::sqrt(-2.0 * std::log(std::cos(20.0 * M_PI / 180))) / 2.0 * 180 / M_PI, 1e-9);
     EXPECT_NEAR(axialStatistics({45.0, 45.0, 45.0}).sd_deg, 0.0, 1e-6);
     EXPECT_TRUE(std::isnan(axialStatistics({std::nan("")}).mean_deg));
 }
@@ -19,8 +20,10 @@ TEST(ZoneDetectionTest, DoubledAnglesAverageAcrossTheZeroOneEightySeam) {
 TEST(ZoneDetectionTest, ZonesHaveTopBottomLengthAndMeanAzimuth) {
     using C = BoreholeClass;
     const std::vector<double> md{0, 1, 2, 3, 4, 5, 6};
-    const std::vector<C> cls{C::InGauge, C::Breakout, C::Breakout, C::InGauge, C::Washout, C::Washout, C::Washout};
-    const std::vector<double> az{0, 100, 110, 0, 0, 0, 0}, dmax{0, 240, 242, 0, 250, 250, 250}, dmin(7, 216.0);
+    const std::vector<C> cls{C::InGauge, C::Breakout, C::Breakout, C::InGauge,
+                             C::Washout, C::Washout,  C::Washout};
+    const std::vector<double> az{0, 100, 110, 0, 0, 0, 0}, dmax{0, 240, 242, 0, 250, 250, 250},
+        dmin(7, 216.0);
     const auto zones = detectZones(md, cls, az, dmax, dmin);
     ASSERT_EQ(zones.size(), 2u);
     EXPECT_EQ(zones[0].kind, C::Breakout);

@@ -92,10 +92,9 @@ TEST(LodLevelsTest, NeighbouringSegmentsShareTheirBoundaryRingAtEveryLevelPair) 
     // Every level ends a segment with the same full ring, so any two levels side by side
     // meet without a crack.
     GeometryOptions options;
-    const WellGeometry g(
-        std::make_shared<const SectionTable>(
-            makeSyntheticWell(syntheticProfile("example", 4.0, 0.0025))),
-        options);
+    const WellGeometry g(std::make_shared<const SectionTable>(
+                             makeSyntheticWell(syntheticProfile("example", 4.0, 0.0025))),
+                         options);
     ASSERT_GE(g.segmentCount(), 3u);
     const std::size_t ring = static_cast<std::size_t>(g.sampler().samples());
     for (std::size_t s = 0; s + 1 < g.segmentCount(); ++s) {

@@ -15,8 +15,10 @@ TEST(MeshTest, NSectionsOfMPointsGiveKnownCounts) {
     const int sections = 7, points = 48;
     Mesh mesh;
     mesh.positions.resize(static_cast<std::size_t>(sections * points));
-    for (int s = 1; s < sections; ++s) appendClosedStrip(mesh.stripIndices, (s - 1) * points, s * points, points);
-    EXPECT_EQ(mesh.stripIndices.size(), static_cast<std::size_t>((sections - 1) * (2 * points + 3)));
+    for (int s = 1; s < sections; ++s)
+        appendClosedStrip(mesh.stripIndices, (s - 1) * points, s * points, points);
+    EXPECT_EQ(mesh.stripIndices.size(),
+              static_cast<std::size_t>((sections - 1) * (2 * points + 3)));
     EXPECT_EQ(mesh.stripCount(), static_cast<std::size_t>(sections - 1));
     EXPECT_EQ(mesh.triangleCount(), static_cast<std::size_t>((sections - 1) * 2 * points));
     // Every strip starts and ends on the same pair of vertices: the tube is closed.

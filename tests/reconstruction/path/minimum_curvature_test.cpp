@@ -3,9 +3,9 @@
 #include <cmath>
 #include <vector>
 
+#include <gtest/gtest.h>
 #include <glm/gtc/constants.hpp>
 #include <glm/trigonometric.hpp>
-#include <gtest/gtest.h>
 
 using namespace caliper3d::reconstruction;
 
@@ -48,7 +48,8 @@ TEST(MinimumCurvatureTest, VerticalBuildHoldMatchesExactArc) {
 }
 
 TEST(MinimumCurvatureTest, TinyDoglegUsesSeriesWithoutLosingDigits) {
-    const MinimumCurvatureStep s = minimumCurvatureStep({0.0, 10.0, 50.0}, {0.0025, 10.0000001, 50.0});
+    const MinimumCurvatureStep s =
+        minimumCurvatureStep({0.0, 10.0, 50.0}, {0.0025, 10.0000001, 50.0});
     EXPECT_GT(s.dTvd, 0.0);
     EXPECT_NEAR(s.dTvd, 0.0025 * std::cos(glm::radians(10.0)), 1e-12);
 }

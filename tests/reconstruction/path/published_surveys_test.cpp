@@ -18,7 +18,9 @@ using namespace caliper3d::reconstruction;
 
 namespace {
 
-std::filesystem::path surveys() { return test::sharedData() / "surveys"; }
+std::filesystem::path surveys() {
+    return test::sharedData() / "surveys";
+}
 
 // Largest |computed - published| over the stations, relative to the first station.
 struct Misfit {

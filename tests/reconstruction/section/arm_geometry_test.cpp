@@ -11,7 +11,8 @@ using namespace caliper3d::reconstruction;
 
 TEST(ArmGeometryTest, SixArmsFollowTheReferenceTable) {
     const double expected[] = {0, 300, 240, 180, 120, 60};
-    for (int k = 1; k <= 6; ++k) EXPECT_DOUBLE_EQ(armToolAngle_deg(k, 6), expected[k - 1]) << "arm " << k;
+    for (int k = 1; k <= 6; ++k)
+        EXPECT_DOUBLE_EQ(armToolAngle_deg(k, 6), expected[k - 1]) << "arm " << k;
 }
 
 TEST(ArmGeometryTest, ArmOneLiesOnPlusXAndArmsGoClockwise) {

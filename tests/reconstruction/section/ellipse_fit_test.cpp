@@ -3,8 +3,8 @@
 #include <cmath>
 #include <vector>
 
-#include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/trigonometric.hpp>
 
 using namespace caliper3d::reconstruction;
 

@@ -3,10 +3,10 @@
 #include <cmath>
 #include <vector>
 
+#include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
 #include <glm/trigonometric.hpp>
-#include <gtest/gtest.h>
 
 #include "reconstruction/section/arm_geometry.h"
 #include "reconstruction/synthetic/synthetic_well.h"
@@ -27,7 +27,8 @@ TEST(PeriodicSplineTest, CyclicSolverMatchesDenseProduct) {
 TEST(PeriodicSplineTest, PassesThroughEveryPad) {
     const std::vector<double> pads{108.0, 112.5, 104.2, 109.9, 121.0, 107.3};
     PeriodicSpline spline(pads);
-    for (std::size_t k = 0; k < pads.size(); ++k) EXPECT_NEAR(spline(static_cast<double>(k)), pads[k], 1e-12);
+    for (std::size_t k = 0; k < pads.size(); ++k)
+        EXPECT_NEAR(spline(static_cast<double>(k)), pads[k], 1e-12);
     PeriodicSplineSampler sampler(6, 48);
     std::vector<double> out(48);
     sampler.sample(pads.data(), out.data());
@@ -61,7 +62,8 @@ std::vector<glm::dvec2> sampleSection(const std::vector<double>& pads, int sampl
     std::vector<glm::dvec2> pts;
     for (int j = 0; j < samples; ++j) {
         const double toolAngle = -glm::two_pi<double>() * j / samples;
-        pts.push_back(r[static_cast<std::size_t>(j)] * glm::dvec2(std::cos(toolAngle), std::sin(toolAngle)));
+        pts.push_back(r[static_cast<std::size_t>(j)] *
+                      glm::dvec2(std::cos(toolAngle), std::sin(toolAngle)));
     }
     return pts;
 }
@@ -83,7 +85,8 @@ TEST(PeriodicSplineTest, CircleFromSixPadsStaysWithinHalfPercent) {
         pads.push_back(b + std::sqrt(b * b - glm::dot(centre, centre) + radius * radius));
     }
     double worst = 0.0;
-    for (const glm::dvec2& p : sampleSection(pads, 360)) worst = std::max(worst, circleError(p, centre, radius));
+    for (const glm::dvec2& p : sampleSection(pads, 360))
+        worst = std::max(worst, circleError(p, centre, radius));
     EXPECT_LT(worst, 0.005);
 }
 

@@ -16,7 +16,8 @@ TEST(SectionAnalysisTest, CircleOfBitSizeHasItsAreaAndDiameter) {
     const SectionShape s = analyzer.analyse(pads.data(), sampled.data());
     // The 48-gon inscribed in the circle: area = 24 r^2 sin(2 pi / 48).
     EXPECT_NEAR(s.area_mm2, 24.0 * 107.95 * 107.95 * std::sin(2 * M_PI / 48), 1e-6);
-    EXPECT_NEAR(s.equivalentDiameter_mm, 215.9 * std::sqrt(24.0 / M_PI * std::sin(2 * M_PI / 48)), 1e-9);
+    EXPECT_NEAR(s.equivalentDiameter_mm, 215.9 * std::sqrt(24.0 / M_PI * std::sin(2 * M_PI / 48)),
+                1e-9);
     EXPECT_NEAR(s.dmax_mm, 215.9, 1e-6);
     EXPECT_NEAR(s.dmin_mm, 215.9, 1e-6);
     EXPECT_NEAR(s.centreOffset_mm, 0.0, 1e-9);
@@ -42,7 +43,8 @@ TEST(SectionAnalysisTest, OffCentreToolGivesTheOffsetOfTheHoleCentre) {
     std::vector<double> pads(n);
     for (int k = 0; k < n; ++k) {
         const double phi = 2 * M_PI * k / n, c = 15.5;
-        pads[k] = c * std::cos(phi) + std::sqrt(127.0 * 127.0 - c * c * std::sin(phi) * std::sin(phi));
+        pads[k] =
+            c * std::cos(phi) + std::sqrt(127.0 * 127.0 - c * c * std::sin(phi) * std::sin(phi));
     }
     const SectionAnalyzer analyzer(n, 48);
     std::vector<double> sampled(48);

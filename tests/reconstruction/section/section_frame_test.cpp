@@ -2,10 +2,10 @@
 
 #include <cmath>
 
+#include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
 #include <glm/trigonometric.hpp>
-#include <gtest/gtest.h>
 
 using namespace caliper3d::reconstruction;
 
@@ -44,8 +44,8 @@ TEST(SectionFrameTest, RelativeBearingZeroIsHighSideNinetyIsRight) {
     // Hole inclined 30 degrees towards north: the high side leans back south and up.
     const SectionFrame f = frameFromRelativeBearing(30.0, 0.0, 0.0);
     expectOrthonormal(f);
-    EXPECT_LT(f.arm1.z, 0.0);                                // points up
-    EXPECT_NEAR(f.arm1.y, 0.0, 1e-12);                       // in the vertical plane of the hole
+    EXPECT_LT(f.arm1.z, 0.0);           // points up
+    EXPECT_NEAR(f.arm1.y, 0.0, 1e-12);  // in the vertical plane of the hole
     EXPECT_NEAR(f.arm1.x, std::cos(glm::radians(30.0)), 1e-12);
     // RB 90: clockwise looking down a north-going hole is east.
     const SectionFrame g = frameFromRelativeBearing(30.0, 0.0, 90.0);
@@ -60,7 +60,8 @@ TEST(SectionFrameTest, PadAzimuthEqualsHoleAzimuthPlusRelativeBearingWhenSteep) 
 }
 
 TEST(SectionFrameTest, SceneFrameIsEastUpSouth) {
-    const glm::dvec3 north = toScene({1, 0, 0}), east = toScene({0, 1, 0}), down = toScene({0, 0, 1});
+    const glm::dvec3 north = toScene({1, 0, 0}), east = toScene({0, 1, 0}),
+                     down = toScene({0, 0, 1});
     EXPECT_EQ(north, glm::dvec3(0, 0, -1));
     EXPECT_EQ(east, glm::dvec3(1, 0, 0));
     EXPECT_EQ(down, glm::dvec3(0, -1, 0));
