@@ -1,7 +1,8 @@
 # Thin wrapper over CMake + Ninja. The README's two commands:
 #   make run    build Release and open the GUI on the bundled example
 #               (with no display: write out/example.iv and out/example.png)
-#   make test   build with AddressSanitizer + UBSan and run every test under xvfb-run, then
+#   make test   build with AddressSanitizer + UBSan and run every test under xvfb-run (the
+#               layer and format checks among them), run clang-tidy over the sources, then
 #               build the io libFuzzer targets with clang and run each for FUZZ_SECONDS
 BUILD_RELEASE ?= build/release
 BUILD_ASAN    ?= build/asan
@@ -29,6 +30,7 @@ asan: deps
 
 test: asan
 	scripts/run-tests.sh $(BUILD_ASAN)
+	scripts/check-tidy.sh $(BUILD_ASAN)
 	scripts/run-fuzzers.sh $(FUZZ_SECONDS)
 
 # The fuzz half of `make test` alone.

@@ -164,6 +164,44 @@ void readVersionAndNull(LasHeader& header, const Warn& warn) {
     }
 }
 
+// One item line of a header section, stored in its section's list. Outside ~C a line that
+// is not an item is skipped with a warning; inside ~C it is refused.
+template <typename Warn>
+void addItem(LasHeader& header, Section section, std::string_view line, std::size_t lineNumber,
+             const Warn& warn) {
+    const std::string& file = header.file;
+    LasItem item;
+    item.line = lineNumber;
+    if (!splitLasItem(line, item)) {
+        // Outside ~C a bad line can be skipped safely; inside, every later
+        // column would shift onto the wrong curve.
+        if (section != Section::Curves) {
+            warn(lineNumber, "header line without 'MNEM.UNIT' skipped: '" +
+                                 std::string(line.substr(0, 60)) + "'");
+            return;
+        }
+        throw ParseError(file, lineNumber, 1,
+                         "expected a header line 'MNEM.UNIT VALUE : DESCRIPTION', found '" +
+                             std::string(line.substr(0, 60)) + "'");
+    }
+    switch (section) {
+        case Section::Version:
+            header.versionItems.push_back(item);
+            break;
+        case Section::Well:
+            header.well.push_back(item);
+            break;
+        case Section::Curves:
+            header.curves.push_back(item);
+            break;
+        case Section::Parameters:
+            header.parameters.push_back(item);
+            break;
+        default:
+            break;
+    }
+}
+
 }  // namespace
 
 LasHeader parseLasHeader(std::string_view text, const std::string& file, Diagnostics* diagnostics) {
@@ -241,36 +279,7 @@ LasHeader parseLasHeader(std::string_view text, const std::string& file, Diagnos
             continue;
         }
         if (section == Section::Ignored) continue;
-        LasItem item;
-        item.line = lineNumber;
-        if (!splitLasItem(line, item)) {
-            // Outside ~C a bad line can be skipped safely; inside, every later
-            // column would shift onto the wrong curve.
-            if (section != Section::Curves) {
-                warn(lineNumber, "header line without 'MNEM.UNIT' skipped: '" +
-                                     std::string(line.substr(0, 60)) + "'");
-                continue;
-            }
-            throw ParseError(file, lineNumber, 1,
-                             "expected a header line 'MNEM.UNIT VALUE : DESCRIPTION', found '" +
-                                 std::string(line.substr(0, 60)) + "'");
-        }
-        switch (section) {
-            case Section::Version:
-                header.versionItems.push_back(item);
-                break;
-            case Section::Well:
-                header.well.push_back(item);
-                break;
-            case Section::Curves:
-                header.curves.push_back(item);
-                break;
-            case Section::Parameters:
-                header.parameters.push_back(item);
-                break;
-            default:
-                break;
-        }
+        addItem(header, section, line, lineNumber, warn);
     }
     if (!sawSection)
         throw ParseError(file, 1, 1,
