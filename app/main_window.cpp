@@ -17,11 +17,17 @@
 
 #include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
 #include <Inventor/actions/SoGetBoundingBoxAction.h>
+#include <optional>
+
+#include <glm/vec3.hpp>
+
 #include <Inventor/nodes/SoCamera.h>
+#include <Inventor/nodes/SoPerspectiveCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 #include "reconstruction/load/well_load_pipeline.h"
 #include "scenegraph/camera_setup.h"
+#include "scenegraph/detail_loader.h"
 #include "scenegraph/iv_export.h"
 #include "scenegraph/segment_feeder.h"
 #include "scenegraph/well_scene.h"
@@ -39,6 +45,19 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_sceneRoot = new SoSeparator;
     m_sceneRoot->ref();
     m_viewer->setSceneGraph(m_sceneRoot);
+    // Full detail near the camera, built on a worker as the camera moves.
+    m_detail = std::make_unique<scenegraph::DetailLoader>(
+        [this]() -> std::optional<scenegraph::DetailView> {
+            auto* camera = dynamic_cast<SoPerspectiveCamera*>(m_viewer->getCamera());
+            if (!camera) return std::nullopt;
+            const SbVec3f eye = camera->position.getValue();
+            scenegraph::DetailView view;
+            view.eye = glm::vec3(eye[0], eye[1], eye[2]);
+            view.lod =
+                scenegraph::lodViewFor(m_viewer->getViewportRegion().getViewportSizePixels()[1],
+                                       camera->heightAngle.getValue());
+            return view;
+        });
     m_status = new QLabel("No well loaded", this);
     statusBar()->addWidget(m_status, 1);
     m_warningsButton = new QPushButton(this);
@@ -52,6 +71,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
 MainWindow::~MainWindow() {
     // Stop the workers before the nodes and the viewer go.
+    m_detail.reset();
     m_wells.clear();
     m_viewer->setSceneGraph(nullptr);
     m_sceneRoot->unref();
@@ -134,6 +154,7 @@ void MainWindow::openWell(const QString& path, const LoadOptions& options) {
 }
 
 void MainWindow::openWell(const WellSource& source, const LoadOptions& options) {
+    m_detail->removeAll();
     m_wells.clear();
     m_sceneRoot->removeAllChildren();
     updateWarningsButton();
@@ -164,6 +185,9 @@ void MainWindow::addWell(const WellSource& source, const LoadOptions& options) {
     setWindowTitle(m_wells.size() == 1 ? "caliper3d - " + name
                                        : QString("caliper3d - %1 wells").arg(m_wells.size()));
     scenegraph::SegmentFeeder::Callbacks callbacks;
+    callbacks.geometry = [this, &w](std::shared_ptr<const reconstruction::WellGeometry> g) {
+        m_detail->addWell(*w.scene, std::move(g));
+    };
     callbacks.warnings = [this, &w](const io::Diagnostics& diagnostics) {
         w.diagnostics = diagnostics;
         updateWarningsButton();
@@ -243,6 +267,7 @@ void MainWindow::setExaggeration(double factor) {
     std::vector<std::pair<WellSource, LoadOptions>> shown;
     for (const auto& well : m_wells) shown.emplace_back(well->source, well->options);
     if (shown.empty()) return;
+    m_detail->removeAll();
     m_wells.clear();
     m_sceneRoot->removeAllChildren();
     updateWarningsButton();

@@ -17,6 +17,7 @@ namespace caliper3d::reconstruction {
 class WellLoadPipeline;
 }
 namespace caliper3d::scenegraph {
+class DetailLoader;
 class SegmentFeeder;
 class WellScene;
 }  // namespace caliper3d::scenegraph
@@ -65,6 +66,7 @@ private:
     void updateWarningsButton();
 
     SoQtExaminerViewer* m_viewer = nullptr;
+    std::unique_ptr<scenegraph::DetailLoader> m_detail;
     SoSeparator* m_sceneRoot = nullptr;
     QLabel* m_status = nullptr;
     QPushButton* m_warningsButton = nullptr;  // "N warnings": opens the list

@@ -34,6 +34,7 @@ bool SegmentFeeder::drainOnce() {
         if (auto* started = std::get_if<reconstruction::LoadStarted>(&event)) {
             m_scene.setPath(*started->geometry);
             if (m_callbacks.started) m_callbacks.started(*started->geometry);
+            if (m_callbacks.geometry) m_callbacks.geometry(started->geometry);
             if (m_callbacks.warnings) m_callbacks.warnings(started->diagnostics);
         } else if (auto* segment = std::get_if<reconstruction::SegmentMesh>(&event)) {
             m_scene.addSegment(*segment);

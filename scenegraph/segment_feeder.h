@@ -22,6 +22,8 @@ class SegmentFeeder {
 public:
     struct Callbacks {
         std::function<void(const reconstruction::WellGeometry&)> started;
+        // The same geometry, shared: for workers that build more of it (DetailLoader).
+        std::function<void(std::shared_ptr<const reconstruction::WellGeometry>)> geometry;
         // The well's warnings (reader, survey, geometry), once, with `started`.
         std::function<void(const io::Diagnostics&)> warnings;
         std::function<void(std::size_t segmentsAttached)> progress;

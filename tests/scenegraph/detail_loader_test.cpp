@@ -1,0 +1,70 @@
+// The window's full detail near the camera: a DetailWorker builds, the DetailLoader's timer
+// (pumped here on the main thread) attaches, as the camera moves.
+#include "scenegraph/detail_loader.h"
+
+#include <chrono>
+#include <memory>
+#include <optional>
+#include <thread>
+
+#include <Inventor/SoDB.h>
+#include <Inventor/sensors/SoSensorManager.h>
+
+#include "coin_fixture.h"
+#include "reconstruction/mesh/lod_levels.h"
+#include "reconstruction/synthetic/synthetic_well.h"
+#include "reconstruction/well_geometry.h"
+#include "scenegraph/well_scene.h"
+
+using namespace caliper3d;
+
+namespace {
+class DetailLoaderTest : public CoinTest {
+protected:
+    // Ticks the loader (as its timer would) until it has nothing left to do.
+    static bool settle(scenegraph::DetailLoader& loader) {
+        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+        while (std::chrono::steady_clock::now() < deadline) {
+            if (loader.tick()) return true;
+            std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        }
+        return false;
+    }
+};
+}  // namespace
+
+TEST_F(DetailLoaderTest, FinerLevelsFollowTheCameraWithinTheBudget) {
+    const auto geometry = std::make_shared<const reconstruction::WellGeometry>(
+        std::make_shared<const io::SectionTable>(reconstruction::makeSyntheticWell(
+            reconstruction::syntheticProfile("circle", 30.0, 0.0025))),
+        reconstruction::GeometryOptions{});
+    scenegraph::WellScene scene;
+    scene.buildAll(*geometry);
+    std::optional<scenegraph::DetailView> camera;  // none yet: nothing asked
+    const std::size_t budget = 300'000;
+    scenegraph::DetailLoader loader([&] { return camera; }, budget);
+    loader.addWell(scene, geometry);
+    ASSERT_TRUE(settle(loader));
+    EXPECT_EQ(scene.fineTriangles(), 0u);
+
+    camera = scenegraph::DetailView{{0.0f, -2.5f, 0.0f}, scenegraph::lodViewFor(800, 0.8f)};
+    ASSERT_TRUE(settle(loader));
+    EXPECT_EQ(scene.heldFrom(2), 0);  // the eye's segment, at full detail
+    EXPECT_EQ(scene.heldFrom(29), reconstruction::kFirstCoarseLevel);
+    EXPECT_LE(scene.fineTriangles(), budget);
+    // Room for one view's detail, not two: the next view's must push this one out (what the
+    // current view needs is never dropped, so the budget is set a little above it).
+    ASSERT_GT(scene.fineTriangles(), 0u);
+    loader.setBudgetTriangles(scene.fineTriangles() * 11 / 10);
+
+    camera->eye = {0.0f, -25.5f, 0.0f};
+    ASSERT_TRUE(settle(loader));
+    EXPECT_EQ(scene.heldFrom(25), 0);
+    EXPECT_LE(scene.fineTriangles(), loader.budgetTriangles());
+    EXPECT_EQ(scene.heldFrom(2), reconstruction::kFirstCoarseLevel);  // dropped: over budget
+
+    loader.removeAll();  // the scene may go now; the worker's results are ignored
+    camera->eye = {0.0f, -10.5f, 0.0f};
+    EXPECT_TRUE(settle(loader));
+    EXPECT_EQ(scene.heldFrom(10), reconstruction::kFirstCoarseLevel);
+}
