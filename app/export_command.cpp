@@ -13,7 +13,11 @@ namespace caliper3d::app {
 
 int runExport(const QStringList& args) {
     return guardedVerb("export", [&]() -> int {
-        VerbParser verb("export", "FILE... -o OUT.iv", "Export wells as an Open Inventor scene.");
+        VerbParser verb("export", "FILE... -o OUT.iv",
+                        "Export wells as an Open Inventor scene: per segment an SoLOD with the "
+                        "coarse levels the window loads up front (sections kept by shape error, "
+                        "12-point rings and the raw N-gon; see --shape-tolerance), and the path. "
+                        "Full detail is built near a camera only, and is not written.");
         QCommandLineParser& p = verb.parser();
         p.addOption({{"o", "output"},
                      "Output file: .iv, or .iv.gz for a gzip-compressed scene (as --gzip).",

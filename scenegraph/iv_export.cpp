@@ -1,5 +1,7 @@
 #include "scenegraph/iv_export.h"
 
+#include <cstdio>
+#include <cstdlib>
 #include <stdexcept>
 
 #include <Inventor/SoDB.h>
@@ -16,18 +18,42 @@
 
 namespace caliper3d::scenegraph {
 
+namespace {
+void* growBuffer(void* buffer, std::size_t size) {
+    return std::realloc(buffer, size);
+}
+}  // namespace
+
 void writeIv(SoNode* scene, const std::string& path, const IvExportOptions& options) {
     assertMainThread("writeIv");
     SoOutput out;
     out.setBinary(options.binary ? TRUE : FALSE);
-    // Compression must be chosen before openFile(), or Coin ignores it.
-    if (options.gzip && !out.setCompression("GZIP", 0.6f))
-        throw std::runtime_error(path + ": this Coin build cannot write compressed files");
-    if (!out.openFile(path.c_str()))
-        throw std::runtime_error(path + ": cannot open file for writing");
+    if (options.gzip) {
+        // Compression must be chosen before openFile(), or Coin ignores it.
+        if (!out.setCompression("GZIP", 0.6f))
+            throw std::runtime_error(path + ": this Coin build cannot write compressed files");
+        if (!out.openFile(path.c_str()))
+            throw std::runtime_error(path + ": cannot open file for writing");
+        SoWriteAction write(&out);
+        write.apply(scene);
+        out.closeFile();
+        return;
+    }
+    // Into memory, then one write: Coin writes a binary file a value at a time, each its own
+    // stdio call, 5-6 times slower than the text it replaces.
+    std::FILE* file = std::fopen(path.c_str(), "wb");
+    if (!file) throw std::runtime_error(path + ": cannot open file for writing");
+    void* start = std::malloc(1u << 20);
+    out.setBuffer(start, 1u << 20, &growBuffer);
     SoWriteAction write(&out);
     write.apply(scene);
-    out.closeFile();
+    void* buffer = nullptr;
+    std::size_t size = 0;
+    out.getBuffer(buffer, size);
+    const bool written = std::fwrite(buffer, 1, size, file) == size;
+    std::free(buffer);
+    if (std::fclose(file) != 0 || !written)
+        throw std::runtime_error(path + ": cannot write the file (disk full?)");
 }
 
 SoNode* readIv(const std::string& path) {
