@@ -41,8 +41,8 @@ LoadedWell loadWell(const WellSource& source, const LoadOptions& options, const 
         geometry.survey = surveyStations(
             readCheckedSurvey(source.surveyPath, options.read, &out.diagnostics).table);
     if (source.wellhead) geometry.wellheadOffset = wellheadOffset(*source.wellhead, origin);
-    out.table = std::make_shared<const io::SectionTable>(
-        loadWellTable(source.path, options.read, !source.surveyPath.empty(), &out.diagnostics));
+    out.table = std::make_shared<const io::SectionTable>(loadWellTable(
+        source.path, options.read, !source.surveyPath.empty(), &out.diagnostics, options.cancel));
     out.geometry = std::make_shared<const WellGeometry>(out.table, geometry);
     if (options.geometryWarnings) warnGeometry(*out.geometry, out.diagnostics);
     return out;

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <atomic>
+
 #include <memory>
 #include <optional>
 #include <string>
@@ -41,6 +43,8 @@ struct LoadOptions {
     // warnAnalysis's instead: the same warnings from the analysis's counts,
     // without a second scan of every row.
     bool geometryWarnings = true;
+    // Set from another thread, stops the log's read within a block (io::ReadCancelled).
+    const std::atomic<bool>* cancel = nullptr;
 };
 
 // A loaded well: its table, its geometry (path and frames; segments are built

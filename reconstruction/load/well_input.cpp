@@ -7,8 +7,11 @@
 namespace caliper3d::reconstruction {
 
 io::SectionTable loadWellTable(const std::string& path, const io::ReadOptions& options,
-                               bool surveyGiven, io::Diagnostics* diagnostics) {
-    io::LoadedLog loaded = io::loadCaliperLog(path, options);
+                               bool surveyGiven, io::Diagnostics* diagnostics,
+                               const std::atomic<bool>* cancel) {
+    io::StreamOptions stream;
+    stream.cancel = cancel;  // checked per block: ReadCancelled
+    io::LoadedLog loaded = io::loadCaliperLog(path, options, stream);
     if (loaded.table.armCount == 0)
         throw io::ParseError(path, 0, 0,
                              "expected caliper curves (radii R1..Rn, RAD1..n, fingers F01..Fnn, "

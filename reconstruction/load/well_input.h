@@ -1,5 +1,7 @@
 #pragma once
 
+#include <atomic>
+
 #include <string>
 
 #include "io/diagnostics.h"
@@ -16,6 +18,7 @@ namespace caliper3d::reconstruction {
 // io::ParseError naming file, line and what was expected; the log's warnings
 // go to `diagnostics`.
 io::SectionTable loadWellTable(const std::string& path, const io::ReadOptions& options,
-                               bool surveyGiven, io::Diagnostics* diagnostics);
+                               bool surveyGiven, io::Diagnostics* diagnostics,
+                               const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace caliper3d::reconstruction

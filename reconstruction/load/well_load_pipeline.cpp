@@ -1,5 +1,6 @@
 #include "reconstruction/load/well_load_pipeline.h"
 
+#include "io/log_reader.h"
 #include "reconstruction/mesh/lod_levels.h"
 
 #include <exception>
@@ -9,9 +10,11 @@ namespace caliper3d::reconstruction {
 WellLoadPipeline::WellLoadPipeline(Loader loader) : m_loader(std::move(loader)) {}
 
 WellLoadPipeline::WellLoadPipeline(WellSource source, LoadOptions options, Wellhead origin)
-    : WellLoadPipeline([source = std::move(source), options = std::move(options), origin] {
-          return loadWell(source, options, origin);
-      }) {}
+    : WellLoadPipeline(
+          [this, source = std::move(source), options = std::move(options), origin]() mutable {
+              options.cancel = &m_cancelled;  // a cancel stops the read too, within a block
+              return loadWell(source, options, origin);
+          }) {}
 
 WellLoadPipeline::WellLoadPipeline(Reader reader, GeometryOptions options)
     : WellLoadPipeline([reader = std::move(reader), options = std::move(options)] {
@@ -42,6 +45,8 @@ void WellLoadPipeline::run() {
             ++built;
         }
         m_events.push(LoadFinished{built});
+    } catch (const io::ReadCancelled&) {
+        m_events.push(LoadFinished{0});  // cancelled while reading: nothing was shown
     } catch (const std::exception& e) {
         m_events.push(LoadFailed{e.what()});
     }
