@@ -1,5 +1,8 @@
 #include "scenegraph/offscreen_renderer.h"
 
+#include <algorithm>
+#include <chrono>
+
 #include <cstring>
 #include <stdexcept>
 
@@ -65,6 +68,19 @@ OffscreenRenderer::~OffscreenRenderer() = default;
 
 RenderedImage OffscreenRenderer::render(SoNode* scene, int width, int height,
                                         const float background[3]) {
+    return draw(scene, width, height, background, 0, nullptr);
+}
+
+double OffscreenRenderer::timeFrames(SoNode* scene, int width, int height,
+                                     const float background[3], int frames) {
+    double ms = 0.0;
+    draw(scene, width, height, background, std::max(frames, 1), &ms);
+    return ms;
+}
+
+RenderedImage OffscreenRenderer::draw(SoNode* scene, int width, int height,
+                                      const float background[3], int timedFrames,
+                                      double* frameMs) {
     assertMainThread("OffscreenRenderer::render");
     if (!m_context) {
         auto c = std::make_unique<Context>();
@@ -146,6 +162,19 @@ RenderedImage OffscreenRenderer::render(SoNode* scene, int width, int height,
     for (int y = 0; y < height; ++y)
         std::memcpy(&image.rgba[static_cast<std::size_t>(y) * stride],
                     &bottomUp[static_cast<std::size_t>(height - 1 - y) * stride], stride);
+
+    if (frameMs && timedFrames > 0) {
+        const auto start = std::chrono::steady_clock::now();
+        for (int i = 0; i < timedFrames; ++i) {
+            glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+            action.apply(scene);
+            glFinish();
+        }
+        *frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
+                                                             start)
+                       .count() /
+                   timedFrames;
+    }
 
     c.bindFramebuffer(GL_FRAMEBUFFER, 0);
     c.deleteRenderbuffers(2, buffers);

@@ -32,8 +32,14 @@ public:
 
     // Throws std::runtime_error saying what failed (no EGL, no context, ...).
     RenderedImage render(SoNode* scene, int width, int height, const float background[3]);
+    // Renders the picture as render() does, then draws it `frames` more times into the same
+    // framebuffer (no read-back) and returns the mean time of one of those frames, in ms.
+    double timeFrames(SoNode* scene, int width, int height, const float background[3],
+                      int frames);
 
 private:
+    RenderedImage draw(SoNode* scene, int width, int height, const float background[3],
+                       int timedFrames, double* frameMs);
     struct Context;
     std::unique_ptr<Context> m_context;
 };
