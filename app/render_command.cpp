@@ -101,8 +101,8 @@ int runRender(const QStringList& args) {
         const auto firstPicture = std::chrono::steady_clock::now();
         savePng(image, out);
         if (verb.isSet("stats")) {
-            const double frameMs = renderer.timeFrames(root.get(), width, height,
-                                                       scenegraph::kBackgroundColour, 5);
+            const double frameMs =
+                renderer.timeFrames(root.get(), width, height, scenegraph::kBackgroundColour, 5);
             using Ms = std::chrono::duration<double, std::milli>;
             std::printf(
                 "triangles_drawn=%zu frame_ms=%.1f rss_mb=%.0f first_picture_ms=%.0f "

@@ -79,8 +79,7 @@ double OffscreenRenderer::timeFrames(SoNode* scene, int width, int height,
 }
 
 RenderedImage OffscreenRenderer::draw(SoNode* scene, int width, int height,
-                                      const float background[3], int timedFrames,
-                                      double* frameMs) {
+                                      const float background[3], int timedFrames, double* frameMs) {
     assertMainThread("OffscreenRenderer::render");
     if (!m_context) {
         auto c = std::make_unique<Context>();
@@ -170,10 +169,10 @@ RenderedImage OffscreenRenderer::draw(SoNode* scene, int width, int height,
             action.apply(scene);
             glFinish();
         }
-        *frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() -
-                                                             start)
-                       .count() /
-                   timedFrames;
+        *frameMs =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count() /
+            timedFrames;
     }
 
     c.bindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -34,8 +34,7 @@ public:
     RenderedImage render(SoNode* scene, int width, int height, const float background[3]);
     // Renders the picture as render() does, then draws it `frames` more times into the same
     // framebuffer (no read-back) and returns the mean time of one of those frames, in ms.
-    double timeFrames(SoNode* scene, int width, int height, const float background[3],
-                      int frames);
+    double timeFrames(SoNode* scene, int width, int height, const float background[3], int frames);
 
 private:
     RenderedImage draw(SoNode* scene, int width, int height, const float background[3],

@@ -44,8 +44,10 @@ std::size_t MemorySource::read(char* to, std::size_t n) {
     return n;
 }
 
+// No bigger than the text (a small file or a fuzzer's input needs no 8 MiB block).
 BlockReader::BlockReader(TextSource& source, std::size_t blockBytes)
-    : m_source(source), m_buffer(std::max<std::size_t>(blockBytes, 4096)) {}
+    : m_source(source),
+      m_buffer(std::max<std::size_t>(std::min(blockBytes, source.size() + 1), 4096)) {}
 
 std::string_view BlockReader::next() {
     std::memmove(m_buffer.data(), m_buffer.data() + m_begin, m_end - m_begin);
