@@ -90,11 +90,7 @@ int runRender(const QStringList& args) {
             root = scenegraph::makeRef(
                 scenegraph::makeRenderRoot(scene.root.get(), *view, width, height));
         }
-        auto* camera = static_cast<SoPerspectiveCamera*>(scenegraph::findCamera(root.get()));
-        const SbVec3f eye = camera->position.getValue();
-        refineForView(scene, glm::vec3(eye[0], eye[1], eye[2]),
-                      scenegraph::lodViewFor(height, camera->heightAngle.getValue(),
-                                             static_cast<float>(tolerance)));
+        refineForCamera(scene, root.get(), height, static_cast<float>(tolerance));
         scenegraph::OffscreenRenderer renderer;
         const scenegraph::RenderedImage image =
             renderer.render(root.get(), width, height, scenegraph::kBackgroundColour);

@@ -8,12 +8,14 @@
 #include <thread>
 #include <vector>
 
+#include <Inventor/nodes/SoPerspectiveCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 #include "io/parse_error.h"
 #include "reconstruction/load/load_well.h"
 #include "reconstruction/mesh/lod_levels.h"
 #include "reconstruction/well_geometry.h"
+#include "scenegraph/render_stats.h"
 #include "scenegraph/well_scene.h"
 
 namespace caliper3d::app {
@@ -80,6 +82,16 @@ std::size_t refineForView(AssembledScene& scene, const glm::vec3& eye,
         refined += wanted.size();
     }
     return refined;
+}
+
+std::size_t refineForCamera(AssembledScene& scene, SoNode* renderRoot, int height,
+                            float pixelTolerance) {
+    auto* camera = dynamic_cast<SoPerspectiveCamera*>(scenegraph::findCamera(renderRoot));
+    if (!camera) return 0;
+    const SbVec3f eye = camera->position.getValue();
+    return refineForView(
+        scene, glm::vec3(eye[0], eye[1], eye[2]),
+        scenegraph::lodViewFor(height, camera->heightAngle.getValue(), pixelTolerance));
 }
 
 scenegraph::CameraPose downHolePose(const reconstruction::WellGeometry& geometry, double md_m) {

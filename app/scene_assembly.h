@@ -12,6 +12,7 @@
 #include "scenegraph/node_ref.h"
 #include "scenegraph/well_scene.h"
 
+class SoNode;
 class SoSeparator;
 
 namespace caliper3d::app {
@@ -37,6 +38,11 @@ AssembledScene assembleScene(const std::vector<std::string>& files, const LoadOp
 // done at once for one picture. Returns the segments refined.
 std::size_t refineForView(AssembledScene& scene, const glm::vec3& eye,
                           const scenegraph::LodView& view);
+
+// refineForView from the first camera under `renderRoot` (a root made by
+// scenegraph::makeRenderRoot over scene.root) for a picture `height` pixels high.
+std::size_t refineForCamera(AssembledScene& scene, SoNode* renderRoot, int height,
+                            float pixelTolerance = 2.0f);
 
 // The fly-through view: a camera on the first well's axis at measured depth
 // `md_m`, looking down the hole, high side up.

@@ -12,8 +12,10 @@
 #include "app/png_output.h"
 #include "app/scene_assembly.h"
 #include "app/verb_parser.h"
+#include "scenegraph/camera_setup.h"
 #include "scenegraph/iv_export.h"
 #include "scenegraph/main_thread.h"
+#include "scenegraph/node_ref.h"
 
 namespace caliper3d::app {
 
@@ -83,8 +85,10 @@ int runDefault(int argc, char** argv) {
         scenegraph::writeIv(scene.root.get(), "out/example.iv");
         // Looking down the hole from just above the example's breakout (60-80 m):
         // the elongated lobes show in colour; a whole-well view is a thin line.
-        renderToPng(scene.root.get(), "out/example.png", 1024, 768,
-                    downHolePose(*scene.geometries.front(), 59.0));
+        auto hole = scenegraph::makeRef(scenegraph::makeRenderRoot(
+            scene.root.get(), downHolePose(*scene.geometries.front(), 59.0)));
+        refineForCamera(scene, hole.get(), 768);  // full detail near the eye
+        detail::renderRootToPng(hole.get(), "out/example.png", 1024, 768);
         // And the whole well, radii drawn 50 times larger so it is more than a line.
         LoadOptions overview = exampleOptions();
         overview.radialExaggeration = 50.0;
