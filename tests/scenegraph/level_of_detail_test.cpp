@@ -91,7 +91,9 @@ TEST_F(LevelOfDetailTest, SwitchesFollowTheProjectedSizeNotAFixedDistance) {
     for (std::size_t i = 0; i < base.size(); ++i) {
         EXPECT_NEAR(tall[i] - segment.radius, 2.0f * (base[i] - segment.radius), 1e-3f) << i;
         EXPECT_NEAR(narrow[i] - segment.radius, 2.0f * (base[i] - segment.radius), 1e-3f) << i;
-        if (i > 0) EXPECT_GE(base[i], base[i - 1]);
+        if (i > 0) {
+            EXPECT_GE(base[i], base[i - 1]);
+        }
     }
     EXPECT_EQ(scenegraph::lodLevelAt(base, 0.0f), 0);
     EXPECT_EQ(scenegraph::lodLevelAt(base, base.back() + 1.0f),
