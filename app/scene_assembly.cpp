@@ -89,9 +89,10 @@ std::size_t refineForCamera(AssembledScene& scene, SoNode* renderRoot, int heigh
     auto* camera = dynamic_cast<SoPerspectiveCamera*>(scenegraph::findCamera(renderRoot));
     if (!camera) return 0;
     const SbVec3f eye = camera->position.getValue();
-    return refineForView(
-        scene, glm::vec3(eye[0], eye[1], eye[2]),
-        scenegraph::lodViewFor(height, camera->heightAngle.getValue(), pixelTolerance));
+    scenegraph::LodView view =
+        scenegraph::lodViewFor(height, camera->heightAngle.getValue(), pixelTolerance);
+    view.visibility_m = scenegraph::fogVisibility(renderRoot);
+    return refineForView(scene, glm::vec3(eye[0], eye[1], eye[2]), view);
 }
 
 scenegraph::CameraPose downHolePose(const reconstruction::WellGeometry& geometry, double md_m) {

@@ -6,6 +6,7 @@
 #include <Inventor/actions/SoGetPrimitiveCountAction.h>
 #include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/nodes/SoCamera.h>
+#include <Inventor/nodes/SoEnvironment.h>
 
 #include "scenegraph/main_thread.h"
 
@@ -19,6 +20,20 @@ SoCamera* findCamera(SoNode* root) {
     search.apply(root);
     SoPath* path = search.getPath();
     return path ? static_cast<SoCamera*>(path->getTail()) : nullptr;
+}
+
+float fogVisibility(SoNode* root) {
+    assertMainThread("fogVisibility");
+    SoSearchAction search;
+    search.setType(SoEnvironment::getClassTypeId());
+    search.setInterest(SoSearchAction::FIRST);
+    search.apply(root);
+    SoPath* path = search.getPath();
+    if (!path) return 0.0f;
+    const auto* environment = static_cast<SoEnvironment*>(path->getTail());
+    return environment->fogType.getValue() == SoEnvironment::NONE
+               ? 0.0f
+               : environment->fogVisibility.getValue();
 }
 
 std::size_t trianglesDrawn(SoNode* root, int width, int height) {

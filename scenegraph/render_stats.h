@@ -10,6 +10,9 @@ namespace caliper3d::scenegraph {
 // The first camera under `root` (nullptr when none).
 SoCamera* findCamera(SoNode* root);
 
+// The visibility of the first haze fog under `root` (SoEnvironment), metres; 0 when none.
+float fogVisibility(SoNode* root);
+
 // Triangles a render of `root` (camera included) at width x height draws: SoLOD picks its
 // child from the camera as when rendering (SoGetPrimitiveCountAction).
 std::size_t trianglesDrawn(SoNode* root, int width, int height);

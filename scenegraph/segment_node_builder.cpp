@@ -59,7 +59,8 @@ std::vector<float> lodSwitchDistances(const reconstruction::SegmentMesh& segment
         const float error_mm =
             i + 1 < levels ? segment.levelError_mm[i + 1] : 2000.0f * segment.maxRadius_m;
         previous = std::max(previous, error_mm * scale + segment.radius);
-        out[i] = previous;
+        out[i] = view.visibility_m > 0.0f ? std::min(previous, view.visibility_m + segment.radius)
+                                          : previous;
     }
     return out;
 }

@@ -21,6 +21,7 @@ SoIndexedTriangleStripSet* makeStripSet(const reconstruction::Mesh& mesh);
 struct LodView {
     float focal_px = 966.0f;  // 800 pixels high, 45 degrees
     float pixelTolerance = 2.0f;
+    float visibility_m = 0.0f;  // haze fog: nothing shows beyond this distance (0: no fog)
 };
 LodView lodViewFor(int viewportHeight_px, float heightAngle_rad, float pixelTolerance = 2.0f);
 
@@ -29,7 +30,8 @@ LodView lodViewFor(int viewportHeight_px, float heightAngle_rad, float pixelTole
 // last the segment draws nothing (its wall is under `pixelTolerance` pixels wide, and the
 // path line shows the well). A level's shape error must project under the tolerance:
 // distance >= error x focal / tolerance, plus the segment's radius (the wall may be that
-// much nearer than the centre). Never decreasing.
+// much nearer than the centre). Never decreasing; with fog, none past the fog's visibility
+// (plus the radius), where a wall would be drawn in the fog's colour only.
 std::vector<float> lodSwitchDistances(const reconstruction::SegmentMesh& segment,
                                       const LodView& view);
 

@@ -95,6 +95,14 @@ TEST_F(LevelOfDetailTest, SwitchesFollowTheProjectedSizeNotAFixedDistance) {
             EXPECT_GE(base[i], base[i - 1]);
         }
     }
+    // In haze fog nothing shows past its visibility: no segment is drawn beyond it.
+    scenegraph::LodView hazy = scenegraph::lodViewFor(800, 0.8f);
+    hazy.visibility_m = 5.0f;
+    const auto fogged = scenegraph::lodSwitchDistances(segment, hazy);
+    for (std::size_t i = 0; i < fogged.size(); ++i)
+        EXPECT_EQ(fogged[i], std::min(base[i], 5.0f + segment.radius)) << i;
+    EXPECT_EQ(scenegraph::lodLevelAt(fogged, 5.0f + segment.radius),
+              static_cast<int>(fogged.size()));
     EXPECT_EQ(scenegraph::lodLevelAt(base, 0.0f), 0);
     EXPECT_EQ(scenegraph::lodLevelAt(base, base.back() + 1.0f),
               static_cast<int>(base.size()));  // nothing: under the pixel tolerance wide
