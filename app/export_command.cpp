@@ -1,6 +1,7 @@
 #include <chrono>
 #include <cstdio>
 #include <exception>
+#include <vector>
 
 #include "app/commands.h"
 #include "app/input_options.h"
@@ -14,16 +15,21 @@ namespace caliper3d::app {
 int runExport(const QStringList& args) {
     return guardedVerb("export", [&]() -> int {
         VerbParser verb("export", "FILE... -o OUT.iv",
-                        "Export wells as an Open Inventor scene: per segment an SoLOD with the "
-                        "coarse levels the window loads up front (sections kept by shape error, "
-                        "12-point rings and the raw N-gon; see --shape-tolerance), and the path. "
-                        "Full detail is built near a camera only, and is not written.");
+                        "Export wells as an Open Inventor scene: each well's path and, per "
+                        "segment, an SoLOD. By default (--detail shown) its levels are the coarse "
+                        "ones the window loads up front (sections kept by shape error, 12-point "
+                        "rings and the raw N-gon; see --shape-tolerance). --detail full writes "
+                        "every level, full detail first, one segment at a time (memory holds one "
+                        "segment's nodes; the file is large: 2.9 GB binary for 4 km at 2.5 mm).");
         QCommandLineParser& p = verb.parser();
         p.addOption({{"o", "output"},
                      "Output file: .iv, or .iv.gz for a gzip-compressed scene (as --gzip).",
                      "OUT"});
         p.addOption({"binary", "Write binary Open Inventor (smaller, faster to read)."});
         p.addOption({"gzip", "Compress the output with gzip (implied by a name ending .iv.gz)."});
+        p.addOption({"detail",
+                     "shown (the coarse levels, default) or full (every level, streamed).",
+                     "LEVELS", "shown"});
         addInputOptions(p);
         addWellSourceOptions(p);
         if (!verb.parse(args, 1)) return kExitOk;
@@ -37,6 +43,10 @@ int runExport(const QStringList& args) {
         if (!endsWith(".iv") && !gzipName)
             throw UsageError("caliper3d export: the output must end in .iv or .iv.gz, got '" + out +
                              "'");
+        const std::string detail = verb.value("detail");
+        if (detail != "shown" && detail != "full")
+            throw UsageError("caliper3d export: --detail takes shown or full, got '" + detail +
+                             "'");
         const LoadOptions options = inputOptionsFrom(p);
 
         scenegraph::initCoin();
@@ -47,7 +57,13 @@ int runExport(const QStringList& args) {
         ivOptions.binary = verb.isSet("binary");
         ivOptions.gzip = verb.isSet("gzip") || gzipName;
         const auto built = std::chrono::steady_clock::now();
-        scenegraph::writeIv(scene.root.get(), out, ivOptions);
+        if (detail == "full") {
+            std::vector<const reconstruction::WellGeometry*> wells;
+            for (const auto& geometry : scene.geometries) wells.push_back(geometry.get());
+            scenegraph::writeIvFullDetail(wells, out, ivOptions);
+        } else {
+            scenegraph::writeIv(scene.root.get(), out, ivOptions);
+        }
         const auto written = std::chrono::steady_clock::now();
         using Seconds = std::chrono::duration<double>;
         std::printf("wrote %s (%d well%s): read and built in %.2f s, written in %.2f s\n",

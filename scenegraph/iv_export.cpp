@@ -14,7 +14,11 @@
 #include <Inventor/nodes/SoSeparator.h>
 #include <Inventor/nodes/SoVertexProperty.h>
 
+#include "reconstruction/well_geometry.h"
 #include "scenegraph/main_thread.h"
+#include "scenegraph/node_ref.h"
+#include "scenegraph/segment_node_builder.h"
+#include "scenegraph/well_scene.h"
 
 namespace caliper3d::scenegraph {
 
@@ -54,6 +58,65 @@ void writeIv(SoNode* scene, const std::string& path, const IvExportOptions& opti
     std::free(buffer);
     if (std::fclose(file) != 0 || !written)
         throw std::runtime_error(path + ": cannot write the file (disk full?)");
+}
+
+std::size_t writeIvFullDetail(const std::vector<const reconstruction::WellGeometry*>& wells,
+                              const std::string& path, const IvExportOptions& options) {
+    assertMainThread("writeIvFullDetail");
+    SoOutput out;
+    out.setBinary(options.binary ? TRUE : FALSE);
+    // Without compression each segment is written into memory and that memory to the file
+    // (Coin writes a value at a time, each its own stdio call, when it writes to a file).
+    std::FILE* file = nullptr;
+    if (options.gzip) {
+        if (!out.setCompression("GZIP", 0.6f))
+            throw std::runtime_error(path + ": this Coin build cannot write compressed files");
+        if (!out.openFile(path.c_str()))
+            throw std::runtime_error(path + ": cannot open file for writing");
+    } else {
+        file = std::fopen(path.c_str(), "wb");
+        if (!file) throw std::runtime_error(path + ": cannot open file for writing");
+        out.setBuffer(std::malloc(1u << 20), 1u << 20, &growBuffer);
+    }
+    bool ok = true;
+    auto flush = [&] {
+        if (!file) return;
+        void* buffer = nullptr;
+        std::size_t size = 0;
+        out.getBuffer(buffer, size);
+        ok = ok && std::fwrite(buffer, 1, size, file) == size;
+        out.resetBuffer();
+    };
+    std::size_t written = 0;
+    for (const reconstruction::WellGeometry* geometry : wells) {
+        // The well's own nodes (shape hints, material, path) at the top level, so that they
+        // apply to the segments written after them.
+        WellScene scene;
+        scene.setPath(*geometry);
+        SoSeparator* root = scene.root();
+        for (int i = 0; i < root->getNumChildren(); ++i) {
+            if (root->getChild(i)->getName() == SbName("segments")) continue;
+            SoWriteAction(&out).apply(root->getChild(i));
+        }
+        flush();
+        for (std::size_t s = 0; s < geometry->segmentCount(); ++s) {
+            const NodeRef<SoLOD> lod(makeSegmentLod(geometry->buildSegment(s)));
+            SoWriteAction(&out).apply(lod.get());
+            flush();
+            ++written;
+        }
+    }
+    if (file) {
+        void* buffer = nullptr;
+        std::size_t size = 0;
+        out.getBuffer(buffer, size);
+        std::free(buffer);
+        ok = std::fclose(file) == 0 && ok;
+        if (!ok) throw std::runtime_error(path + ": cannot write the file (disk full?)");
+    } else {
+        out.closeFile();
+    }
+    return written;
 }
 
 SoNode* readIv(const std::string& path) {

@@ -2,6 +2,11 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
+
+namespace caliper3d::reconstruction {
+class WellGeometry;
+}
 
 class SoNode;
 
@@ -15,6 +20,14 @@ struct IvExportOptions {
 // Writes `scene` as an Open Inventor file with SoWriteAction. Throws
 // std::runtime_error naming the file when it cannot be written.
 void writeIv(SoNode* scene, const std::string& path, const IvExportOptions& options = {});
+
+// Writes wells at full detail, every level of every segment, streaming: one segment's nodes
+// are built, written and freed before the next, so memory holds one segment's, never the
+// whole scene's. The file holds, per well, its shape hints, material and path, then one SoLOD
+// per segment (SoDB::readAll reads them back under one separator). Returns the segments
+// written. Throws std::runtime_error naming the file when it cannot be written.
+std::size_t writeIvFullDetail(const std::vector<const reconstruction::WellGeometry*>& wells,
+                              const std::string& path, const IvExportOptions& options = {});
 
 // Reads an Open Inventor file with SoDB::readAll; the caller takes a reference.
 // Throws std::runtime_error naming the file when it cannot be read.

@@ -71,3 +71,24 @@ TEST_F(IvExportTest, NonInventorFileIsRejected) {
     { std::ofstream(path) << "this is not an inventor file\n"; }
     EXPECT_THROW(scenegraph::readIv(path.string()), std::runtime_error);
 }
+
+TEST_F(IvExportTest, FullDetailIsStreamedSegmentBySegmentAndReadsBackWhole) {
+    reconstruction::GeometryOptions options;
+    reconstruction::WellGeometry geometry(exampleTable(), options);
+    std::size_t vertices = 0, triangles = 0;
+    for (std::size_t s = 0; s < geometry.segmentCount(); ++s)
+        for (const auto& level : geometry.buildSegment(s).levels) {
+            vertices += level.positions.size();
+            triangles += level.triangleCount();
+        }
+    for (bool binary : {false, true}) {
+        const auto path = test::scratch(binary ? "full_binary.iv" : "full_ascii.iv");
+        EXPECT_EQ(scenegraph::writeIvFullDetail({&geometry}, path.string(), {binary, false}),
+                  geometry.segmentCount());
+        auto back = scenegraph::makeRef(scenegraph::readIv(path.string()));
+        const scenegraph::SceneCounts after = scenegraph::countScene(back.get());
+        EXPECT_EQ(after.lods, geometry.segmentCount()) << (binary ? "binary" : "ascii");
+        EXPECT_EQ(after.vertices, vertices) << (binary ? "binary" : "ascii");
+        EXPECT_EQ(after.triangles, triangles) << (binary ? "binary" : "ascii");
+    }
+}
