@@ -94,6 +94,10 @@ void WellGeometry::markMeasuredRows() {
                                     std::to_string(t.armCount) + " arms with a valid reading");
 }
 
+bool WellGeometry::cancelled() const {
+    return m_options.cancel && m_options.cancel->load(std::memory_order_relaxed);
+}
+
 void WellGeometry::computePathAndFrames() {
     const io::SectionTable& t = *m_table;
     const std::size_t rows = t.rowCount();
@@ -125,12 +129,13 @@ void WellGeometry::computePathAndFrames() {
     forEachBlockInOrder(
         blocks, threads,
         [&](std::size_t block, std::size_t) {
+            if (cancelled()) return;
             const std::size_t first = block * kBlockRows, last = std::min(rows, first + kBlockRows);
             if (!fromSurvey) computeSteps(first, last, startInc[block], startAzi[block]);
             computeFrames(first, last);
         },
         [&](std::size_t block) {
-            if (fromSurvey) return;
+            if (fromSurvey || cancelled()) return;
             const std::size_t first = block * kBlockRows, last = std::min(rows, first + kBlockRows);
             for (std::size_t i = std::max<std::size_t>(first, 1); i < last; ++i) {
                 PathPoint& p = m_path[i];
@@ -140,6 +145,7 @@ void WellGeometry::computePathAndFrames() {
                 p.tvd = prev.tvd + p.tvd;
             }
         });
+    if (cancelled()) throw GeometryCancelled();
 }
 
 // Segments of equal length; consecutive segments share their boundary row.

@@ -1,7 +1,9 @@
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <memory>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -40,6 +42,15 @@ struct GeometryOptions {
     // Workers that compute the path and the section frames (the result does
     // not depend on it).
     int threads = 1;
+    // Set from another thread, stops the path and frames within a block of rows
+    // (GeometryCancelled).
+    const std::atomic<bool>* cancel = nullptr;
+};
+
+// Thrown by WellGeometry's constructor when GeometryOptions::cancel stopped it.
+class GeometryCancelled : public std::runtime_error {
+public:
+    GeometryCancelled() : std::runtime_error("building the well geometry was cancelled") {}
 };
 
 // Two pads measure one diameter: their section is drawn and analysed as the
@@ -116,6 +127,7 @@ public:
 private:
     void markMeasuredRows();
     void computePathAndFrames();
+    bool cancelled() const;
     void cutSegments();
     void computeSteps(std::size_t first, std::size_t last, double inc, double azi);
     void computeFrames(std::size_t first, std::size_t last);

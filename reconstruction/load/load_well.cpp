@@ -14,6 +14,7 @@ GeometryOptions geometryOptions(const LoadOptions& options) {
     g.steepInclination_deg = options.steepInclination_deg;
     g.maxArmRadius_mm = options.toolReach_mm;
     g.minValidArmFraction = options.minValidArmFraction;
+    g.cancel = options.cancel;
     return g;
 }
 

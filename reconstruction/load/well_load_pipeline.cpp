@@ -47,6 +47,8 @@ void WellLoadPipeline::run() {
         m_events.push(LoadFinished{built});
     } catch (const io::ReadCancelled&) {
         m_events.push(LoadFinished{0});  // cancelled while reading: nothing was shown
+    } catch (const GeometryCancelled&) {
+        m_events.push(LoadFinished{0});  // cancelled while building the path and frames
     } catch (const std::exception& e) {
         m_events.push(LoadFailed{e.what()});
     }

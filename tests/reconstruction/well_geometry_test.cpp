@@ -1,5 +1,6 @@
 #include "reconstruction/well_geometry.h"
 
+#include <atomic>
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -218,4 +219,13 @@ TEST(WellGeometryTest, ArmOneComesFromPadAzimuthOrRelativeBearingByInclination) 
     options.steepInclination_deg = 5.0;
     const WellGeometry low(std::make_shared<const caliper3d::io::SectionTable>(t), options);
     EXPECT_EQ(low.orientation(0), O::RelativeBearing);
+}
+
+TEST(WellGeometryTest, ACancelStopsThePathAndFramesWithGeometryCancelled) {
+    std::atomic<bool> cancel{true};
+    GeometryOptions options;
+    options.cancel = &cancel;
+    EXPECT_THROW(WellGeometry(circleWell(20.0, 0.01), options), GeometryCancelled);
+    cancel = false;
+    EXPECT_EQ(WellGeometry(circleWell(20.0, 0.01), options).path().size(), 2001u);
 }
