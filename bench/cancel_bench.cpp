@@ -1,4 +1,5 @@
-// How long a cancel takes to stop a load in progress (the window's worker): opens FILE with
+// How soon the window's load worker hands over its first segment, and how long a cancel takes
+// to stop a load in progress: opens FILE with
 // the load pipeline, cancels after each delay and prints the time from the cancel to the
 // worker's last event, and where the load was (reading, or meshing segments).
 //   cancel_bench FILE [DELAY_MS...]   (default delays 50 100 200 400 800 1200 ms)
@@ -23,6 +24,32 @@ int main(int argc, char** argv) {
     std::vector<int> delays;
     for (int i = 2; i < argc; ++i) delays.push_back(std::atoi(argv[i]));
     if (delays.empty()) delays = {50, 100, 200, 400, 800, 1200};
+    {
+        // How soon the first segment reaches the queue (the window attaches it on its next tick).
+        const auto opened = Clock::now();
+        WellLoadPipeline pipeline(WellSource{argv[1], {}, {}}, LoadOptions{}, Wellhead{});
+        pipeline.start();
+        double preview = -1.0, firstSegment = -1.0, whole = -1.0, finished = -1.0;
+        auto since = [&] {
+            return std::chrono::duration<double, std::milli>(Clock::now() - opened).count();
+        };
+        for (;;) {
+            auto event = pipeline.events().waitPop();
+            if (std::holds_alternative<LoadPreview>(*event) && preview < 0) preview = since();
+            if (std::holds_alternative<SegmentMesh>(*event) && firstSegment < 0)
+                firstSegment = since();
+            if (std::holds_alternative<LoadStarted>(*event)) whole = since();
+            if (std::holds_alternative<LoadFinished>(*event) ||
+                std::holds_alternative<LoadFailed>(*event)) {
+                finished = since();
+                break;
+            }
+        }
+        std::printf(
+            "| open to preview | to first segment | to whole geometry | to last segment |\n"
+            "|---|---|---|---|\n| %.0f ms | %.0f ms | %.0f ms | %.0f ms |\n\n",
+            preview, firstSegment, whole, finished);
+    }
     std::printf("| cancel after (ms) | stopped while | cancel to stop (ms) |\n|---|---|---|\n");
     for (int delay : delays) {
         WellLoadPipeline pipeline(WellSource{argv[1], {}, {}}, LoadOptions{}, Wellhead{});

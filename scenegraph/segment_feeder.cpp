@@ -31,7 +31,9 @@ bool SegmentFeeder::drainOnce() {
     assertMainThread("SegmentFeeder::drainOnce");
     if (m_done) return true;
     for (auto& event : m_pipeline.events().drain(m_perTick)) {
-        if (auto* started = std::get_if<reconstruction::LoadStarted>(&event)) {
+        if (auto* preview = std::get_if<reconstruction::LoadPreview>(&event)) {
+            m_scene.setPath(*preview->geometry);  // the top of the well, until the whole arrives
+        } else if (auto* started = std::get_if<reconstruction::LoadStarted>(&event)) {
             m_scene.setPath(*started->geometry);
             if (m_callbacks.started) m_callbacks.started(*started->geometry);
             if (m_callbacks.geometry) m_callbacks.geometry(started->geometry);

@@ -1,5 +1,11 @@
 #include "reconstruction/load/load_well.h"
 
+#include <atomic>
+#include <exception>
+
+#include "io/hole_azimuth_plan.h"
+#include "io/log_stream.h"
+#include "reconstruction/load/hole_azimuth.h"
 #include "reconstruction/load/well_input.h"
 #include "reconstruction/load/well_warnings.h"
 
@@ -46,6 +52,43 @@ LoadedWell loadWell(const WellSource& source, const LoadOptions& options, const 
         source.path, options.read, !source.surveyPath.empty(), &out.diagnostics, options.cancel));
     out.geometry = std::make_shared<const WellGeometry>(out.table, geometry);
     if (options.geometryWarnings) warnGeometry(*out.geometry, out.diagnostics);
+    return out;
+}
+
+LoadedWell loadWellPreview(const WellSource& source, const LoadOptions& options,
+                           const Wellhead& origin, std::size_t rows) {
+    LoadedWell out;
+    try {
+        GeometryOptions geometry = geometryOptions(options);
+        if (!source.surveyPath.empty())
+            geometry.survey =
+                surveyStations(readCheckedSurvey(source.surveyPath, options.read, nullptr).table);
+        if (source.wellhead) geometry.wellheadOffset = wellheadOffset(*source.wellhead, origin);
+        io::SectionTable table;
+        std::atomic<bool> enough{false};
+        io::StreamOptions stream;
+        stream.threads = 1;
+        stream.blockBytes = 1u << 20;
+        stream.cancel = &enough;
+        const io::LogInfo info = io::streamCaliperLog(
+            source.path, options.read,
+            [&](const io::SectionTable& chunk) {
+                if (table.rowCount() == 0)
+                    table = chunk;
+                else
+                    table.append(chunk);
+                const bool stop = options.cancel && options.cancel->load();
+                if (table.rowCount() >= rows || stop) enough.store(true);
+            },
+            stream);
+        if (!info.cancelled || table.rowCount() < rows || table.armCount == 0) return {};
+        table.source = source.path;
+        resolveHoleAzimuth(table, io::holeAzimuthPlan(info, !source.surveyPath.empty()), nullptr);
+        out.table = std::make_shared<const io::SectionTable>(std::move(table));
+        out.geometry = std::make_shared<const WellGeometry>(out.table, geometry);
+    } catch (const std::exception&) {
+        return {};
+    }
     return out;
 }
 

@@ -10,11 +10,15 @@ namespace caliper3d::reconstruction {
 WellLoadPipeline::WellLoadPipeline(Loader loader) : m_loader(std::move(loader)) {}
 
 WellLoadPipeline::WellLoadPipeline(WellSource source, LoadOptions options, Wellhead origin)
-    : WellLoadPipeline(
-          [this, source = std::move(source), options = std::move(options), origin]() mutable {
-              options.cancel = &m_cancelled;  // a cancel stops the read too, within a block
-              return loadWell(source, options, origin);
-          }) {}
+    : WellLoadPipeline([this, source, options, origin]() mutable {
+          options.cancel = &m_cancelled;  // a cancel stops the read too, within a block
+          return loadWell(source, options, origin);
+      }) {
+    m_preview = [this, source = std::move(source), options = std::move(options), origin]() mutable {
+        options.cancel = &m_cancelled;
+        return loadWellPreview(source, options, origin, kPreviewRows);
+    };
+}
 
 WellLoadPipeline::WellLoadPipeline(Reader reader, GeometryOptions options)
     : WellLoadPipeline([reader = std::move(reader), options = std::move(options)] {
@@ -35,11 +39,22 @@ void WellLoadPipeline::start() {
 
 void WellLoadPipeline::run() {
     try {
+        // The top of a long log first: its complete segments are the whole well's.
+        std::size_t sent = 0;
+        if (m_preview) {
+            const LoadedWell preview = m_preview();
+            if (preview.geometry && preview.geometry->segmentCount() > 1 && !m_cancelled.load()) {
+                m_events.push(LoadPreview{preview.geometry});
+                for (; sent + 1 < preview.geometry->segmentCount(); ++sent)
+                    m_events.push(
+                        buildSegmentLevels(*preview.geometry, sent, kFirstCoarseLevel, 1 << 30));
+            }
+        }
         LoadedWell well = m_loader();
         const std::shared_ptr<const WellGeometry> geometry = well.geometry;
         m_events.push(LoadStarted{geometry, std::move(well.diagnostics)});
-        std::size_t built = 0;
-        for (std::size_t s = 0; s < geometry->segmentCount(); ++s) {
+        std::size_t built = sent;
+        for (std::size_t s = sent; s < geometry->segmentCount(); ++s) {
             if (m_cancelled.load()) break;
             m_events.push(buildSegmentLevels(*geometry, s, kFirstCoarseLevel, 1 << 30));
             ++built;

@@ -45,16 +45,40 @@ std::vector<LoadEvent> drainAll(WellLoadPipeline& pipeline) {
 
 }  // namespace
 
-TEST(WellLoadPipelineTest, LoadsTheWellThenItsCoarseSegments) {
+TEST(WellLoadPipelineTest, PreviewsTheTopThenLoadsTheWholeAndItsRemainingSegments) {
     WellLoadPipeline pipeline(WellSource{wellFile(), {}, {}}, LoadOptions{}, Wellhead{});
     pipeline.start();
     const std::vector<LoadEvent> events = drainAll(pipeline);
-    ASSERT_TRUE(std::holds_alternative<LoadStarted>(events.front()));
-    const auto& finished = std::get<LoadFinished>(events.back());
-    EXPECT_EQ(finished.segments, 60u);  // 1 m segments
-    EXPECT_EQ(events.size(), 62u);
-    const auto& first = std::get<SegmentMesh>(events[1]);
-    EXPECT_EQ(first.firstLevel, kFirstCoarseLevel);  // finer levels come near the camera only
+    // The first 4,096 rows (about 10 m) come first, then the whole well.
+    ASSERT_TRUE(std::holds_alternative<LoadPreview>(events.front()));
+    const auto& preview = std::get<LoadPreview>(events.front()).geometry;
+    EXPECT_GE(preview->table().rowCount(), WellLoadPipeline::kPreviewRows);
+    EXPECT_LT(preview->table().rowCount(), 24'001u);
+    std::shared_ptr<const WellGeometry> whole;
+    std::vector<const SegmentMesh*> segments;
+    std::size_t beforeWhole = 0;
+    for (const LoadEvent& e : events) {
+        if (const auto* started = std::get_if<LoadStarted>(&e)) whole = started->geometry;
+        if (const auto* segment = std::get_if<SegmentMesh>(&e)) {
+            segments.push_back(segment);
+            if (!whole) ++beforeWhole;
+        }
+    }
+    ASSERT_TRUE(whole);
+    EXPECT_EQ(beforeWhole, preview->segmentCount() - 1);             // its complete segments
+    EXPECT_EQ(std::get<LoadFinished>(events.back()).segments, 60u);  // 1 m segments in all
+    ASSERT_EQ(segments.size(), 60u);
+    for (std::size_t s = 0; s < segments.size(); ++s) {
+        EXPECT_EQ(segments[s]->index, s);
+        EXPECT_EQ(segments[s]->firstLevel, kFirstCoarseLevel);  // finer ones near the camera
+    }
+    // The preview's segments are the whole well's, bit for bit.
+    for (std::size_t s = 0; s < beforeWhole; ++s) {
+        const SegmentMesh again = buildSegmentLevels(*whole, s, kFirstCoarseLevel, 1 << 30);
+        ASSERT_EQ(again.levels.size(), segments[s]->levels.size());
+        for (std::size_t l = 0; l < again.levels.size(); ++l)
+            EXPECT_EQ(again.levels[l].positions, segments[s]->levels[l].positions) << s << "/" << l;
+    }
 }
 
 TEST(WellLoadPipelineTest, ACancelBeforeTheReadEndsStopsTheReadItself) {
@@ -78,7 +102,10 @@ TEST(WellLoadPipelineTest, OpeningAndCancellingHundredsOfTimesIsClean) {
         pipeline.cancel();
         const std::vector<LoadEvent> events = drainAll(pipeline);
         ASSERT_FALSE(std::holds_alternative<LoadFailed>(events.back())) << i;
-        if (std::holds_alternative<LoadStarted>(events.front()))
+        bool started = false;
+        for (const LoadEvent& e : events)
+            started = started || std::holds_alternative<LoadStarted>(e);
+        if (started)
             ++stoppedLater;
         else
             ++stoppedInTheRead;
