@@ -2,6 +2,8 @@
 // and cancelling loads over and over is clean (run under ThreadSanitizer by make tsan-test).
 #include "reconstruction/load/well_load_pipeline.h"
 
+#include <unistd.h>
+
 #include <chrono>
 #include <random>
 #include <string>
@@ -20,10 +22,12 @@ using namespace caliper3d::reconstruction;
 
 namespace {
 
-// A 60 m well logged every 2.5 mm (24,001 rows, about 3.5 MB of text), written once.
+// A 60 m well logged every 2.5 mm (24,001 rows, about 3.5 MB of text), written once per test
+// process (ctest runs the tests of this file in parallel processes: one file each).
 const std::string& wellFile() {
     static const std::string path = [] {
-        const auto file = test::scratch("pipeline_60m.txt");
+        const auto file =
+            test::scratch("pipeline_60m_" + std::to_string(static_cast<long>(::getpid())) + ".txt");
         io::writeColumnTextFile(file.string(),
                                 makeSyntheticWell(syntheticProfile("example", 60.0, 0.0025)));
         return file.string();
