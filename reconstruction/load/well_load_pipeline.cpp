@@ -46,8 +46,7 @@ void WellLoadPipeline::run() {
             if (preview.geometry && preview.geometry->segmentCount() > 1 && !m_cancelled.load()) {
                 m_events.push(LoadPreview{preview.geometry});
                 for (; sent + 1 < preview.geometry->segmentCount(); ++sent)
-                    m_events.push(
-                        buildSegmentLevels(*preview.geometry, sent, kFirstCoarseLevel, 1 << 30));
+                    m_events.push(buildCoarseSegment(*preview.geometry, sent));
             }
         }
         LoadedWell well = m_loader();
@@ -56,7 +55,7 @@ void WellLoadPipeline::run() {
         std::size_t built = sent;
         for (std::size_t s = sent; s < geometry->segmentCount(); ++s) {
             if (m_cancelled.load()) break;
-            m_events.push(buildSegmentLevels(*geometry, s, kFirstCoarseLevel, 1 << 30));
+            m_events.push(buildCoarseSegment(*geometry, s));
             ++built;
         }
         m_events.push(LoadFinished{built});

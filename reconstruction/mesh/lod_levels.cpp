@@ -116,20 +116,35 @@ std::vector<LodLevel> lodPyramid(const GeometryOptions& options) {
     };
 }
 
-std::vector<std::size_t> decimatedRows(const WellGeometry& g, std::size_t first, std::size_t last,
-                                       const LodLevel& level) {
+namespace {
+
+// The spline knots of every measured row of [first, last], computed once for a segment: its
+// largest radius and every level's decimation read them.
+struct SegmentKnots {
+    SegmentKnots(const WellGeometry& g, std::size_t first_, std::size_t last_)
+        : first(first_),
+          last(last_),
+          knots(static_cast<std::size_t>(g.knotCount())),
+          values((last_ - first_ + 1) * knots) {
+        for (std::size_t r = first; r <= last; ++r)
+            if (g.measured(r)) g.sectionKnots(r, values.data() + (r - first) * knots);
+    }
+    double value(std::size_t row, std::size_t k) const { return values[(row - first) * knots + k]; }
+    std::size_t first, last, knots;
+    std::vector<double> values;  // unmeasured rows: zeros, never read
+};
+
+std::vector<std::size_t> keptRows(const WellGeometry& g, const SegmentKnots& segment,
+                                  const LodLevel& level) {
+    const std::size_t first = segment.first, last = segment.last;
     std::vector<std::size_t> rows;
     if (level.maxSpacing_m <= 0.0) {
         for (std::size_t r = first; r <= last; ++r) rows.push_back(r);
         return rows;
     }
     const std::vector<double>& depth = g.table().depth_m;
-    const std::size_t knots = static_cast<std::size_t>(g.knotCount());
-    // The knots of every row, once.
-    std::vector<double> values((last - first + 1) * knots);
-    for (std::size_t r = first; r <= last; ++r)
-        if (g.measured(r)) g.sectionKnots(r, values.data() + (r - first) * knots);
-    auto value = [&](std::size_t r, std::size_t k) { return values[(r - first) * knots + k]; };
+    const std::size_t knots = segment.knots;
+    auto value = [&](std::size_t r, std::size_t k) { return segment.value(r, k); };
     const double tol = level.tolerance_mm;
     std::vector<double> lo(knots), hi(knots);
     auto mustKeep = [&](std::size_t r) {
@@ -172,6 +187,13 @@ std::vector<std::size_t> decimatedRows(const WellGeometry& g, std::size_t first,
     return rows;
 }
 
+}  // namespace
+
+std::vector<std::size_t> decimatedRows(const WellGeometry& g, std::size_t first, std::size_t last,
+                                       const LodLevel& level) {
+    return keptRows(g, SegmentKnots(g, first, last), level);
+}
+
 SegmentMesh buildSegmentLevels(const WellGeometry& geometry, std::size_t segment, int from,
                                int to) {
     if (segment >= geometry.segmentCount())
@@ -189,13 +211,9 @@ SegmentMesh buildSegmentLevels(const WellGeometry& geometry, std::size_t segment
     out.firstLevel = from;
 
     // The largest drawn radius of the segment bounds every level's error.
+    const SegmentKnots knots(geometry, first, last);
     double maxRadius_mm = 0.0;
-    std::vector<double> knots(static_cast<std::size_t>(geometry.knotCount()));
-    for (std::size_t r = first; r <= last; ++r) {
-        if (!geometry.measured(r)) continue;
-        geometry.sectionKnots(r, knots.data());
-        for (double k : knots) maxRadius_mm = std::max(maxRadius_mm, k);
-    }
+    for (double k : knots.values) maxRadius_mm = std::max(maxRadius_mm, k);
     for (std::size_t r = first; r < last; ++r)
         if (geometry.measured(r) && geometry.measured(r + 1))
             out.fullDetailTriangles += 2 * static_cast<std::size_t>(pyramid.front().points);
@@ -211,8 +229,7 @@ SegmentMesh buildSegmentLevels(const WellGeometry& geometry, std::size_t segment
     }
     for (int i = from; i < to; ++i) {
         const LodLevel& l = pyramid[static_cast<std::size_t>(i)];
-        out.levels.push_back(
-            buildLevel(geometry, decimatedRows(geometry, first, last, l), l.points));
+        out.levels.push_back(buildLevel(geometry, keptRows(geometry, knots, l), l.points));
     }
 
     const glm::dvec3 a = toScene(geometry.centre(first)), b = toScene(geometry.centre(last));
@@ -223,6 +240,11 @@ SegmentMesh buildSegmentLevels(const WellGeometry& geometry, std::size_t segment
 
 SegmentMesh buildSegmentMesh(const WellGeometry& geometry, std::size_t segment) {
     return buildSegmentLevels(geometry, segment, 0, std::numeric_limits<int>::max());
+}
+
+SegmentMesh buildCoarseSegment(const WellGeometry& geometry, std::size_t segment) {
+    return buildSegmentLevels(geometry, segment, kFirstCoarseLevel,
+                              std::numeric_limits<int>::max());
 }
 
 }  // namespace caliper3d::reconstruction

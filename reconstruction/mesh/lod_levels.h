@@ -43,5 +43,7 @@ std::vector<std::size_t> decimatedRows(const WellGeometry& geometry, std::size_t
 SegmentMesh buildSegmentLevels(const WellGeometry& geometry, std::size_t segment, int from, int to);
 // Every level.
 SegmentMesh buildSegmentMesh(const WellGeometry& geometry, std::size_t segment);
+// The levels built up front, kFirstCoarseLevel on.
+SegmentMesh buildCoarseSegment(const WellGeometry& geometry, std::size_t segment);
 
 }  // namespace caliper3d::reconstruction

@@ -78,7 +78,7 @@ TEST(WellLoadPipelineTest, PreviewsTheTopThenLoadsTheWholeAndItsRemainingSegment
     }
     // The preview's segments are the whole well's, bit for bit.
     for (std::size_t s = 0; s < beforeWhole; ++s) {
-        const SegmentMesh again = buildSegmentLevels(*whole, s, kFirstCoarseLevel, 1 << 30);
+        const SegmentMesh again = buildCoarseSegment(*whole, s);
         ASSERT_EQ(again.levels.size(), segments[s]->levels.size());
         for (std::size_t l = 0; l < again.levels.size(); ++l)
             EXPECT_EQ(again.levels[l].positions, segments[s]->levels[l].positions) << s << "/" << l;
