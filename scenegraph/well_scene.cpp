@@ -77,8 +77,10 @@ void WellScene::addSegment(const reconstruction::SegmentMesh& segment) {
     record.centre = segment.centre;
     record.heldFrom = segment.firstLevel;
     record.coarseFrom = segment.firstLevel;
-    record.shape = segment;
-    record.shape.levels.clear();
+    // What the switch distances read, not the meshes (they are in the nodes now).
+    record.shape.radius = segment.radius;
+    record.shape.maxRadius_m = segment.maxRadius_m;
+    record.shape.levelError_mm = segment.levelError_mm;
     record.switchDistances = lodSwitchDistances(segment, m_view);
     m_segments->addChild(record.lod);
     m_fullTriangles += segment.fullDetailTriangles;
@@ -88,8 +90,7 @@ void WellScene::addSegment(const reconstruction::SegmentMesh& segment) {
 void WellScene::buildAll(const reconstruction::WellGeometry& geometry) {
     setPath(geometry);
     for (std::size_t s = 0; s < geometry.segmentCount(); ++s)
-        addSegment(reconstruction::buildSegmentLevels(geometry, s,
-                                                      reconstruction::kFirstCoarseLevel, 1 << 30));
+        addSegment(reconstruction::buildCoarseSegment(geometry, s));
 }
 
 void WellScene::buildAllLevels(const reconstruction::WellGeometry& geometry) {

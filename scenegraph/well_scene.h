@@ -53,7 +53,6 @@ public:
 
     // Switch distances for a new viewport or field of view (every SoLOD's range).
     void setLodView(const LodView& view);
-    const LodView& lodView() const { return m_view; }
 
     // Segments that should show a finer level than they hold, seen from `eye` (scene
     // frame), nearest first. Marks every segment wanted at its finer levels as used now.
@@ -81,7 +80,8 @@ private:
         int coarseFrom = 0;  // the first level it arrived with
         std::size_t fineTriangles = 0;
         std::uint64_t lastWanted = 0;
-        reconstruction::SegmentMesh shape;  // the metadata (no meshes), for the switch distances
+        reconstruction::SegmentMesh
+            shape;  // radius and level errors only, for the switch distances
     };
     void setRanges(Record& record);
 
