@@ -303,18 +303,13 @@ private:
     void readTrailingSections(std::string_view rest) {
         std::string tail(rest);
         while (!m_reader->done()) tail += m_reader->next();
-        std::size_t pos = 0, line = m_lineNumber;
-        while (pos < tail.size()) {
-            const std::size_t nl = tail.find('\n', pos);
-            const std::size_t end = nl == std::string::npos ? tail.size() : nl;
-            const std::string_view l = trim(std::string_view(tail).substr(pos, end - pos));
-            pos = end + 1;
-            ++line;
+        forEachTrimmedLine(tail, m_lineNumber + 1, [&](std::string_view l, std::size_t line) {
             if (!l.empty() && l.front() == '~')
                 m_info.diagnostics.warn(m_name, line,
                                         "section '" + std::string(l.substr(0, 40)) +
                                             "' after the data is not read; skipped");
-        }
+            return true;
+        });
     }
 
     LogInfo finish() {

@@ -28,20 +28,14 @@ struct FirstLines {
 
 FirstLines readFirstLines(std::string_view text) {
     FirstLines f;
-    std::size_t pos = 0, line = 0;
-    while (pos < text.size()) {
-        const std::size_t nl = text.find('\n', pos);
-        const std::size_t end = nl == std::string_view::npos ? text.size() : nl;
-        const std::string_view l = trim(text.substr(pos, end - pos));
-        pos = end + 1;
-        ++line;
-        if (l.empty()) continue;
+    forEachTrimmedLine(text, 1, [&](std::string_view l, std::size_t line) {
+        if (l.empty()) return true;
         if (l.front() == '#') {
             const std::size_t first = l.find_first_not_of('#');
             f.commentNames = first == std::string_view::npos ? std::vector<std::string_view>()
                                                              : splitBlank(trim(l.substr(first)));
             f.commentLine = line;
-            continue;
+            return true;
         }
         std::vector<std::string_view> tokens = splitBlank(l);
         double v = 0.0;
@@ -53,11 +47,11 @@ FirstLines readFirstLines(std::string_view text) {
             f.names = std::move(tokens);
             f.namesLine = line;
             f.commentNames.clear();
-            continue;
+            return true;
         }
         f.numbers = std::move(tokens);
-        break;
-    }
+        return false;
+    });
     return f;
 }
 

@@ -57,36 +57,36 @@ LogLayout lasLayout(const LasHeader& h, const std::string& file, const ReadOptio
 void settleLasColumns(std::string_view text, std::size_t linesBefore,
                       const std::vector<ColumnSpec>& columns, RowFormat& format,
                       Diagnostics& diagnostics) {
-    std::size_t pos = 0, line = linesBefore;
-    while (pos < text.size()) {
-        const std::size_t nl = text.find('\n', pos);
-        const std::size_t end = nl == std::string_view::npos ? text.size() : nl;
-        const std::string_view l = trim(text.substr(pos, end - pos));
-        pos = end + 1;
-        ++line;
-        if (l.empty() || l.front() == '#') continue;
-        if (l.front() == '~') return;
-        const std::size_t count =
-            format.delimiter == ','
-                ? static_cast<std::size_t>(std::count(l.begin(), l.end(), ',')) + 1
-                : splitBlank(l).size();
-        const std::size_t declared = columns.size();
-        if (count < declared && count > 0 && format.delimiter != ',') {
-            std::string missing;
-            for (std::size_t c = count; c < declared; ++c)
-                missing += (missing.empty() ? "" : ", ") + columns[c].mnemonic;
-            if (static_cast<std::size_t>(format.depthColumn) >= count)
-                throw ParseError(format.file, line, 0,
-                                 "expected the depth curve among the data columns, found " +
-                                     std::to_string(count) + " values");
-            diagnostics.warn(format.file, line,
-                             std::to_string(declared) + " curves declared but rows hold " +
-                                 std::to_string(count) + " values; no data for " + missing);
-            format.tokens = count;
-            format.layout = std::to_string(count) + " values";
+    // The first data line, if any before another section.
+    std::string_view first;
+    std::size_t line = 0;
+    forEachTrimmedLine(text, linesBefore + 1, [&](std::string_view l, std::size_t number) {
+        if (l.empty() || l.front() == '#') return true;
+        if (l.front() != '~') {
+            first = l;
+            line = number;
         }
-        return;
-    }
+        return false;
+    });
+    if (first.empty()) return;
+    const std::size_t count =
+        format.delimiter == ','
+            ? static_cast<std::size_t>(std::count(first.begin(), first.end(), ',')) + 1
+            : splitBlank(first).size();
+    const std::size_t declared = columns.size();
+    if (count >= declared || count == 0 || format.delimiter == ',') return;
+    std::string missing;
+    for (std::size_t c = count; c < declared; ++c)
+        missing += (missing.empty() ? "" : ", ") + columns[c].mnemonic;
+    if (static_cast<std::size_t>(format.depthColumn) >= count)
+        throw ParseError(format.file, line, 0,
+                         "expected the depth curve among the data columns, found " +
+                             std::to_string(count) + " values");
+    diagnostics.warn(format.file, line,
+                     std::to_string(declared) + " curves declared but rows hold " +
+                         std::to_string(count) + " values; no data for " + missing);
+    format.tokens = count;
+    format.layout = std::to_string(count) + " values";
 }
 
 }  // namespace caliper3d::io
