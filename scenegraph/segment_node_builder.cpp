@@ -12,8 +12,9 @@
 
 namespace caliper3d::scenegraph {
 
-SoIndexedTriangleStripSet* makeStripSet(const reconstruction::Mesh& mesh) {
-    assertMainThread("makeStripSet");
+namespace {
+
+SoVertexProperty* makeVertexProperty(const reconstruction::Mesh& mesh) {
     auto* vp = new SoVertexProperty;
     const int n = static_cast<int>(mesh.positions.size());
     vp->vertex.setNum(n);
@@ -33,12 +34,25 @@ SoIndexedTriangleStripSet* makeStripSet(const reconstruction::Mesh& mesh) {
         vp->orderedRGBA.setValues(0, n, mesh.colours.data());
         vp->materialBinding = SoVertexProperty::PER_VERTEX_INDEXED;
     }
+    return vp;
+}
+
+// Strips [begin, end) of `indices` drawn from `vp`'s vertices.
+SoIndexedTriangleStripSet* makeStrips(SoVertexProperty* vp,
+                                      const std::vector<std::int32_t>& indices, std::size_t begin,
+                                      std::size_t end) {
     auto* strips = new SoIndexedTriangleStripSet;
     strips->vertexProperty = vp;
-    strips->coordIndex.setValues(0, static_cast<int>(mesh.stripIndices.size()),
-                                 mesh.stripIndices.data());
+    strips->coordIndex.setValues(0, static_cast<int>(end - begin), indices.data() + begin);
     // With vertexProperty bindings *_INDEXED and empty index fields, Coin uses coordIndex.
     return strips;
+}
+
+}  // namespace
+
+SoIndexedTriangleStripSet* makeStripSet(const reconstruction::Mesh& mesh) {
+    assertMainThread("makeStripSet");
+    return makeStrips(makeVertexProperty(mesh), mesh.stripIndices, 0, mesh.stripIndices.size());
 }
 
 LodView lodViewFor(int viewportHeight_px, float heightAngle_rad, float pixelTolerance) {
@@ -73,6 +87,43 @@ int lodLevelAt(const std::vector<float>& switchDistances, float distance) {
     return level;
 }
 
+float partSwitchDistance(const reconstruction::DetailPart& part, float partError_mm,
+                         const LodView& view) {
+    return partError_mm * view.focal_px / view.pixelTolerance / 1000.0f + part.radius;
+}
+
+SoNode* makeLevelNode(const reconstruction::SegmentMesh& segment, int level, const LodView& view) {
+    assertMainThread("makeLevelNode");
+    const reconstruction::Mesh& mesh =
+        segment.levels.at(static_cast<std::size_t>(level - segment.firstLevel));
+    if (level != 0 || segment.parts.empty()) return makeStripSet(mesh);
+    auto* group = new SoGroup;
+    SoVertexProperty* vp = makeVertexProperty(mesh);
+    for (const reconstruction::DetailPart& part : segment.parts) {
+        auto* lod = new SoLOD;
+        lod->center.setValue(part.centre.x, part.centre.y, part.centre.z);
+        lod->range.setValue(partSwitchDistance(part, segment.partError_mm, view));
+        lod->addChild(makeStrips(vp, mesh.stripIndices, part.stripBegin, part.stripEnd));
+        lod->addChild(makeStripSet(part.reduced));
+        group->addChild(lod);
+    }
+    return group;
+}
+
+void setPartRanges(SoNode* levelNode, const reconstruction::SegmentMesh& shape,
+                   const LodView& view) {
+    assertMainThread("setPartRanges");
+    if (!levelNode || !levelNode->isOfType(SoGroup::getClassTypeId())) return;
+    auto* group = static_cast<SoGroup*>(levelNode);
+    const int n = std::min(group->getNumChildren(), static_cast<int>(shape.parts.size()));
+    for (int i = 0; i < n; ++i) {
+        SoNode* child = group->getChild(i);
+        if (!child->isOfType(SoLOD::getClassTypeId())) continue;
+        static_cast<SoLOD*>(child)->range.setValue(
+            partSwitchDistance(shape.parts[static_cast<std::size_t>(i)], shape.partError_mm, view));
+    }
+}
+
 SoLOD* makeSegmentLod(const reconstruction::SegmentMesh& segment, const LodView& view) {
     assertMainThread("makeSegmentLod");
     auto* lod = new SoLOD;
@@ -83,7 +134,8 @@ SoLOD* makeSegmentLod(const reconstruction::SegmentMesh& segment, const LodView&
          ++level)
         lod->range.set1Value(i++, distances[level]);
     if (i == 0) lod->range.setNum(0);
-    for (const auto& mesh : segment.levels) lod->addChild(makeStripSet(mesh));
+    for (std::size_t l = 0; l < segment.levels.size(); ++l)
+        lod->addChild(makeLevelNode(segment, segment.firstLevel + static_cast<int>(l), view));
     lod->addChild(new SoGroup);  // past the last level: nothing (the path line shows the well)
     return lod;
 }

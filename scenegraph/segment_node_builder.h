@@ -5,8 +5,10 @@
 #include "reconstruction/mesh/mesh.h"
 #include "reconstruction/well_geometry.h"
 
+class SoGroup;
 class SoLOD;
 class SoIndexedTriangleStripSet;
+class SoNode;
 
 namespace caliper3d::scenegraph {
 
@@ -37,6 +39,20 @@ std::vector<float> lodSwitchDistances(const reconstruction::SegmentMesh& segment
 
 // The pyramid level a segment should show at `distance` (levelError_mm.size() = nothing).
 int lodLevelAt(const std::vector<float>& switchDistances, float distance);
+
+// The distance (eye to the part's centre) past which a part of level 0 shows its reduced
+// copy: the segment's partError_mm projected under the tolerance, plus the part's radius.
+float partSwitchDistance(const reconstruction::DetailPart& part, float partError_mm,
+                         const LodView& view);
+
+// Level `level` of a segment (level >= segment.firstLevel) as a node: a strip set, or for
+// level 0 cut into parts, a group of one SoLOD per part { every section, reduced copy }
+// whose strip sets share level 0's vertices. Main thread only.
+SoNode* makeLevelNode(const reconstruction::SegmentMesh& segment, int level, const LodView& view);
+// Resets the part switches of a level-0 node made by makeLevelNode for a new view (`shape`
+// needs only its parts' centres and radii and partError_mm). Main thread only.
+void setPartRanges(SoNode* levelNode, const reconstruction::SegmentMesh& shape,
+                   const LodView& view);
 
 // A segment as an SoLOD: its levels (segment.firstLevel on), finest first, then an empty
 // group, switching at lodSwitchDistances. Main thread only.

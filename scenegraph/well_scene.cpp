@@ -81,6 +81,7 @@ void WellScene::addSegment(const reconstruction::SegmentMesh& segment) {
     record.shape.radius = segment.radius;
     record.shape.maxRadius_m = segment.maxRadius_m;
     record.shape.levelError_mm = segment.levelError_mm;
+    keepPartShapes(record, segment);
     record.switchDistances = lodSwitchDistances(segment, m_view);
     m_segments->addChild(record.lod);
     m_fullTriangles += segment.fullDetailTriangles;
@@ -109,12 +110,20 @@ void WellScene::setRanges(Record& record) {
             record.switchDistances[static_cast<std::size_t>(first) + static_cast<std::size_t>(i)]);
 }
 
+void WellScene::keepPartShapes(Record& record, const reconstruction::SegmentMesh& segment) {
+    if (segment.firstLevel != 0) return;
+    record.shape.parts = segment.parts;
+    for (auto& part : record.shape.parts) part.reduced = {};
+    record.shape.partError_mm = segment.partError_mm;
+}
+
 void WellScene::setLodView(const LodView& view) {
     assertMainThread("WellScene::setLodView");
     m_view = view;
     for (Record& record : m_records) {
         record.switchDistances = lodSwitchDistances(record.shape, m_view);
         setRanges(record);
+        if (record.heldFrom == 0) setPartRanges(record.lod->getChild(0), record.shape, m_view);
     }
 }
 
@@ -143,11 +152,15 @@ void WellScene::attachFinerLevels(const reconstruction::SegmentMesh& finer) {
         std::min(static_cast<int>(finer.levels.size()), record.heldFrom - finer.firstLevel);
     if (count <= 0) return;
     for (int i = count - 1; i >= 0; --i) {
-        const reconstruction::Mesh& mesh = finer.levels[static_cast<std::size_t>(i)];
-        record.lod->insertChild(makeStripSet(mesh), 0);
-        record.fineTriangles += mesh.triangleCount();
-        m_fineTriangles += mesh.triangleCount();
+        const int level = finer.firstLevel + i;
+        record.lod->insertChild(makeLevelNode(finer, level, m_view), 0);
+        std::size_t triangles = finer.levels[static_cast<std::size_t>(i)].triangleCount();
+        if (level == 0)
+            for (const auto& part : finer.parts) triangles += part.reduced.triangleCount();
+        record.fineTriangles += triangles;
+        m_fineTriangles += triangles;
     }
+    keepPartShapes(record, finer);
     record.heldFrom = finer.firstLevel;
     record.lastWanted = m_tick;
     setRanges(record);

@@ -81,9 +81,11 @@ private:
         std::size_t fineTriangles = 0;
         std::uint64_t lastWanted = 0;
         reconstruction::SegmentMesh
-            shape;  // radius and level errors only, for the switch distances
+            shape;  // radius, level errors and part shapes only, for the switch distances
     };
     void setRanges(Record& record);
+    // Level 0's part centres and radii (not their meshes), for the part switches.
+    static void keepPartShapes(Record& record, const reconstruction::SegmentMesh& segment);
 
     NodeRef<SoSeparator> m_root;
     SoSeparator* m_pathGroup = nullptr;

@@ -6,6 +6,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -59,7 +60,10 @@ bool measuredThrough(const WellGeometry& g, std::size_t first, std::size_t last)
 // (the path line still crosses it). The segment's first and last rows get the full spline at
 // every level: neighbouring segments share those rings exactly, whatever level each shows,
 // so no crack opens between them.
-Mesh buildLevel(const WellGeometry& g, const std::vector<std::size_t>& rows, int points) {
+// `strips`, when given, gets for each strip appended the row its first ring is of and where
+// the strip starts in stripIndices.
+Mesh buildLevel(const WellGeometry& g, const std::vector<std::size_t>& rows, int points,
+                std::vector<std::pair<std::size_t, std::size_t>>* strips = nullptr) {
     Mesh mesh;
     const int knots = g.knotCount();
     const int levelPoints = points > 0 ? points : knots;
@@ -89,8 +93,10 @@ Mesh buildLevel(const WellGeometry& g, const std::vector<std::size_t>& rows, int
             radii = pads;
         const auto start = static_cast<std::int32_t>(mesh.positions.size());
         appendRing(g, mesh, rows[i], radii);
-        if (joinable && measuredThrough(g, rows[i - 1], rows[i]))
+        if (joinable && measuredThrough(g, rows[i - 1], rows[i])) {
+            if (strips) strips->emplace_back(rows[i - 1], mesh.stripIndices.size());
             appendClosedStrip(mesh.stripIndices, previousStart, previousPoints, start, ringPoints);
+        }
         previousStart = start;
         previousPoints = ringPoints;
         joinable = true;
@@ -134,9 +140,9 @@ struct SegmentKnots {
     std::vector<double> values;  // unmeasured rows: zeros, never read
 };
 
+// Rows `level` keeps among [first, last], a range within `segment`'s rows.
 std::vector<std::size_t> keptRows(const WellGeometry& g, const SegmentKnots& segment,
-                                  const LodLevel& level) {
-    const std::size_t first = segment.first, last = segment.last;
+                                  const LodLevel& level, std::size_t first, std::size_t last) {
     std::vector<std::size_t> rows;
     if (level.maxSpacing_m <= 0.0) {
         for (std::size_t r = first; r <= last; ++r) rows.push_back(r);
@@ -187,11 +193,66 @@ std::vector<std::size_t> keptRows(const WellGeometry& g, const SegmentKnots& seg
     return rows;
 }
 
+glm::vec3 sceneCentre(const WellGeometry& g, std::size_t row) {
+    return glm::vec3(toScene(g.centre(row)));
+}
+
+// Level 0 of a segment cut into parts about a quarter of its length (at least
+// kMinPartRows rows each), each with a reduced copy: every spline point, the rows level 1's
+// shape tolerance keeps. Both copies end on the same full rings, so neighbouring parts and
+// segments meet without a crack whichever copy each shows.
+std::vector<DetailPart> detailParts(
+    const WellGeometry& g, const SegmentKnots& knots, const std::vector<LodLevel>& pyramid,
+    const Mesh& full, const std::vector<std::pair<std::size_t, std::size_t>>& strips) {
+    constexpr std::size_t kParts = 4, kMinPartRows = 16;
+    const std::size_t first = knots.first, last = knots.last;
+    const std::size_t parts = std::min(kParts, (last - first) / kMinPartRows);
+    std::vector<DetailPart> out;
+    if (parts < 2) return out;
+    const std::vector<double>& depth = g.table().depth_m;
+    LodLevel reducedLevel = pyramid[1];
+    reducedLevel.points = pyramid[0].points;
+    float maxRadius_m = 0.0f;
+    for (double k : knots.values) maxRadius_m = std::max(maxRadius_m, static_cast<float>(k));
+    maxRadius_m *= static_cast<float>(g.options().radialExaggeration) / 1000.0f;
+    std::size_t from = first;
+    for (std::size_t p = 1; p <= parts; ++p) {
+        std::size_t to = last;
+        if (p < parts) {
+            const double target =
+                depth[first] + (depth[last] - depth[first]) * static_cast<double>(p) / parts;
+            const auto it =
+                std::lower_bound(depth.begin() + static_cast<std::ptrdiff_t>(from),
+                                 depth.begin() + static_cast<std::ptrdiff_t>(last), target);
+            to = std::clamp(static_cast<std::size_t>(it - depth.begin()), from + 1, last - 1);
+        }
+        DetailPart part;
+        part.firstRow = from;
+        part.lastRow = to;
+        // Strips are in row order: those whose first ring is a row of [from, to).
+        auto rowBelow = [](const std::pair<std::size_t, std::size_t>& s, std::size_t row) {
+            return s.first < row;
+        };
+        const auto begin = std::lower_bound(strips.begin(), strips.end(), from, rowBelow);
+        const auto end = std::lower_bound(begin, strips.end(), to, rowBelow);
+        part.stripBegin = begin == strips.end() ? full.stripIndices.size() : begin->second;
+        part.stripEnd = end == strips.end() ? full.stripIndices.size() : end->second;
+        const glm::vec3 a = sceneCentre(g, from), b = sceneCentre(g, to);
+        part.centre = (a + b) / 2.0f;
+        part.radius = glm::length(b - a) / 2.0f + maxRadius_m;
+        part.reduced =
+            buildLevel(g, keptRows(g, knots, reducedLevel, from, to), reducedLevel.points);
+        out.push_back(std::move(part));
+        from = to;
+    }
+    return out;
+}
+
 }  // namespace
 
 std::vector<std::size_t> decimatedRows(const WellGeometry& g, std::size_t first, std::size_t last,
                                        const LodLevel& level) {
-    return keptRows(g, SegmentKnots(g, first, last), level);
+    return keptRows(g, SegmentKnots(g, first, last), level, first, last);
 }
 
 SegmentMesh buildSegmentLevels(const WellGeometry& geometry, std::size_t segment, int from,
@@ -229,7 +290,16 @@ SegmentMesh buildSegmentLevels(const WellGeometry& geometry, std::size_t segment
     }
     for (int i = from; i < to; ++i) {
         const LodLevel& l = pyramid[static_cast<std::size_t>(i)];
-        out.levels.push_back(buildLevel(geometry, keptRows(geometry, knots, l), l.points));
+        const std::vector<std::size_t> rows = keptRows(geometry, knots, l, first, last);
+        if (i == 0) {
+            std::vector<std::pair<std::size_t, std::size_t>> strips;
+            out.levels.push_back(buildLevel(geometry, rows, l.points, &strips));
+            out.parts = detailParts(geometry, knots, pyramid, out.levels.back(), strips);
+            out.partError_mm =
+                static_cast<float>(pyramid[1].tolerance_mm * geometry.options().radialExaggeration);
+        } else {
+            out.levels.push_back(buildLevel(geometry, rows, l.points));
+        }
     }
 
     const glm::dvec3 a = toScene(geometry.centre(first)), b = toScene(geometry.centre(last));

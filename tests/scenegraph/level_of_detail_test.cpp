@@ -1,12 +1,16 @@
 // Level switching as the camera moves: which levels a WellScene asks for, holds and drops,
 // and what SoLOD then draws (SoGetPrimitiveCountAction, as the render verb counts it).
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <vector>
 
 #include <Inventor/actions/SoGetPrimitiveCountAction.h>
+#include <Inventor/nodes/SoLOD.h>
 #include <Inventor/nodes/SoPerspectiveCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
+
+#include <glm/geometric.hpp>
 
 #include "coin_fixture.h"
 #include "reconstruction/mesh/lod_levels.h"
@@ -131,4 +135,58 @@ TEST_F(LevelOfDetailTest, FlyingTheWholeWellKeepsTheFineLevelsWithinTheBudget) {
     EXPECT_GT(refined, 60u);
     EXPECT_LE(most, budget);
     EXPECT_GT(most, budget / 4);  // the budget was used, not everything dropped at once
+}
+
+TEST_F(LevelOfDetailTest, PartsNearTheEyeDrawEverySectionAndFartherPartsTheReducedCopy) {
+    const auto geometry = well(10.0);
+    const reconstruction::SegmentMesh segment = geometry->buildSegment(1);
+    ASSERT_EQ(segment.parts.size(), 4u);
+    const scenegraph::LodView view = scenegraph::lodViewFor(800, 0.785398f);
+    auto root = scenegraph::makeRef(new SoSeparator);
+    auto* camera = new SoPerspectiveCamera;
+    root->addChild(camera);
+    SoLOD* lod = scenegraph::makeSegmentLod(segment, view);
+    root->addChild(lod);
+    const std::vector<float> segmentSwitch = scenegraph::lodSwitchDistances(segment, view);
+    const reconstruction::Mesh& full = segment.levels.front();
+    for (float depth : {1.0f, 1.3f, 1.6f, 1.9f}) {
+        // On the axis, looking down: the segment shows level 0, each part by its own distance.
+        const glm::vec3 eye(reconstruction::toScene(
+            geometry->centre(static_cast<std::size_t>(std::lround(depth / 0.0025)))));
+        camera->position.setValue(eye.x, eye.y, eye.z);
+        camera->pointAt(SbVec3f(eye.x, eye.y - 10.0f, eye.z), SbVec3f(0, 0, 1));
+        ASSERT_LT(glm::length(segment.centre - eye), segmentSwitch[0]);
+        std::size_t expected = 0, nearParts = 0;
+        for (const reconstruction::DetailPart& part : segment.parts) {
+            const float d = glm::length(part.centre - eye);
+            if (d < scenegraph::partSwitchDistance(part, segment.partError_mm, view)) {
+                ++nearParts;
+                for (std::size_t i = part.stripBegin, run = 0; i < part.stripEnd; ++i)
+                    if (full.stripIndices[i] < 0) {
+                        expected += run - 2;
+                        run = 0;
+                    } else {
+                        ++run;
+                    }
+            } else {
+                expected += part.reduced.triangleCount();
+            }
+        }
+        EXPECT_GE(nearParts, 1u) << depth;      // the part the eye is in
+        if (depth < 1.1f || depth > 1.8f)       // at either end of the segment: the far end
+            EXPECT_LE(nearParts, 2u) << depth;  //   shows the reduced copy
+        EXPECT_EQ(scenegraph::trianglesDrawn(root.get(), 1280, 800), expected) << depth;
+    }
+    // A part switches where its reduced copy's shape error projects to the pixel tolerance.
+    const reconstruction::DetailPart& part = segment.parts[0];
+    EXPECT_NEAR(scenegraph::partSwitchDistance(part, segment.partError_mm, view) - part.radius,
+                segment.partError_mm / 1000.0f * view.focal_px / view.pixelTolerance, 1e-5f);
+    EXPECT_GT(part.radius, 0.125f);  // half its 0.25 m plus the wall's radius
+    EXPECT_LT(part.radius, 0.125f + 0.2f);
+    // A new view moves every part's switch.
+    const scenegraph::LodView tall = scenegraph::lodViewFor(1600, 0.785398f);
+    scenegraph::setPartRanges(lod->getChild(0), segment, tall);
+    auto* first = static_cast<SoLOD*>(static_cast<SoGroup*>(lod->getChild(0))->getChild(0));
+    EXPECT_FLOAT_EQ(first->range[0],
+                    scenegraph::partSwitchDistance(part, segment.partError_mm, tall));
 }

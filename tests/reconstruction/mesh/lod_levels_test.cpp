@@ -1,10 +1,13 @@
 #include "reconstruction/mesh/lod_levels.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include "reconstruction/synthetic/synthetic_well.h"
 #include "reconstruction/well_geometry.h"
@@ -112,4 +115,91 @@ TEST(LodLevelsTest, NeighbouringSegmentsShareTheirBoundaryRingAtEveryLevelPair) 
                         << " vertex " << k;
             }
     }
+}
+
+namespace {
+// Triangles of the strips in indices [begin, end) (each strip ended by -1).
+std::size_t stripTriangles(const std::vector<std::int32_t>& indices, std::size_t begin,
+                           std::size_t end) {
+    std::size_t triangles = 0, run = 0;
+    for (std::size_t i = begin; i < end; ++i)
+        if (indices[i] < 0) {
+            triangles += run >= 3 ? run - 2 : 0;
+            run = 0;
+        } else {
+            ++run;
+        }
+    return triangles;
+}
+
+// Rings of `points` vertices in a mesh built ring by ring.
+std::size_t rings(const Mesh& mesh, std::size_t points) {
+    return mesh.positions.size() / points;
+}
+}  // namespace
+
+TEST(LodLevelsTest, FullDetailPartsTileLevelZeroAndEndOnItsRings) {
+    const WellGeometry g(breakoutWell(), GeometryOptions{});
+    const std::size_t ring = static_cast<std::size_t>(g.sampler().samples());
+    for (std::size_t s = 0; s < g.segmentCount(); ++s) {
+        const SegmentMesh segment = g.buildSegment(s);
+        const Mesh& full = segment.levels.front();
+        ASSERT_EQ(segment.parts.size(), 4u) << s;
+        EXPECT_FLOAT_EQ(segment.partError_mm, static_cast<float>(g.options().shapeTolerance_mm));
+        EXPECT_EQ(segment.parts.front().firstRow, segment.firstRow);
+        EXPECT_EQ(segment.parts.back().lastRow, segment.lastRow);
+        EXPECT_EQ(segment.parts.front().stripBegin, 0u);
+        EXPECT_EQ(segment.parts.back().stripEnd, full.stripIndices.size());
+        std::size_t triangles = 0;
+        for (std::size_t p = 0; p < segment.parts.size(); ++p) {
+            const DetailPart& part = segment.parts[p];
+            if (p > 0) {
+                EXPECT_EQ(part.firstRow, segment.parts[p - 1].lastRow);
+                EXPECT_EQ(part.stripBegin, segment.parts[p - 1].stripEnd);
+            }
+            // A quarter of the segment, give or take a row; one strip per pair of rows.
+            EXPECT_NEAR(g.table().depth_m[part.lastRow] - g.table().depth_m[part.firstRow], 0.25,
+                        0.003);
+            const std::size_t partTriangles =
+                stripTriangles(full.stripIndices, part.stripBegin, part.stripEnd);
+            EXPECT_EQ(partTriangles, (part.lastRow - part.firstRow) * 2 * ring);
+            triangles += partTriangles;
+            // The reduced copy begins and ends on level 0's rings of the same rows, so a
+            // part meets its neighbours without a crack whichever copy each shows.
+            const auto& reduced = part.reduced.positions;
+            ASSERT_GE(reduced.size(), 2 * ring);
+            const std::size_t a = (part.firstRow - segment.firstRow) * ring,
+                              b = (part.lastRow - segment.firstRow) * ring;
+            for (std::size_t k = 0; k < ring; ++k) {
+                ASSERT_EQ(reduced[k], full.positions[a + k]) << s << "/" << p;
+                ASSERT_EQ(reduced[reduced.size() - ring + k], full.positions[b + k])
+                    << s << "/" << p;
+            }
+            EXPECT_LT(part.reduced.triangleCount(), partTriangles);
+            // Its bounding sphere holds every vertex of the part.
+            for (std::size_t v = a; v < b + ring; ++v)
+                ASSERT_LE(glm::length(full.positions[v] - part.centre), part.radius + 1e-4f);
+        }
+        EXPECT_EQ(triangles, full.triangleCount());
+    }
+    // In the gauge hole a reduced part keeps a section per 5 cm; where the 1 m breakout
+    // starts (5.2 m, in segment 5's first part) it keeps the rows either side of the step.
+    const SegmentMesh gauge = g.buildSegment(2), breakout = g.buildSegment(5);
+    for (const DetailPart& part : gauge.parts) EXPECT_LE(rings(part.reduced, ring), 7u);
+    const DetailPart& step = breakout.parts[0];
+    ASSERT_LT(g.table().depth_m[step.firstRow], kBreakoutTop_m);
+    ASSERT_GT(g.table().depth_m[step.lastRow], kBreakoutTop_m);
+    auto ringAt = [&](const Mesh& mesh, double depth) {  // scene y is minus the depth
+        for (std::size_t v = 0; v < mesh.positions.size(); v += ring)
+            if (std::abs(mesh.positions[v].y + depth) < 1e-4) return true;
+        return false;
+    };
+    EXPECT_TRUE(ringAt(step.reduced, kBreakoutTop_m - 0.0025));
+    EXPECT_TRUE(ringAt(step.reduced, kBreakoutTop_m));
+    float widest = 0.0f;  // the breakout's arms reach 25 mm further in the reduced copy too
+    for (std::size_t v = 0; v < step.reduced.positions.size(); ++v) {
+        const glm::vec3 p = step.reduced.positions[v];
+        widest = std::max(widest, std::hypot(p.x, p.z));
+    }
+    EXPECT_NEAR(widest, (8.5 * 25.4 / 2.0 + 25.0) / 1000.0, 0.002);
 }
