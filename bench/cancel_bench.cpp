@@ -29,13 +29,14 @@ int main(int argc, char** argv) {
         const auto opened = Clock::now();
         WellLoadPipeline pipeline(WellSource{argv[1], {}, {}}, LoadOptions{}, Wellhead{});
         pipeline.start();
-        double preview = -1.0, firstSegment = -1.0, whole = -1.0, finished = -1.0;
+        double firstStretch = -1.0, firstSegment = -1.0, whole = -1.0, finished = -1.0;
         auto since = [&] {
             return std::chrono::duration<double, std::milli>(Clock::now() - opened).count();
         };
         for (;;) {
             auto event = pipeline.events().waitPop();
-            if (std::holds_alternative<LoadPreview>(*event) && preview < 0) preview = since();
+            if (std::holds_alternative<LoadStretch>(*event) && firstStretch < 0)
+                firstStretch = since();
             if (std::holds_alternative<SegmentMesh>(*event) && firstSegment < 0)
                 firstSegment = since();
             if (std::holds_alternative<LoadStarted>(*event)) whole = since();
@@ -46,9 +47,9 @@ int main(int argc, char** argv) {
             }
         }
         std::printf(
-            "| open to preview | to first segment | to whole geometry | to last segment |\n"
+            "| open to first stretch | to first segment | to whole geometry | to last segment |\n"
             "|---|---|---|---|\n| %.0f ms | %.0f ms | %.0f ms | %.0f ms |\n\n",
-            preview, firstSegment, whole, finished);
+            firstStretch, firstSegment, whole, finished);
     }
     std::printf("| cancel after (ms) | stopped while | cancel to stop (ms) |\n|---|---|---|\n");
     for (int delay : delays) {

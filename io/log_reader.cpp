@@ -72,6 +72,7 @@ LoadedLog accumulate(const std::function<LogInfo(const ChunkConsumer&, const Str
             }
         }
         t.append(chunk);
+        if (stream.onChunk) stream.onChunk(chunk);
     };
     loaded.info = read(consumer, s);
     if (loaded.info.cancelled) throw ReadCancelled(loaded.info.file);

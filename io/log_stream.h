@@ -26,6 +26,9 @@ struct StreamOptions {
     // Called once before the first chunk, with the curves and roles known
     // (info.rows still 0) and an estimate of the rows to come (for reserving).
     std::function<void(const LogInfo& info, std::size_t estimatedRows)> onStart;
+    // loadCaliperLog only: shown each chunk once it is kept (on the reading thread), so that
+    // another stage may work on the rows read so far while the rest is read.
+    std::function<void(const SectionTable& chunk)> onChunk;
 };
 
 // Receives sections in increasing depth order, in the product's units.

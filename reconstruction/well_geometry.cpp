@@ -27,9 +27,8 @@ double valueAt(const std::vector<double>& curve, std::size_t row) {
 // orientation reading never produces a NaN position: one backward search per
 // block, usually of one row.
 std::vector<double> carriedIntoBlocks(const std::vector<double>& curve, std::size_t rows,
-                                      std::size_t blockRows) {
+                                      std::size_t blockRows, double carried) {
     std::vector<double> out;
-    double carried = 0.0;
     for (std::size_t first = 0; first < rows; first += blockRows) {
         out.push_back(carried);
         const std::size_t last = std::min({rows, first + blockRows, curve.size()});
@@ -71,6 +70,7 @@ WellGeometry::WellGeometry(std::shared_ptr<const io::SectionTable> table,
       m_sampler(sectionKnotCount(m_table ? m_table->armCount : 3), options.splinePoints) {
     checkDrawable(*m_table);
     markMeasuredRows();
+    if (cancelled()) throw GeometryCancelled();
     computePathAndFrames();
     cutSegments();
 }
@@ -83,6 +83,7 @@ void WellGeometry::markMeasuredRows() {
     const int needed = minValidArms(t.armCount, m_options.minValidArmFraction);
     m_measured.resize(rows);
     for (std::size_t i = 0; i < rows; ++i) {
+        if (i % 65536 == 0 && cancelled()) throw GeometryCancelled();
         m_measured[i] = countValidArms(t.radii(i), t.armCount, m_options.minArmRadius_mm,
                                        m_options.maxArmRadius_mm) >= needed;
         m_measuredRows += m_measured[i];
@@ -109,11 +110,13 @@ void WellGeometry::computePathAndFrames() {
         m_path = interpolateSurveyPath(tiedToSurface(m_options.survey), t.depth_m);
     } else {
         m_path.reserve(rows);
-        prefaultPages(m_path.data(), rows * sizeof(PathPoint), threads);
+        prefaultPages(m_path.data(), rows * sizeof(PathPoint), threads, m_options.cancel);
+        if (cancelled()) throw GeometryCancelled();  // before the rest is faulted in by one thread
         m_path.resize(rows);
     }
     m_frames = FillArray<SectionFrame>(rows);
-    prefaultPages(m_frames.data(), rows * sizeof(SectionFrame), threads);
+    prefaultPages(m_frames.data(), rows * sizeof(SectionFrame), threads, m_options.cancel);
+    if (cancelled()) throw GeometryCancelled();
     m_orientation.resize(rows);
 
     // Each block computes its rows' minimum-curvature steps and frames from
@@ -123,8 +126,9 @@ void WellGeometry::computePathAndFrames() {
     const std::size_t blocks = (rows + kBlockRows - 1) / kBlockRows;
     std::vector<double> startInc, startAzi;
     if (!fromSurvey) {
-        startInc = carriedIntoBlocks(t.devi_deg, rows, kBlockRows);
-        startAzi = carriedIntoBlocks(t.hazi_deg, rows, kBlockRows);
+        const std::optional<PathPoint>& from = m_options.continueFrom;
+        startInc = carriedIntoBlocks(t.devi_deg, rows, kBlockRows, from ? from->inc_deg : 0.0);
+        startAzi = carriedIntoBlocks(t.hazi_deg, rows, kBlockRows, from ? from->azi_deg : 0.0);
     }
     forEachBlockInOrder(
         blocks, threads,
@@ -187,6 +191,11 @@ void WellGeometry::computeSteps(std::size_t first, std::size_t last, double inc,
             p.tvd = s.dTvd;
             p.dogleg_deg = glm::degrees(s.dogleg_rad);
             p.dls_degPer30m = doglegSeverity_degPer30m(p.dogleg_deg, p.md - mdBefore);
+        } else if (m_options.continueFrom) {
+            p = *m_options.continueFrom;  // placed by the stretch before, in absolute terms
+            current.set(p.inc_deg, p.azi_deg);
+            inc = p.inc_deg;
+            azi = p.azi_deg;
         } else {
             // Measured depth counts from the depth reference at the wellhead: the
             // first section is tied to a vertical station there (docs/conventions.md,

@@ -3,6 +3,7 @@
 #include <atomic>
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -39,6 +40,11 @@ struct GeometryOptions {
     // A section with fewer valid arms than minValidArms(armCount, this) has no
     // data: it is neither drawn nor analysed (docs/analysis.md, "No data").
     double minValidArmFraction = kDefaultMinValidArmFraction;
+    // A stretch of a longer log read in chunks (reconstruction/load/well_load_pipeline.h): its
+    // first row is a row the stretch before already placed, at this path point (position,
+    // carried inclination and azimuth). The rows after it are then placed exactly as in the
+    // whole log's geometry, bit for bit. Unused with a survey (its path is per row already).
+    std::optional<PathPoint> continueFrom;
     // Workers that compute the path and the section frames (the result does
     // not depend on it).
     int threads = 1;

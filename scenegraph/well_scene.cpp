@@ -11,6 +11,7 @@
 #include <Inventor/nodes/SoShapeHints.h>
 
 #include <algorithm>
+#include <limits>
 
 #include <glm/geometric.hpp>
 
@@ -44,30 +45,42 @@ WellScene::WellScene() : m_root(new SoSeparator) {
 void WellScene::setPath(const reconstruction::WellGeometry& geometry, double spacing_m) {
     assertMainThread("WellScene::setPath");
     m_pathGroup->removeAllChildren();
-    const auto& depth = geometry.table().depth_m;
-    auto* coords = new SoCoordinate3;
-    int n = 0;
-    double next = depth.front();
-    for (std::size_t row = 0; row < depth.size(); ++row) {
-        if (depth[row] < next && row + 1 != depth.size()) continue;
-        const glm::dvec3 p = reconstruction::toScene(geometry.centre(row));
-        coords->point.set1Value(n++, static_cast<float>(p.x), static_cast<float>(p.y),
-                                static_cast<float>(p.z));
-        next = depth[row] + spacing_m;
+    m_pathCoords = nullptr;
+    extendPath(geometry, spacing_m);
+}
+
+void WellScene::extendPath(const reconstruction::WellGeometry& geometry, double spacing_m) {
+    assertMainThread("WellScene::extendPath");
+    if (!m_pathCoords) {
+        auto* style = new SoDrawStyle;
+        style->lineWidth = 2.0f;
+        auto* light = new SoLightModel;
+        light->model = SoLightModel::BASE_COLOR;
+        auto* colour = new SoMaterial;
+        colour->diffuseColor.setValue(0.2f, 0.55f, 0.9f);
+        m_pathCoords = new SoCoordinate3;
+        m_pathCoords->point.setNum(0);
+        m_pathLine = new SoLineSet;
+        m_pathGroup->addChild(style);
+        m_pathGroup->addChild(light);
+        m_pathGroup->addChild(colour);
+        m_pathGroup->addChild(m_pathCoords);
+        m_pathGroup->addChild(m_pathLine);
+        m_pathNext = -std::numeric_limits<double>::infinity();
+        m_pathEnd = -std::numeric_limits<double>::infinity();
     }
-    auto* style = new SoDrawStyle;
-    style->lineWidth = 2.0f;
-    auto* light = new SoLightModel;
-    light->model = SoLightModel::BASE_COLOR;
-    auto* colour = new SoMaterial;
-    colour->diffuseColor.setValue(0.2f, 0.55f, 0.9f);
-    auto* line = new SoLineSet;
-    line->numVertices.setValue(n);
-    m_pathGroup->addChild(style);
-    m_pathGroup->addChild(light);
-    m_pathGroup->addChild(colour);
-    m_pathGroup->addChild(coords);
-    m_pathGroup->addChild(line);
+    const auto& depth = geometry.table().depth_m;
+    int n = m_pathCoords->point.getNum();
+    for (std::size_t row = 0; row < depth.size(); ++row) {
+        if (depth[row] <= m_pathEnd) continue;  // drawn with the stretch before
+        if (depth[row] < m_pathNext && row + 1 != depth.size()) continue;
+        const glm::dvec3 p = reconstruction::toScene(geometry.centre(row));
+        m_pathCoords->point.set1Value(n++, static_cast<float>(p.x), static_cast<float>(p.y),
+                                      static_cast<float>(p.z));
+        m_pathNext = depth[row] + spacing_m;
+    }
+    if (!depth.empty()) m_pathEnd = std::max(m_pathEnd, depth.back());
+    m_pathLine->numVertices.setValue(n);
 }
 
 void WellScene::addSegment(const reconstruction::SegmentMesh& segment) {

@@ -11,6 +11,8 @@
 #include "scenegraph/node_ref.h"
 #include "scenegraph/segment_node_builder.h"
 
+class SoCoordinate3;
+class SoLineSet;
 class SoLOD;
 
 namespace caliper3d::scenegraph {
@@ -44,6 +46,9 @@ public:
 
     // Draws the well path (decimated to about one point per `spacing_m`).
     void setPath(const reconstruction::WellGeometry& geometry, double spacing_m = 1.0);
+    // Draws the path on past what is drawn: the rows of `stretch` below the last one drawn
+    // (a streamed load's stretches arrive in order, each starting where the last ended).
+    void extendPath(const reconstruction::WellGeometry& stretch, double spacing_m = 1.0);
     // Segments arrive in order (segment.index = segmentCount()).
     void addSegment(const reconstruction::SegmentMesh& segment);
     // Path and every segment's coarse levels, built here on the calling (main) thread.
@@ -90,6 +95,10 @@ private:
     NodeRef<SoSeparator> m_root;
     SoSeparator* m_pathGroup = nullptr;
     SoSeparator* m_segments = nullptr;
+    SoCoordinate3* m_pathCoords = nullptr;  // null until a path is drawn
+    SoLineSet* m_pathLine = nullptr;
+    double m_pathNext = 0.0;  // measured depth of the next point drawn, at the earliest
+    double m_pathEnd = 0.0;   // measured depth of the last row drawn
     LodView m_view;
     std::vector<Record> m_records;
     std::size_t m_fullTriangles = 0;

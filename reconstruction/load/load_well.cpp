@@ -55,43 +55,6 @@ LoadedWell loadWell(const WellSource& source, const LoadOptions& options, const 
     return out;
 }
 
-LoadedWell loadWellPreview(const WellSource& source, const LoadOptions& options,
-                           const Wellhead& origin, std::size_t rows) {
-    LoadedWell out;
-    try {
-        GeometryOptions geometry = geometryOptions(options);
-        if (!source.surveyPath.empty())
-            geometry.survey =
-                surveyStations(readCheckedSurvey(source.surveyPath, options.read, nullptr).table);
-        if (source.wellhead) geometry.wellheadOffset = wellheadOffset(*source.wellhead, origin);
-        io::SectionTable table;
-        std::atomic<bool> enough{false};
-        io::StreamOptions stream;
-        stream.threads = 1;
-        stream.blockBytes = 1u << 20;
-        stream.cancel = &enough;
-        const io::LogInfo info = io::streamCaliperLog(
-            source.path, options.read,
-            [&](const io::SectionTable& chunk) {
-                if (table.rowCount() == 0)
-                    table = chunk;
-                else
-                    table.append(chunk);
-                const bool stop = options.cancel && options.cancel->load();
-                if (table.rowCount() >= rows || stop) enough.store(true);
-            },
-            stream);
-        if (!info.cancelled || table.rowCount() < rows || table.armCount == 0) return {};
-        table.source = source.path;
-        resolveHoleAzimuth(table, io::holeAzimuthPlan(info, !source.surveyPath.empty()), nullptr);
-        out.table = std::make_shared<const io::SectionTable>(std::move(table));
-        out.geometry = std::make_shared<const WellGeometry>(out.table, geometry);
-    } catch (const std::exception&) {
-        return {};
-    }
-    return out;
-}
-
 Wellhead sceneOrigin(const std::vector<WellSource>& wells) {
     return !wells.empty() && wells.front().wellhead ? *wells.front().wellhead : Wellhead{};
 }

@@ -83,15 +83,6 @@ CheckedSurvey readCheckedSurvey(const std::string& path, const io::ReadOptions& 
                                 io::Diagnostics* diagnostics);
 
 // The scene origin: the first well's wellhead (zero when none is given).
-// The first `rows` rows of the well (or a few more: whole chunks), loaded as loadWell loads
-// the whole, for a first picture while the rest is read: the log is read only that far, the
-// hole azimuth settled by the same plan, the geometry built with the same options, so its
-// complete segments are those of the whole well, bit for bit. No warnings (the whole load
-// gives them). Returns an empty LoadedWell when the log has no more than `rows` rows (there is
-// nothing to gain) or when the prefix cannot be loaded (the whole load will say why).
-LoadedWell loadWellPreview(const WellSource& source, const LoadOptions& options,
-                           const Wellhead& origin, std::size_t rows);
-
 Wellhead sceneOrigin(const std::vector<WellSource>& wells);
 
 }  // namespace caliper3d::reconstruction

@@ -11,6 +11,12 @@ io::SectionTable loadWellTable(const std::string& path, const io::ReadOptions& o
                                const std::atomic<bool>* cancel) {
     io::StreamOptions stream;
     stream.cancel = cancel;  // checked per block: ReadCancelled
+    return loadWellTable(path, options, surveyGiven, diagnostics, stream);
+}
+
+io::SectionTable loadWellTable(const std::string& path, const io::ReadOptions& options,
+                               bool surveyGiven, io::Diagnostics* diagnostics,
+                               const io::StreamOptions& stream) {
     io::LoadedLog loaded = io::loadCaliperLog(path, options, stream);
     if (loaded.table.armCount == 0)
         throw io::ParseError(path, 0, 0,

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "io/diagnostics.h"
+#include "io/log_stream.h"
 #include "io/read_options.h"
 #include "io/section_table.h"
 
@@ -20,5 +21,9 @@ namespace caliper3d::reconstruction {
 io::SectionTable loadWellTable(const std::string& path, const io::ReadOptions& options,
                                bool surveyGiven, io::Diagnostics* diagnostics,
                                const std::atomic<bool>* cancel = nullptr);
+// The same with the reader's hooks (io::StreamOptions::onStart, onChunk) and cancel token.
+io::SectionTable loadWellTable(const std::string& path, const io::ReadOptions& options,
+                               bool surveyGiven, io::Diagnostics* diagnostics,
+                               const io::StreamOptions& stream);
 
 }  // namespace caliper3d::reconstruction

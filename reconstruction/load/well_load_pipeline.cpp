@@ -9,14 +9,11 @@ namespace caliper3d::reconstruction {
 
 WellLoadPipeline::WellLoadPipeline(Loader loader) : m_loader(std::move(loader)) {}
 
-WellLoadPipeline::WellLoadPipeline(WellSource source, LoadOptions options, Wellhead origin)
-    : WellLoadPipeline([this, source, options, origin]() mutable {
-          options.cancel = &m_cancelled;  // a cancel stops the read too, within a block
-          return loadWell(source, options, origin);
-      }) {
-    m_preview = [this, source = std::move(source), options = std::move(options), origin]() mutable {
-        options.cancel = &m_cancelled;
-        return loadWellPreview(source, options, origin, kPreviewRows);
+WellLoadPipeline::WellLoadPipeline(WellSource source, LoadOptions options, Wellhead origin) {
+    m_streamed = [this, source = std::move(source), options = std::move(options), origin](
+                     const StreamedLoadSink& sink, std::size_t* sent) mutable {
+        options.cancel = &m_cancelled;  // a cancel stops the read too, within a block
+        return loadWellStreamed(source, options, origin, sink, sent);
     };
 }
 
@@ -38,31 +35,36 @@ void WellLoadPipeline::start() {
 }
 
 void WellLoadPipeline::run() {
+    std::size_t built = 0;
     try {
-        // The top of a long log first: its complete segments are the whole well's.
-        std::size_t sent = 0;
-        if (m_preview) {
-            const LoadedWell preview = m_preview();
-            if (preview.geometry && preview.geometry->segmentCount() > 1 && !m_cancelled.load()) {
-                m_events.push(LoadPreview{preview.geometry});
-                for (; sent + 1 < preview.geometry->segmentCount(); ++sent)
-                    m_events.push(buildCoarseSegment(*preview.geometry, sent));
-            }
+        LoadedWell well;
+        if (m_streamed) {
+            StreamedLoadSink sink;
+            sink.stretch = [this](std::shared_ptr<const WellGeometry> stretch) {
+                if (!m_cancelled.load()) m_events.push(LoadStretch{std::move(stretch)});
+            };
+            sink.segment = [this, &built](SegmentMesh&& segment) {
+                if (m_cancelled.load()) return;
+                m_events.push(std::move(segment));
+                ++built;
+            };
+            std::size_t sent = 0;
+            well = m_streamed(sink, &sent);
+        } else {
+            well = m_loader();
         }
-        LoadedWell well = m_loader();
         const std::shared_ptr<const WellGeometry> geometry = well.geometry;
         m_events.push(LoadStarted{geometry, std::move(well.diagnostics)});
-        std::size_t built = sent;
-        for (std::size_t s = sent; s < geometry->segmentCount(); ++s) {
+        for (std::size_t s = built; s < geometry->segmentCount(); ++s) {
             if (m_cancelled.load()) break;
             m_events.push(buildCoarseSegment(*geometry, s));
             ++built;
         }
         m_events.push(LoadFinished{built});
     } catch (const io::ReadCancelled&) {
-        m_events.push(LoadFinished{0});  // cancelled while reading: nothing was shown
+        m_events.push(LoadFinished{built});  // cancelled while reading: the segments streamed
     } catch (const GeometryCancelled&) {
-        m_events.push(LoadFinished{0});  // cancelled while building the path and frames
+        m_events.push(LoadFinished{built});  // cancelled while building the path and frames
     } catch (const std::exception& e) {
         m_events.push(LoadFailed{e.what()});
     }

@@ -10,6 +10,7 @@
 #include "io/diagnostics.h"
 #include "io/section_table.h"
 #include "reconstruction/load/load_well.h"
+#include "reconstruction/load/streamed_load.h"
 #include "reconstruction/parallel/segment_queue.h"
 #include "reconstruction/well_geometry.h"
 
@@ -22,10 +23,11 @@ struct LoadStarted {
     std::shared_ptr<const WellGeometry> geometry;
     io::Diagnostics diagnostics;
 };
-// Sent first when the start of a long log was read quickly: its geometry (the path of the
-// first rows) and, after it, that prefix's complete segments, which are the whole well's first
-// segments; LoadStarted with the whole geometry follows, then the remaining segments.
-struct LoadPreview {
+// Sent while the log is still being read, by a streamed load: the geometry of the next
+// stretch of rows (the path extended from where the last stretch ended), then the segments it
+// completes, which are the whole well's segments bit for bit. LoadStarted with the whole
+// geometry follows once the log is read, then the remaining segments.
+struct LoadStretch {
     std::shared_ptr<const WellGeometry> geometry;
 };
 struct LoadFinished {
@@ -34,9 +36,9 @@ struct LoadFinished {
 struct LoadFailed {
     std::string message;
 };
-using LoadEvent = std::variant<LoadPreview, LoadStarted, SegmentMesh, LoadFinished, LoadFailed>;
+using LoadEvent = std::variant<LoadStretch, LoadStarted, SegmentMesh, LoadFinished, LoadFailed>;
 
-// Owns one worker thread that loads a well (loadWell, or the loader it is
+// Owns one worker thread that loads a well (streamed, or by the loader it is
 // given), then pushes its segment meshes into its queue. Makes no Coin or Qt
 // call. Cancelled by a token checked per segment; the destructor cancels and
 // joins.
@@ -45,10 +47,9 @@ public:
     using Loader = std::function<LoadedWell()>;
     using Reader = std::function<io::SectionTable()>;
 
-    // Loads `source` with loadWell on the worker (survey, log, geometry and
-    // their warnings), `origin` being the scene origin. A log longer than
-    // kPreviewRows rows is previewed first (LoadPreview): a first picture of its
-    // top while the rest is read.
+    // Loads `source` streamed (loadWellStreamed: the log read on a reading thread while this
+    // worker, the meshing thread, sends each stretch read and its segments), `origin` being
+    // the scene origin; then the whole well's geometry and warnings and the rest.
     WellLoadPipeline(WellSource source, LoadOptions options, Wellhead origin);
     explicit WellLoadPipeline(Loader loader);
     // A table from `reader` (e.g. one made in memory), reconstructed with
@@ -58,8 +59,6 @@ public:
     WellLoadPipeline(const WellLoadPipeline&) = delete;
     WellLoadPipeline& operator=(const WellLoadPipeline&) = delete;
 
-    static constexpr std::size_t kPreviewRows = 4096;
-
     void start();
     void cancel() { m_cancelled.store(true); }
     bool cancelled() const { return m_cancelled.load(); }
@@ -68,8 +67,10 @@ public:
 private:
     void run();
 
+    using StreamedLoader = std::function<LoadedWell(const StreamedLoadSink&, std::size_t*)>;
+
     Loader m_loader;
-    Loader m_preview;  // may be empty
+    StreamedLoader m_streamed;  // when set, used instead of m_loader
     HandOffQueue<LoadEvent> m_events;
     std::atomic<bool> m_cancelled{false};
     std::thread m_worker;

@@ -16,7 +16,7 @@
 
 namespace caliper3d::reconstruction {
 
-void prefaultPages(void* data, std::size_t bytes, int threads) {
+void prefaultPages(void* data, std::size_t bytes, int threads, const std::atomic<bool>* cancel) {
 #if defined(__linux__)
     const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
     if (bytes == 0 || page == 0) return;
@@ -31,6 +31,7 @@ void prefaultPages(void* data, std::size_t bytes, int threads) {
     forEachBlockInOrder(
         chunks, threads,
         [&](std::size_t chunk, std::size_t) {
+            if (cancel && cancel->load(std::memory_order_relaxed)) return;
             char* const first = begin + chunk * kChunk;
             const std::size_t length = std::min(static_cast<std::size_t>(end - first), kChunk);
             // Refused by an older kernel (EINVAL): the first write faults instead.
@@ -41,6 +42,7 @@ void prefaultPages(void* data, std::size_t bytes, int threads) {
     (void)data;
     (void)bytes;
     (void)threads;
+    (void)cancel;
 #endif
 }
 

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <atomic>
+
 #include <cstddef>
 
 namespace caliper3d::reconstruction {
@@ -12,6 +14,8 @@ namespace caliper3d::reconstruction {
 // (5.14 and later), which is also cheaper than a page fault per page; where
 // it is unavailable the pages are faulted in when first written, as before.
 // Changes no byte of the buffer.
-void prefaultPages(void* data, std::size_t bytes, int threads);
+// Stops early (the pages left fault on first write instead) once `cancel` is set.
+void prefaultPages(void* data, std::size_t bytes, int threads,
+                   const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace caliper3d::reconstruction

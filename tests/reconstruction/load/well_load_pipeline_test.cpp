@@ -49,39 +49,65 @@ std::vector<LoadEvent> drainAll(WellLoadPipeline& pipeline) {
 
 }  // namespace
 
-TEST(WellLoadPipelineTest, PreviewsTheTopThenLoadsTheWholeAndItsRemainingSegments) {
+TEST(WellLoadPipelineTest, StreamsStretchesAndTheirSegmentsWhileReadingThenTheWholeWell) {
     WellLoadPipeline pipeline(WellSource{wellFile(), {}, {}}, LoadOptions{}, Wellhead{});
     pipeline.start();
     const std::vector<LoadEvent> events = drainAll(pipeline);
-    // The first 4,096 rows (about 10 m) come first, then the whole well.
-    ASSERT_TRUE(std::holds_alternative<LoadPreview>(events.front()));
-    const auto& preview = std::get<LoadPreview>(events.front()).geometry;
-    EXPECT_GE(preview->table().rowCount(), WellLoadPipeline::kPreviewRows);
-    EXPECT_LT(preview->table().rowCount(), 24'001u);
+    // A stretch of the rows read so far comes first, its segments after it; the whole
+    // geometry once the log is read, then the segments not streamed.
+    ASSERT_TRUE(std::holds_alternative<LoadStretch>(events.front()));
     std::shared_ptr<const WellGeometry> whole;
+    std::vector<std::shared_ptr<const WellGeometry>> stretches;
     std::vector<const SegmentMesh*> segments;
     std::size_t beforeWhole = 0;
     for (const LoadEvent& e : events) {
         if (const auto* started = std::get_if<LoadStarted>(&e)) whole = started->geometry;
+        if (const auto* stretch = std::get_if<LoadStretch>(&e)) {
+            EXPECT_FALSE(whole);
+            stretches.push_back(stretch->geometry);
+        }
         if (const auto* segment = std::get_if<SegmentMesh>(&e)) {
             segments.push_back(segment);
             if (!whole) ++beforeWhole;
         }
     }
     ASSERT_TRUE(whole);
-    EXPECT_EQ(beforeWhole, preview->segmentCount() - 1);             // its complete segments
+    EXPECT_GE(beforeWhole, 2u);
     EXPECT_EQ(std::get<LoadFinished>(events.back()).segments, 60u);  // 1 m segments in all
     ASSERT_EQ(segments.size(), 60u);
     for (std::size_t s = 0; s < segments.size(); ++s) {
         EXPECT_EQ(segments[s]->index, s);
         EXPECT_EQ(segments[s]->firstLevel, kFirstCoarseLevel);  // finer ones near the camera
+        EXPECT_EQ(segments[s]->firstRow, whole->segmentRows(s).first);
+        EXPECT_EQ(segments[s]->lastRow, whole->segmentRows(s).second);
     }
-    // The preview's segments are the whole well's, bit for bit.
+    // Each stretch starts on the row the one before placed last, and places every row as
+    // the whole geometry does, bit for bit.
+    std::size_t row = 0;
+    for (const auto& stretch : stretches) {
+        const std::vector<double>& depth = stretch->table().depth_m;
+        while (row < whole->table().rowCount() && whole->table().depth_m[row] < depth.front())
+            ++row;
+        ASSERT_EQ(whole->table().depth_m[row], depth.front());
+        for (std::size_t i = 0; i < depth.size(); ++i) {
+            const PathPoint &a = stretch->path()[i], &b = whole->path()[row + i];
+            ASSERT_EQ(a.north, b.north) << row + i;
+            ASSERT_EQ(a.east, b.east) << row + i;
+            ASSERT_EQ(a.tvd, b.tvd) << row + i;
+            ASSERT_EQ(a.inc_deg, b.inc_deg) << row + i;
+            ASSERT_EQ(a.azi_deg, b.azi_deg) << row + i;
+        }
+    }
+    // The streamed segments are the whole well's, bit for bit.
     for (std::size_t s = 0; s < beforeWhole; ++s) {
         const SegmentMesh again = buildCoarseSegment(*whole, s);
         ASSERT_EQ(again.levels.size(), segments[s]->levels.size());
-        for (std::size_t l = 0; l < again.levels.size(); ++l)
+        for (std::size_t l = 0; l < again.levels.size(); ++l) {
             EXPECT_EQ(again.levels[l].positions, segments[s]->levels[l].positions) << s << "/" << l;
+            EXPECT_EQ(again.levels[l].normals, segments[s]->levels[l].normals) << s << "/" << l;
+            EXPECT_EQ(again.levels[l].colours, segments[s]->levels[l].colours) << s << "/" << l;
+            EXPECT_EQ(again.levels[l].stripIndices, segments[s]->levels[l].stripIndices);
+        }
     }
 }
 

@@ -1,0 +1,203 @@
+#include "reconstruction/load/streamed_load.h"
+
+#include <condition_variable>
+#include <exception>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <utility>
+
+#include "io/hole_azimuth_plan.h"
+#include "io/log_stream.h"
+#include "reconstruction/load/hole_azimuth.h"
+#include "reconstruction/load/well_input.h"
+#include "reconstruction/load/well_warnings.h"
+#include "reconstruction/mesh/lod_levels.h"
+
+namespace caliper3d::reconstruction {
+
+namespace {
+
+// Rows the reading thread may hold for the meshing thread before it stops feeding it (about
+// 25 MB); the whole geometry then builds the segments not streamed.
+constexpr std::size_t kMaxPendingRows = std::size_t{1} << 18;
+
+// What the reading thread hands to the meshing thread.
+struct Handover {
+    std::mutex mutex;
+    std::condition_variable changed;
+    io::SectionTable pending;  // rows read and not yet taken, hole azimuth settled
+    bool feeding = true;       // false once the meshing thread fell too far behind or gave up
+    bool done = false;         // the reading thread has ended (whole or error set)
+    std::optional<io::SectionTable> whole;
+    std::exception_ptr error;
+};
+
+// The meshing side: the rows since the last segment boundary placed, and the segments sent.
+class StretchBuilder {
+public:
+    StretchBuilder(GeometryOptions options, const StreamedLoadSink& sink)
+        : m_options(std::move(options)), m_sink(sink) {}
+
+    // Takes rows read; builds a stretch once they complete two segments or more. Returns
+    // false when the rows cannot be drawn alone (streaming stops there).
+    bool add(io::SectionTable&& rows) {
+        if (m_rows.rowCount() == 0)
+            m_rows = std::move(rows);
+        else
+            m_rows.append(rows);
+        const std::size_t n = m_rows.rowCount();
+        if (n < 2 || m_rows.depth_m[n - 1] - m_rows.depth_m[0] < 2.0 * m_options.segmentLength_m)
+            return true;
+        return buildStretch();
+    }
+    std::size_t sent() const { return m_sent; }
+
+private:
+    bool buildStretch() {
+        GeometryOptions options = m_options;
+        options.continueFrom = m_from;
+        options.threads = 1;
+        std::shared_ptr<const WellGeometry> stretch;
+        try {
+            stretch = std::make_shared<const WellGeometry>(
+                std::make_shared<const io::SectionTable>(std::move(m_rows)), options);
+        } catch (const GeometryCancelled&) {
+            throw;
+        } catch (const std::exception&) {
+            return false;  // e.g. no caliper data in these rows: the whole geometry says why
+        }
+        const std::size_t complete = stretch->segmentCount() - 1;  // the last may grow
+        if (m_sink.stretch) m_sink.stretch(stretch);
+        for (std::size_t s = 0; s < complete; ++s) {
+            if (m_options.cancel && m_options.cancel->load()) throw GeometryCancelled();
+            SegmentMesh segment = buildCoarseSegment(*stretch, s);
+            segment.index += m_sent;
+            segment.firstRow += m_rowOffset;
+            segment.lastRow += m_rowOffset;
+            m_sink.segment(std::move(segment));
+        }
+        const std::size_t keepFrom = stretch->segmentRows(complete).first;
+        m_from = stretch->path()[keepFrom];
+        m_rows = io::SectionTable{};
+        const io::SectionTable& table = stretch->table();
+        m_rows.armCount = table.armCount;
+        m_rows.appendRows(table, keepFrom, table.rowCount());
+        m_rowOffset += keepFrom;
+        m_sent += complete;
+        return true;
+    }
+
+    GeometryOptions m_options;
+    const StreamedLoadSink& m_sink;
+    io::SectionTable m_rows;
+    std::optional<PathPoint> m_from;
+    std::size_t m_rowOffset = 0;
+    std::size_t m_sent = 0;
+};
+
+}  // namespace
+
+LoadedWell loadWellStreamed(const WellSource& source, const LoadOptions& options,
+                            const Wellhead& origin, const StreamedLoadSink& sink,
+                            std::size_t* sent) {
+    LoadedWell out;
+    GeometryOptions geometry = geometryOptions(options);
+    const bool surveyGiven = !source.surveyPath.empty();
+    if (surveyGiven)
+        geometry.survey = surveyStations(
+            readCheckedSurvey(source.surveyPath, options.read, &out.diagnostics).table);
+    if (source.wellhead) geometry.wellheadOffset = wellheadOffset(*source.wellhead, origin);
+
+    Handover handover;
+    io::Diagnostics readDiagnostics;
+    std::thread reader([&] {
+        try {
+            io::StreamOptions stream;
+            stream.cancel = options.cancel;
+            // Blocks of 2 MB: the first stretch comes sooner, and a cancel is seen within a
+            // block parsed while the meshing thread shares the cores.
+            stream.blockBytes = 2u << 20;
+            io::HoleAzimuthPlan plan;
+            stream.onStart = [&](const io::LogInfo& info, std::size_t) {
+                plan = io::holeAzimuthPlan(info, surveyGiven);
+            };
+            stream.onChunk = [&](const io::SectionTable& chunk) {
+                io::SectionTable rows = chunk;
+                resolveHoleAzimuth(rows, plan, nullptr);  // row by row: as the whole log's
+                {
+                    const std::lock_guard<std::mutex> lock(handover.mutex);
+                    if (!handover.feeding) return;
+                    if (handover.pending.rowCount() == 0)
+                        handover.pending = std::move(rows);
+                    else
+                        handover.pending.append(rows);
+                    if (handover.pending.rowCount() > kMaxPendingRows) {
+                        handover.feeding = false;
+                        handover.pending = io::SectionTable{};
+                    }
+                }
+                handover.changed.notify_one();
+            };
+            io::SectionTable whole =
+                loadWellTable(source.path, options.read, surveyGiven, &readDiagnostics, stream);
+            const std::lock_guard<std::mutex> lock(handover.mutex);
+            handover.whole = std::move(whole);
+            handover.done = true;
+        } catch (...) {
+            const std::lock_guard<std::mutex> lock(handover.mutex);
+            handover.error = std::current_exception();
+            handover.done = true;
+        }
+        handover.changed.notify_one();
+    });
+
+    StretchBuilder builder(geometry, sink);
+    try {
+        bool streaming = true;
+        for (;;) {
+            io::SectionTable rows;
+            bool done = false;
+            {
+                std::unique_lock<std::mutex> lock(handover.mutex);
+                handover.changed.wait(
+                    lock, [&] { return handover.done || handover.pending.rowCount() > 0; });
+                rows = std::move(handover.pending);
+                handover.pending = io::SectionTable{};
+                done = handover.done;
+                streaming = streaming && handover.feeding;
+            }
+            if (options.cancel && options.cancel->load()) throw GeometryCancelled();
+            if (streaming && rows.rowCount() > 0 && !builder.add(std::move(rows))) {
+                streaming = false;
+                const std::lock_guard<std::mutex> lock(handover.mutex);
+                handover.feeding = false;
+                handover.pending = io::SectionTable{};
+            }
+            if (done) break;
+        }
+    } catch (...) {
+        {
+            const std::lock_guard<std::mutex> lock(handover.mutex);
+            handover.feeding = false;
+        }
+        reader.join();
+        throw;
+    }
+    reader.join();
+    if (handover.error) std::rethrow_exception(handover.error);
+
+    if (options.cancel && options.cancel->load()) throw GeometryCancelled();
+    out.diagnostics.merge(readDiagnostics);
+    io::SectionTable& whole = *handover.whole;
+    whole.source = source.path;
+    out.table = std::make_shared<const io::SectionTable>(std::move(whole));
+    geometry.threads = 2;  // the reading thread has ended: both cores place the whole well
+    out.geometry = std::make_shared<const WellGeometry>(out.table, geometry);
+    if (options.cancel && options.cancel->load()) throw GeometryCancelled();
+    if (options.geometryWarnings) warnGeometry(*out.geometry, out.diagnostics);
+    if (sent) *sent = builder.sent();
+    return out;
+}
+
+}  // namespace caliper3d::reconstruction

@@ -1,0 +1,37 @@
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <memory>
+
+#include "reconstruction/load/load_well.h"
+#include "reconstruction/mesh/mesh.h"
+#include "reconstruction/well_geometry.h"
+
+namespace caliper3d::reconstruction {
+
+// Where a streamed load hands its work while the log is still being read.
+struct StreamedLoadSink {
+    // The geometry (path and frames) of the next stretch of rows read; its first row is the
+    // last row of the stretch before.
+    std::function<void(std::shared_ptr<const WellGeometry> stretch)> stretch;
+    // The next coarse segment (buildCoarseSegment), numbered and with rows as in the whole
+    // well's geometry, identical to it bit for bit.
+    std::function<void(SegmentMesh&& segment)> segment;
+};
+
+// loadWell, streamed: the log is read on a reading thread while this thread, the meshing
+// thread, places the rows read so far stretch by stretch (the path extended from where the
+// stretch before ended) and builds every segment a stretch completes, so coarse segments
+// appear while the rest is still being read (docs/threading.md, "Loading a well"). Once the
+// log is read the whole well is built as loadWell builds it and returned; `*sent` is how
+// many of its segments went to the sink already (the caller builds the rest from the whole
+// geometry). Stops streaming, and leaves the rest to the whole geometry, when a stretch
+// cannot be drawn alone (no caliper data in it) or the meshing falls far behind the
+// reading. Throws as loadWell does (io::ReadCancelled once options.cancel is set).
+// Makes no Coin or Qt call.
+LoadedWell loadWellStreamed(const WellSource& source, const LoadOptions& options,
+                            const Wellhead& origin, const StreamedLoadSink& sink,
+                            std::size_t* sent);
+
+}  // namespace caliper3d::reconstruction
