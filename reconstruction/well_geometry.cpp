@@ -306,4 +306,17 @@ SegmentMesh WellGeometry::buildSegment(std::size_t segment) const {
     return buildSegmentMesh(*this, segment);
 }
 
+std::vector<glm::vec3> pathLine(const WellGeometry& geometry, double spacing_m, double after_m) {
+    const auto& depth = geometry.table().depth_m;
+    std::vector<glm::vec3> points;
+    double next = -1.0e300;
+    for (std::size_t row = 0; row < depth.size(); ++row) {
+        if (depth[row] <= after_m) continue;
+        if (depth[row] < next && row + 1 != depth.size()) continue;
+        points.emplace_back(toScene(geometry.centre(row)));
+        next = depth[row] + spacing_m;
+    }
+    return points;
+}
+
 }  // namespace caliper3d::reconstruction

@@ -149,4 +149,9 @@ private:
     PeriodicSplineSampler m_sampler;
 };
 
+// The path as a line to draw: the centres (scene frame) of the rows about `spacing_m` apart
+// from the first row deeper than `after_m`, and the last row.
+std::vector<glm::vec3> pathLine(const WellGeometry& geometry, double spacing_m = 1.0,
+                                double after_m = -1.0e300);
+
 }  // namespace caliper3d::reconstruction

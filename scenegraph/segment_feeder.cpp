@@ -32,7 +32,7 @@ bool SegmentFeeder::drainOnce() {
     if (m_done) return true;
     for (auto& event : m_pipeline.events().drain(m_perTick)) {
         if (auto* stretch = std::get_if<reconstruction::LoadStretch>(&event)) {
-            m_scene.extendPath(*stretch->geometry);  // the rows read so far, until the whole
+            m_scene.extendPath(stretch->path);  // the rows read so far, until the whole
         } else if (auto* started = std::get_if<reconstruction::LoadStarted>(&event)) {
             m_scene.setPath(*started->geometry);
             if (m_callbacks.started) m_callbacks.started(*started->geometry);

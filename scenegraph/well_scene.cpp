@@ -11,7 +11,6 @@
 #include <Inventor/nodes/SoShapeHints.h>
 
 #include <algorithm>
-#include <limits>
 
 #include <glm/geometric.hpp>
 
@@ -46,10 +45,10 @@ void WellScene::setPath(const reconstruction::WellGeometry& geometry, double spa
     assertMainThread("WellScene::setPath");
     m_pathGroup->removeAllChildren();
     m_pathCoords = nullptr;
-    extendPath(geometry, spacing_m);
+    extendPath(reconstruction::pathLine(geometry, spacing_m));
 }
 
-void WellScene::extendPath(const reconstruction::WellGeometry& geometry, double spacing_m) {
+void WellScene::extendPath(const std::vector<glm::vec3>& points) {
     assertMainThread("WellScene::extendPath");
     if (!m_pathCoords) {
         auto* style = new SoDrawStyle;
@@ -66,20 +65,9 @@ void WellScene::extendPath(const reconstruction::WellGeometry& geometry, double 
         m_pathGroup->addChild(colour);
         m_pathGroup->addChild(m_pathCoords);
         m_pathGroup->addChild(m_pathLine);
-        m_pathNext = -std::numeric_limits<double>::infinity();
-        m_pathEnd = -std::numeric_limits<double>::infinity();
     }
-    const auto& depth = geometry.table().depth_m;
     int n = m_pathCoords->point.getNum();
-    for (std::size_t row = 0; row < depth.size(); ++row) {
-        if (depth[row] <= m_pathEnd) continue;  // drawn with the stretch before
-        if (depth[row] < m_pathNext && row + 1 != depth.size()) continue;
-        const glm::dvec3 p = reconstruction::toScene(geometry.centre(row));
-        m_pathCoords->point.set1Value(n++, static_cast<float>(p.x), static_cast<float>(p.y),
-                                      static_cast<float>(p.z));
-        m_pathNext = depth[row] + spacing_m;
-    }
-    if (!depth.empty()) m_pathEnd = std::max(m_pathEnd, depth.back());
+    for (const glm::vec3& p : points) m_pathCoords->point.set1Value(n++, p.x, p.y, p.z);
     m_pathLine->numVertices.setValue(n);
 }
 

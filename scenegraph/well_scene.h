@@ -46,9 +46,9 @@ public:
 
     // Draws the well path (decimated to about one point per `spacing_m`).
     void setPath(const reconstruction::WellGeometry& geometry, double spacing_m = 1.0);
-    // Draws the path on past what is drawn: the rows of `stretch` below the last one drawn
-    // (a streamed load's stretches arrive in order, each starting where the last ended).
-    void extendPath(const reconstruction::WellGeometry& stretch, double spacing_m = 1.0);
+    // Draws the path on past what is drawn, to these points (a streamed load's
+    // reconstruction::LoadStretch::path, in order).
+    void extendPath(const std::vector<glm::vec3>& points);
     // Segments arrive in order (segment.index = segmentCount()).
     void addSegment(const reconstruction::SegmentMesh& segment);
     // Path and every segment's coarse levels, built here on the calling (main) thread.
@@ -97,8 +97,6 @@ private:
     SoSeparator* m_segments = nullptr;
     SoCoordinate3* m_pathCoords = nullptr;  // null until a path is drawn
     SoLineSet* m_pathLine = nullptr;
-    double m_pathNext = 0.0;  // measured depth of the next point drawn, at the earliest
-    double m_pathEnd = 0.0;   // measured depth of the last row drawn
     LodView m_view;
     std::vector<Record> m_records;
     std::size_t m_fullTriangles = 0;

@@ -40,8 +40,15 @@ void WellLoadPipeline::run() {
         LoadedWell well;
         if (m_streamed) {
             StreamedLoadSink sink;
-            sink.stretch = [this](std::shared_ptr<const WellGeometry> stretch) {
-                if (!m_cancelled.load()) m_events.push(LoadStretch{std::move(stretch)});
+            double drawnTo = -1.0e300;  // the path line sent so far ends here
+            sink.stretch = [this, &drawnTo](std::shared_ptr<const WellGeometry> stretch) {
+                if (m_cancelled.load()) return;
+                // Points only: the stretch's table and frames are freed once its segments are
+                // built, not held in the queue until the window takes them.
+                LoadStretch event{pathLine(*stretch, 1.0, drawnTo),
+                                  stretch->table().depth_m.back()};
+                drawnTo = event.bottom_m;
+                m_events.push(std::move(event));
             };
             sink.segment = [this, &built](SegmentMesh&& segment) {
                 if (m_cancelled.load()) return;

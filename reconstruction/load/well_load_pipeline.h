@@ -6,6 +6,9 @@
 #include <string>
 #include <thread>
 #include <variant>
+#include <vector>
+
+#include <glm/vec3.hpp>
 
 #include "io/diagnostics.h"
 #include "io/section_table.h"
@@ -23,12 +26,13 @@ struct LoadStarted {
     std::shared_ptr<const WellGeometry> geometry;
     io::Diagnostics diagnostics;
 };
-// Sent while the log is still being read, by a streamed load: the geometry of the next
+// Sent while the log is still being read, by a streamed load: the path line of the next
 // stretch of rows (the path extended from where the last stretch ended), then the segments it
 // completes, which are the whole well's segments bit for bit. LoadStarted with the whole
 // geometry follows once the log is read, then the remaining segments.
 struct LoadStretch {
-    std::shared_ptr<const WellGeometry> geometry;
+    std::vector<glm::vec3> path;  // pathLine of the stretch's rows below the last one sent
+    double bottom_m = 0.0;        // measured depth of its last row
 };
 struct LoadFinished {
     std::size_t segments = 0;
