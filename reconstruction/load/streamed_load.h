@@ -14,7 +14,7 @@ namespace caliper3d::reconstruction {
 struct StreamedLoadSink {
     // The geometry (path and frames) of the next stretch of rows read; its first row is the
     // last row of the stretch before.
-    std::function<void(std::shared_ptr<const WellGeometry> stretch)> stretch;
+    std::function<void(const std::shared_ptr<const WellGeometry>& stretch)> stretch;
     // The next coarse segment (buildCoarseSegment), numbered and with rows as in the whole
     // well's geometry, identical to it bit for bit.
     std::function<void(SegmentMesh&& segment)> segment;

@@ -41,7 +41,7 @@ void WellLoadPipeline::run() {
         if (m_streamed) {
             StreamedLoadSink sink;
             double drawnTo = -1.0e300;  // the path line sent so far ends here
-            sink.stretch = [this, &drawnTo](std::shared_ptr<const WellGeometry> stretch) {
+            sink.stretch = [this, &drawnTo](const std::shared_ptr<const WellGeometry>& stretch) {
                 if (m_cancelled.load()) return;
                 // Points only: the stretch's table and frames are freed once its segments are
                 // built, not held in the queue until the window takes them.
