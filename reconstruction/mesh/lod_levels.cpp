@@ -201,9 +201,11 @@ glm::vec3 sceneCentre(const WellGeometry& g, std::size_t row) {
 // kMinPartRows rows each), each with a reduced copy: every spline point, the rows level 1's
 // shape tolerance keeps. Both copies end on the same full rings, so neighbouring parts and
 // segments meet without a crack whichever copy each shows.
+// `maxRadius_m`: the segment's largest drawn radius (SegmentMesh::maxRadius_m).
 std::vector<DetailPart> detailParts(
     const WellGeometry& g, const SegmentKnots& knots, const std::vector<LodLevel>& pyramid,
-    const Mesh& full, const std::vector<std::pair<std::size_t, std::size_t>>& strips) {
+    float maxRadius_m, const Mesh& full,
+    const std::vector<std::pair<std::size_t, std::size_t>>& strips) {
     constexpr std::size_t kParts = 4, kMinPartRows = 16;
     const std::size_t first = knots.first, last = knots.last;
     const std::size_t parts = std::min(kParts, (last - first) / kMinPartRows);
@@ -212,9 +214,6 @@ std::vector<DetailPart> detailParts(
     const std::vector<double>& depth = g.table().depth_m;
     LodLevel reducedLevel = pyramid[1];
     reducedLevel.points = pyramid[0].points;
-    float maxRadius_m = 0.0f;
-    for (double k : knots.values) maxRadius_m = std::max(maxRadius_m, static_cast<float>(k));
-    maxRadius_m *= static_cast<float>(g.options().radialExaggeration) / 1000.0f;
     std::size_t from = first;
     for (std::size_t p = 1; p <= parts; ++p) {
         std::size_t to = last;
@@ -294,7 +293,8 @@ SegmentMesh buildSegmentLevels(const WellGeometry& geometry, std::size_t segment
         if (i == 0) {
             std::vector<std::pair<std::size_t, std::size_t>> strips;
             out.levels.push_back(buildLevel(geometry, rows, l.points, &strips));
-            out.parts = detailParts(geometry, knots, pyramid, out.levels.back(), strips);
+            out.parts =
+                detailParts(geometry, knots, pyramid, out.maxRadius_m, out.levels.back(), strips);
             out.partError_mm =
                 static_cast<float>(pyramid[1].tolerance_mm * geometry.options().radialExaggeration);
         } else {
