@@ -41,13 +41,19 @@ CheckedSurvey readCheckedSurvey(const std::string& path, const io::ReadOptions& 
     return out;
 }
 
-LoadedWell loadWell(const WellSource& source, const LoadOptions& options, const Wellhead& origin) {
-    LoadedWell out;
+GeometryOptions wellGeometryOptions(const WellSource& source, const LoadOptions& options,
+                                    const Wellhead& origin, io::Diagnostics* diagnostics) {
     GeometryOptions geometry = geometryOptions(options);
     if (!source.surveyPath.empty())
-        geometry.survey = surveyStations(
-            readCheckedSurvey(source.surveyPath, options.read, &out.diagnostics).table);
+        geometry.survey =
+            surveyStations(readCheckedSurvey(source.surveyPath, options.read, diagnostics).table);
     if (source.wellhead) geometry.wellheadOffset = wellheadOffset(*source.wellhead, origin);
+    return geometry;
+}
+
+LoadedWell loadWell(const WellSource& source, const LoadOptions& options, const Wellhead& origin) {
+    LoadedWell out;
+    const GeometryOptions geometry = wellGeometryOptions(source, options, origin, &out.diagnostics);
     out.table = std::make_shared<const io::SectionTable>(loadWellTable(
         source.path, options.read, !source.surveyPath.empty(), &out.diagnostics, options.cancel));
     out.geometry = std::make_shared<const WellGeometry>(out.table, geometry);

@@ -68,6 +68,10 @@ LoadedWell loadWell(const WellSource& source, const LoadOptions& options,
 
 // Geometry options of a plain well (no survey, at the scene origin).
 GeometryOptions geometryOptions(const LoadOptions& options);
+// Geometry options of `source`: its survey read and checked first (its warnings to
+// `diagnostics`, may be null) and its wellhead placed relative to `origin`.
+GeometryOptions wellGeometryOptions(const WellSource& source, const LoadOptions& options,
+                                    const Wellhead& origin, io::Diagnostics* diagnostics);
 
 // A deviation survey as read, and how the positions it writes (TVD, N, E)
 // agree with minimum curvature from its own MD, inclination and azimuth.

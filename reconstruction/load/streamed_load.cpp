@@ -51,7 +51,6 @@ public:
             return true;
         return buildStretch();
     }
-    std::size_t sent() const { return m_sent; }
 
 private:
     bool buildStretch() {
@@ -99,15 +98,10 @@ private:
 }  // namespace
 
 LoadedWell loadWellStreamed(const WellSource& source, const LoadOptions& options,
-                            const Wellhead& origin, const StreamedLoadSink& sink,
-                            std::size_t* sent) {
+                            const Wellhead& origin, const StreamedLoadSink& sink) {
     LoadedWell out;
-    GeometryOptions geometry = geometryOptions(options);
+    GeometryOptions geometry = wellGeometryOptions(source, options, origin, &out.diagnostics);
     const bool surveyGiven = !source.surveyPath.empty();
-    if (surveyGiven)
-        geometry.survey = surveyStations(
-            readCheckedSurvey(source.surveyPath, options.read, &out.diagnostics).table);
-    if (source.wellhead) geometry.wellheadOffset = wellheadOffset(*source.wellhead, origin);
 
     Handover handover;
     io::Diagnostics readDiagnostics;
@@ -196,7 +190,6 @@ LoadedWell loadWellStreamed(const WellSource& source, const LoadOptions& options
     out.geometry = std::make_shared<const WellGeometry>(out.table, geometry);
     if (options.cancel && options.cancel->load()) throw GeometryCancelled();
     if (options.geometryWarnings) warnGeometry(*out.geometry, out.diagnostics);
-    if (sent) *sent = builder.sent();
     return out;
 }
 

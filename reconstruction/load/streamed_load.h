@@ -1,6 +1,5 @@
 #pragma once
 
-#include <cstddef>
 #include <functional>
 #include <memory>
 
@@ -24,14 +23,12 @@ struct StreamedLoadSink {
 // thread, places the rows read so far stretch by stretch (the path extended from where the
 // stretch before ended) and builds every segment a stretch completes, so coarse segments
 // appear while the rest is still being read (docs/threading.md, "Loading a well"). Once the
-// log is read the whole well is built as loadWell builds it and returned; `*sent` is how
-// many of its segments went to the sink already (the caller builds the rest from the whole
-// geometry). Stops streaming, and leaves the rest to the whole geometry, when a stretch
-// cannot be drawn alone (no caliper data in it) or the meshing falls far behind the
-// reading. Throws as loadWell does (io::ReadCancelled once options.cancel is set).
-// Makes no Coin or Qt call.
+// log is read the whole well is built as loadWell builds it and returned; the caller builds
+// the segments the sink did not get from the whole geometry. Stops streaming, and leaves the rest
+// to the whole geometry, when a stretch cannot be drawn alone (no caliper data in it) or the
+// meshing falls far behind the reading. Throws as loadWell does (io::ReadCancelled once
+// options.cancel is set). Makes no Coin or Qt call.
 LoadedWell loadWellStreamed(const WellSource& source, const LoadOptions& options,
-                            const Wellhead& origin, const StreamedLoadSink& sink,
-                            std::size_t* sent);
+                            const Wellhead& origin, const StreamedLoadSink& sink);
 
 }  // namespace caliper3d::reconstruction

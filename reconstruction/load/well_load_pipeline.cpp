@@ -10,10 +10,10 @@ namespace caliper3d::reconstruction {
 WellLoadPipeline::WellLoadPipeline(Loader loader) : m_loader(std::move(loader)) {}
 
 WellLoadPipeline::WellLoadPipeline(WellSource source, LoadOptions options, Wellhead origin) {
-    m_streamed = [this, source = std::move(source), options = std::move(options), origin](
-                     const StreamedLoadSink& sink, std::size_t* sent) mutable {
+    m_streamed = [this, source = std::move(source), options = std::move(options),
+                  origin](const StreamedLoadSink& sink) mutable {
         options.cancel = &m_cancelled;  // a cancel stops the read too, within a block
-        return loadWellStreamed(source, options, origin, sink, sent);
+        return loadWellStreamed(source, options, origin, sink);
     };
 }
 
@@ -55,8 +55,7 @@ void WellLoadPipeline::run() {
                 m_events.push(std::move(segment));
                 ++built;
             };
-            std::size_t sent = 0;
-            well = m_streamed(sink, &sent);
+            well = m_streamed(sink);
         } else {
             well = m_loader();
         }

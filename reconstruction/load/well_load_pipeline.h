@@ -71,7 +71,7 @@ public:
 private:
     void run();
 
-    using StreamedLoader = std::function<LoadedWell(const StreamedLoadSink&, std::size_t*)>;
+    using StreamedLoader = std::function<LoadedWell(const StreamedLoadSink&)>;
 
     Loader m_loader;
     StreamedLoader m_streamed;  // when set, used instead of m_loader
