@@ -1,5 +1,6 @@
 #include "reconstruction/load/streamed_load.h"
 
+#include <atomic>
 #include <condition_variable>
 #include <exception>
 #include <mutex>
@@ -27,8 +28,10 @@ struct Handover {
     std::mutex mutex;
     std::condition_variable changed;
     io::SectionTable pending;  // rows read and not yet taken, hole azimuth settled
-    bool feeding = true;       // false once the meshing thread fell too far behind or gave up
-    bool done = false;         // the reading thread has ended (whole or error set)
+    // False once the meshing thread fell too far behind or gave up; read without the lock
+    // so that the reading thread copies no more chunks from then on.
+    std::atomic<bool> feeding{true};
+    bool done = false;  // the reading thread has ended (whole or error set)
     std::optional<io::SectionTable> whole;
     std::exception_ptr error;
 };
@@ -117,6 +120,7 @@ LoadedWell loadWellStreamed(const WellSource& source, const LoadOptions& options
                 plan = io::holeAzimuthPlan(info, surveyGiven);
             };
             stream.onChunk = [&](const io::SectionTable& chunk) {
+                if (!handover.feeding.load()) return;
                 io::SectionTable rows = chunk;
                 resolveHoleAzimuth(rows, plan, nullptr);  // row by row: as the whole log's
                 {
