@@ -12,25 +12,28 @@
 
 namespace caliper3d::scenegraph {
 
-SoCamera* findCamera(SoNode* root) {
-    assertMainThread("findCamera");
+namespace {
+// The first node of `type` in a depth-first walk from `root`, or null.
+SoNode* findFirst(SoNode* root, SoType type) {
     SoSearchAction search;
-    search.setType(SoCamera::getClassTypeId());
+    search.setType(type);
     search.setInterest(SoSearchAction::FIRST);
     search.apply(root);
     SoPath* path = search.getPath();
-    return path ? static_cast<SoCamera*>(path->getTail()) : nullptr;
+    return path ? path->getTail() : nullptr;
+}
+}  // namespace
+
+SoCamera* findCamera(SoNode* root) {
+    assertMainThread("findCamera");
+    return static_cast<SoCamera*>(findFirst(root, SoCamera::getClassTypeId()));
 }
 
 float fogVisibility(SoNode* root) {
     assertMainThread("fogVisibility");
-    SoSearchAction search;
-    search.setType(SoEnvironment::getClassTypeId());
-    search.setInterest(SoSearchAction::FIRST);
-    search.apply(root);
-    SoPath* path = search.getPath();
-    if (!path) return 0.0f;
-    const auto* environment = static_cast<SoEnvironment*>(path->getTail());
+    const auto* environment =
+        static_cast<SoEnvironment*>(findFirst(root, SoEnvironment::getClassTypeId()));
+    if (!environment) return 0.0f;
     return environment->fogType.getValue() == SoEnvironment::NONE
                ? 0.0f
                : environment->fogVisibility.getValue();

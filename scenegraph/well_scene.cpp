@@ -113,8 +113,13 @@ void WellScene::setRanges(Record& record) {
 
 void WellScene::keepPartShapes(Record& record, const reconstruction::SegmentMesh& segment) {
     if (segment.firstLevel != 0) return;
-    record.shape.parts = segment.parts;
-    for (auto& part : record.shape.parts) part.reduced = {};
+    record.shape.parts.clear();
+    for (const auto& part : segment.parts) {
+        reconstruction::DetailPart shape;  // where it is, not its meshes
+        shape.centre = part.centre;
+        shape.radius = part.radius;
+        record.shape.parts.push_back(shape);
+    }
     record.shape.partError_mm = segment.partError_mm;
 }
 
