@@ -1,5 +1,6 @@
 #include "io/section_table.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace caliper3d::io {
@@ -60,6 +61,17 @@ void SectionTable::appendRows(const SectionTable& other, std::size_t first, std:
     appendRange(other.bitSize_mm, bitSize_mm, first, last, 1);
     for (std::size_t e = 0; e < other.extraCurves.size(); ++e)
         appendRange(other.extraCurves[e].values, extraCurves[e].values, first, last, 1);
+}
+
+SectionTable SectionTable::rows(std::size_t first, std::size_t last) const {
+    SectionTable out;
+    out.source = source;
+    out.armCount = armCount;
+    out.holeAzimuth = holeAzimuth;
+    for (const ExtraCurve& e : extraCurves)
+        out.extraCurves.push_back({e.mnemonic, e.unit, e.description, {}});
+    out.appendRows(*this, first, std::min(last, rowCount()));
+    return out;
 }
 
 void SectionTable::clearRows() {

@@ -55,6 +55,9 @@ struct SectionTable {
     void append(const SectionTable& other);
     // Appends rows [first, last) of `other`, whose curves match this table's.
     void appendRows(const SectionTable& other, std::size_t first, std::size_t last);
+    // Rows [first, last) as a table of their own, with this table's curves (optional and
+    // extra), source and hole-azimuth kind.
+    SectionTable rows(std::size_t first, std::size_t last) const;
     // Removes every row; the curves present and the extra-curve list stay.
     void clearRows();
     // Keeps the rows listed, in the order listed.

@@ -81,10 +81,7 @@ private:
         }
         const std::size_t keepFrom = stretch->segmentRows(complete).first;
         m_from = stretch->path()[keepFrom];
-        m_rows = io::SectionTable{};
-        const io::SectionTable& table = stretch->table();
-        m_rows.armCount = table.armCount;
-        m_rows.appendRows(table, keepFrom, table.rowCount());
+        m_rows = stretch->table().rows(keepFrom, stretch->table().rowCount());
         m_rowOffset += keepFrom;
         m_sent += complete;
         return true;

@@ -110,6 +110,35 @@ TEST(WellLoadPipelineTest, StreamsStretchesAndTheirSegmentsWhileReadingThenTheWh
     }
 }
 
+TEST(WellLoadPipelineTest, StreamsALogWithExtraCurves) {
+    // Real logs carry gamma ray and the like beside the caliper: a stretch's remaining rows
+    // carry them on into the next stretch.
+    io::SectionTable table = makeSyntheticWell(syntheticProfile("example", 20.0, 0.0025));
+    table.extraCurves.push_back({"GR", "gAPI", "gamma ray", {}});
+    for (std::size_t r = 0; r < table.rowCount(); ++r)
+        table.extraCurves[0].values.push_back(40.0 + static_cast<double>(r % 100));
+    const auto file =
+        test::scratch("pipeline_gr_" + std::to_string(static_cast<long>(::getpid())) + ".txt");
+    io::writeColumnTextFile(file.string(), table);
+    WellLoadPipeline pipeline(WellSource{file.string(), {}, {}}, LoadOptions{}, Wellhead{});
+    pipeline.start();
+    const std::vector<LoadEvent> events = drainAll(pipeline);
+    ASSERT_TRUE(std::holds_alternative<LoadFinished>(events.back()));
+    EXPECT_EQ(std::get<LoadFinished>(events.back()).segments, 20u);
+    std::shared_ptr<const WellGeometry> whole;
+    std::size_t streamed = 0;
+    for (const LoadEvent& e : events) {
+        if (const auto* started = std::get_if<LoadStarted>(&e)) whole = started->geometry;
+        if (const auto* segment = std::get_if<SegmentMesh>(&e); segment && !whole) {
+            ++streamed;
+            EXPECT_EQ(segment->firstRow, segment->index * 400);
+        }
+    }
+    ASSERT_TRUE(whole);
+    ASSERT_EQ(whole->table().extraCurves.size(), 1u);
+    EXPECT_GE(streamed, 2u);
+}
+
 TEST(WellLoadPipelineTest, ACancelBeforeTheReadEndsStopsTheReadItself) {
     WellLoadPipeline pipeline(WellSource{wellFile(), {}, {}}, LoadOptions{}, Wellhead{});
     pipeline.cancel();
