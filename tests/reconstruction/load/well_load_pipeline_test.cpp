@@ -139,6 +139,39 @@ TEST(WellLoadPipelineTest, StreamsALogWithExtraCurves) {
     EXPECT_GE(streamed, 2u);
 }
 
+TEST(WellLoadPipelineTest, StreamsTheRealLogsAsTheirWholeWells) {
+    // The window's load of each real log: every segment arrives, those streamed before the
+    // whole geometry are its own bit for bit (skipped when ../shared/data is absent).
+    const auto real = test::sharedData() / "real";
+    CALIPER3D_REQUIRE_DATA(real);
+    for (const char* name : {"1AA072209208W400_WL_0477502_STAR_FIELD.las",
+                             "1AA063409108W400_FMI_SONIC_MAIN.las", "multifinger40_data.txt"}) {
+        SCOPED_TRACE(name);
+        const auto file = real / name;
+        CALIPER3D_REQUIRE_DATA(file);
+        WellLoadPipeline pipeline(WellSource{file.string(), {}, {}}, LoadOptions{}, Wellhead{});
+        pipeline.start();
+        const std::vector<LoadEvent> events = drainAll(pipeline);
+        ASSERT_TRUE(std::holds_alternative<LoadFinished>(events.back()));
+        std::shared_ptr<const WellGeometry> whole;
+        std::vector<const SegmentMesh*> streamed;
+        for (const LoadEvent& e : events) {
+            if (const auto* started = std::get_if<LoadStarted>(&e)) whole = started->geometry;
+            if (const auto* segment = std::get_if<SegmentMesh>(&e); segment && !whole)
+                streamed.push_back(segment);
+        }
+        ASSERT_TRUE(whole);
+        EXPECT_EQ(std::get<LoadFinished>(events.back()).segments, whole->segmentCount());
+        for (const SegmentMesh* segment : streamed) {
+            const SegmentMesh again = buildCoarseSegment(*whole, segment->index);
+            ASSERT_EQ(again.levels.size(), segment->levels.size());
+            for (std::size_t l = 0; l < again.levels.size(); ++l)
+                EXPECT_EQ(again.levels[l].positions, segment->levels[l].positions)
+                    << segment->index << "/" << l;
+        }
+    }
+}
+
 TEST(WellLoadPipelineTest, ACancelBeforeTheReadEndsStopsTheReadItself) {
     WellLoadPipeline pipeline(WellSource{wellFile(), {}, {}}, LoadOptions{}, Wellhead{});
     pipeline.cancel();
