@@ -34,8 +34,10 @@ int runRender(const QStringList& args) {
              "With --view hole: measured depth of the eye in metres (default: top of the log).",
              "MD"});
         p.addOption({"pixel-tolerance",
-                     "Level of detail: the shape error, in pixels, that may show (default 2).",
-                     "PX", "2"});
+                     QString("Level of detail: the shape error, in pixels, that may show "
+                             "(default %1).")
+                         .arg(double(scenegraph::kDefaultPixelTolerance)),
+                     "PX", QString::number(double(scenegraph::kDefaultPixelTolerance))});
         p.addOption({"stats",
                      "After the picture, print one line: triangles_drawn frame_ms (the mean of "
                      "5 frames drawn after it) rss_mb (peak) first_picture_ms and load_ms "

@@ -42,7 +42,7 @@ std::size_t refineForView(AssembledScene& scene, const glm::vec3& eye,
 // refineForView from the first camera under `renderRoot` (a root made by
 // scenegraph::makeRenderRoot over scene.root) for a picture `height` pixels high.
 std::size_t refineForCamera(AssembledScene& scene, SoNode* renderRoot, int height,
-                            float pixelTolerance = 2.0f);
+                            float pixelTolerance = scenegraph::kDefaultPixelTolerance);
 
 // The fly-through view: a camera on the first well's axis at measured depth
 // `md_m`, looking down the hole, high side up.

@@ -11,9 +11,9 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 /usr/bin/time -f "synth: %e s, peak RSS %M KiB" "$bin" synth -o "$work/well.txt" --length "$length" --step "$step"
 ls -l "$work/well.txt" | awk '{printf "log: %.1f MB\n", $5/1e6}'
-for mode in "" "--binary" "--binary --gzip"; do
+for mode in "--ascii" "" "--gzip"; do
   # shellcheck disable=SC2086
-  /usr/bin/time -f "export ${mode:-ascii}: %e s, peak RSS %M KiB" \
+  /usr/bin/time -f "export ${mode:-binary}: %e s, peak RSS %M KiB" \
     "$bin" export "$work/well.txt" -o "$work/well.iv" --bit-size 8.5in $mode 2>&1 | grep -v glxglue
   ls -l "$work/well.iv" | awk '{printf "  .iv size: %.1f MB\n", $5/1e6}'
   rm -f "$work/well.iv"

@@ -19,12 +19,21 @@ TEST(CommandLineTest, SynthThenExportWritesAnInventorFile) {
     CommandRun synth = run("synth -o " + log.string() + " --length 30 --step 0.1");
     ASSERT_EQ(synth.status, 0) << synth.output;
     EXPECT_NE(synth.output.find("301 sections"), std::string::npos) << synth.output;
+    const auto header = [&iv] {
+        std::ifstream in(iv);
+        std::string line;
+        std::getline(in, line);
+        return line;
+    };
     CommandRun exported = run("export " + log.string() + " -o " + iv.string());
     ASSERT_EQ(exported.status, 0) << exported.output;
-    std::ifstream in(iv);
-    std::string header;
-    std::getline(in, header);
-    EXPECT_EQ(header.rfind("#Inventor V2.1 ascii", 0), 0u) << header;
+    EXPECT_EQ(header().rfind("#Inventor V2.1 binary", 0), 0u) << header();
+    exported = run("export " + log.string() + " -o " + iv.string() + " --ascii");
+    ASSERT_EQ(exported.status, 0) << exported.output;
+    EXPECT_EQ(header().rfind("#Inventor V2.1 ascii", 0), 0u) << header();
+    exported = run("export " + log.string() + " -o " + iv.string() + " --ascii --binary");
+    EXPECT_EQ(exported.status, 2) << exported.output;
+    EXPECT_NE(exported.output.find("not both"), std::string::npos) << exported.output;
 }
 
 TEST(CommandLineTest, BadInputExitsOneNamingFileAndLine) {
