@@ -36,6 +36,7 @@ int runExport(const QStringList& args) {
                      "shown (the coarse levels, default) or full (every level, streamed).",
                      "LEVELS", "shown"});
         addInputOptions(p);
+        addColourOptions(p);
         addWellSourceOptions(p);
         if (!verb.parse(args, 1)) return kExitOk;
         if (!verb.isSet("output")) throw UsageError("caliper3d export: -o OUT.iv is required");
@@ -54,7 +55,8 @@ int runExport(const QStringList& args) {
                              "'");
         if (verb.isSet("ascii") && verb.isSet("binary"))
             throw UsageError("caliper3d export: give --ascii or --binary, not both");
-        const LoadOptions options = inputOptionsFrom(p);
+        LoadOptions options = inputOptionsFrom(p);
+        options.colour = colourRequestFrom(p);
 
         scenegraph::initCoin();
         const auto start = std::chrono::steady_clock::now();

@@ -124,6 +124,36 @@ LoadOptions inputOptionsFrom(const QCommandLineParser& parser) {
     return o;
 }
 
+void addColourOptions(QCommandLineParser& parser) {
+    parser.addOption(
+        {"colour-by",
+         "Colour the wall by: departure (radius - bit radius, the default; diverging map, "
+         "grey at bit size), diameter (equivalent), ellipticity, class (the report's classes), "
+         "dls (dogleg severity), or any other curve of the log by its mnemonic (e.g. GR).",
+         "NAME", "departure"});
+    parser.addOption({"colour-range",
+                      "The values at the colour map's ends, e.g. -10,40 (default: +-25 mm for "
+                      "departure, the 2nd to 98th percentile of the well for the others).",
+                      "LO,HI"});
+}
+
+reconstruction::ColourRequest colourRequestFrom(const QCommandLineParser& parser) {
+    reconstruction::ColourRequest request;
+    request.quantity = parser.value("colour-by").trimmed().toStdString();
+    if (request.quantity.empty()) throw UsageError("--colour-by: expected a name");
+    if (parser.isSet("colour-range")) {
+        const QStringList parts = parser.value("colour-range").split(',');
+        double lo = 0.0, hi = 0.0;
+        if (parts.size() != 2 || !io::parseNumber(parts[0].trimmed().toStdString(), lo) ||
+            !io::parseNumber(parts[1].trimmed().toStdString(), hi) || !std::isfinite(lo) ||
+            !std::isfinite(hi) || !(lo < hi))
+            throw UsageError("--colour-range: expected LO,HI with LO below HI, e.g. -10,40; got '" +
+                             parser.value("colour-range").toStdString() + "'");
+        request.range = std::make_pair(lo, hi);
+    }
+    return request;
+}
+
 void rejectInapplicable(const QCommandLineParser& parser, const std::string& verb,
                         std::initializer_list<const char*> names, const std::string& why) {
     const auto set = std::find_if(names.begin(), names.end(),

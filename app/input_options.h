@@ -28,6 +28,11 @@ struct UsageError : std::runtime_error {
 };
 
 void addInputOptions(QCommandLineParser& parser);
+// --colour-by NAME and --colour-range LO,HI, for the verbs that draw (view, render, export).
+void addColourOptions(QCommandLineParser& parser);
+// Throws UsageError on a malformed range; an unknown NAME is found when a well is loaded
+// (the names of its extra curves are valid too).
+reconstruction::ColourRequest colourRequestFrom(const QCommandLineParser& parser);
 // Throws UsageError on a malformed value.
 LoadOptions inputOptionsFrom(const QCommandLineParser& parser);
 // Throws UsageError when any of `names` was given to `verb`, which cannot use

@@ -1,8 +1,11 @@
 #include "app/main_window.h"
 
 #include <QAction>
+#include <QApplication>
+#include <QComboBox>
 #include <QDialog>
 #include <QDialogButtonBox>
+#include <QElapsedTimer>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFontDatabase>
@@ -13,6 +16,7 @@
 #include <QPushButton>
 #include <QStatusBar>
 #include <QTimer>
+#include <QToolBar>
 #include <QVBoxLayout>
 
 #include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
@@ -25,6 +29,8 @@
 #include <Inventor/nodes/SoPerspectiveCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
 
+#include "app/scene_assembly.h"
+#include "app/well_viewer.h"
 #include "reconstruction/load/well_load_pipeline.h"
 #include "scenegraph/camera_setup.h"
 #include "scenegraph/detail_loader.h"
@@ -39,7 +45,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     resize(1200, 800);
     auto* centre = new QWidget(this);
     setCentralWidget(centre);
-    m_viewer = new SoQtExaminerViewer(centre);
+    m_viewer = new WellViewer(centre);
     m_viewer->setBackgroundColor(SbColor(scenegraph::kBackgroundColour));
     m_viewer->setTransparencyType(SoGLRenderAction::SORTED_OBJECT_BLEND);
     m_sceneRoot = new SoSeparator;
@@ -101,6 +107,136 @@ void MainWindow::buildMenus() {
     for (double factor : {1.0, 10.0, 50.0, 200.0})
         exaggeration->addAction(QString("x%1").arg(factor), this,
                                 [this, factor] { setExaggeration(factor); });
+    QToolBar* style = addToolBar("Style");
+    style->setObjectName("style");
+    style->addWidget(new QLabel(" Colour by ", style));
+    m_colourBox = new QComboBox(style);
+    m_colourBox->setObjectName("colourBy");
+    m_colourBox->setToolTip("What the wall's colours show (the legend says how)");
+    style->addWidget(m_colourBox);
+    fillColourBox();
+    connect(m_colourBox, QOverload<int>::of(&QComboBox::activated), this,
+            &MainWindow::colourByChosen);
+}
+
+void MainWindow::fillColourBox() {
+    const QSignalBlocker block(m_colourBox);
+    m_colourBox->clear();
+    std::vector<std::string> names{"departure", "diameter", "ellipticity", "class", "dls"};
+    for (const auto& well : m_wells)
+        if (well->geometry) {
+            names = reconstruction::colourQuantities(well->geometry->table());
+            break;
+        }
+    for (const std::string& name : names) m_colourBox->addItem(QString::fromStdString(name));
+    const int current = m_colourBox->findText(QString::fromStdString(m_lastOptions.colour.quantity),
+                                              Qt::MatchFixedString);
+    m_colourBox->setCurrentIndex(std::max(current, 0));
+}
+
+void MainWindow::colourByChosen(int index) {
+    reconstruction::ColourRequest colour;
+    colour.quantity = m_colourBox->itemText(index).toStdString();
+    if (!restyle(m_lastOptions.radialExaggeration, colour)) fillColourBox();
+}
+
+SoQtExaminerViewer* MainWindow::viewer() const {
+    return m_viewer;
+}
+
+std::shared_ptr<const reconstruction::WellGeometry> MainWindow::geometry(std::size_t i) const {
+    return i < m_wells.size() ? m_wells[i]->geometry : nullptr;
+}
+
+const reconstruction::ColourLegend* MainWindow::legend() const {
+    return m_legendSource ? &m_legendSource->legend() : nullptr;
+}
+
+bool MainWindow::restyle(double radialExaggeration, const reconstruction::ColourRequest& colour) {
+    if (m_wells.empty()) return false;
+    if (loading()) {
+        m_status->setText("Wait for the wells to load before changing how they are drawn");
+        return false;
+    }
+    QElapsedTimer clock;
+    clock.start();
+    static const std::vector<std::string> analysed{"diameter", "ellipticity", "class"};
+    const bool needsValues =
+        std::find(analysed.begin(), analysed.end(), colour.quantity) != analysed.end();
+    std::vector<std::shared_ptr<const reconstruction::WellGeometry>> geometries;
+    std::vector<const reconstruction::SectionValues*> values;
+    QApplication::setOverrideCursor(Qt::WaitCursor);
+    for (const auto& well : m_wells) {
+        if (!well->geometry) continue;
+        if (needsValues && !well->values)
+            well->values = std::make_shared<const reconstruction::SectionValues>(
+                reconstruction::sectionValues(*well->geometry));
+        geometries.push_back(well->geometry);
+        values.push_back(well->values.get());
+    }
+    std::vector<std::shared_ptr<const reconstruction::WallColouring>> colourings;
+    try {
+        colourings = wallColourings(geometries, colour, values);
+    } catch (const std::exception& e) {
+        QApplication::restoreOverrideCursor();
+        m_status->setText(QString::fromStdString(e.what()));
+        return false;
+    }
+    m_detail->removeAll();
+    std::size_t next = 0;
+    for (auto& well : m_wells) {
+        if (!well->geometry) continue;
+        const std::size_t i = next++;
+        well->geometry = std::make_shared<const reconstruction::WellGeometry>(
+            well->geometry->restyled(radialExaggeration, colourings[i]));
+        auto scene = std::make_unique<scenegraph::WellScene>();
+        scene->buildAll(*well->geometry);
+        m_sceneRoot->replaceChild(well->scene->root(), scene->root());
+        well->scene = std::move(scene);
+        well->options.radialExaggeration = radialExaggeration;
+        well->options.colour = colour;
+        m_detail->addWell(*well->scene, well->geometry);
+    }
+    m_lastOptions.radialExaggeration = radialExaggeration;
+    m_lastOptions.colour = colour;
+    m_legendSource = colourings.empty() ? nullptr : colourings.front();
+    m_viewer->setLegend(legend());
+    fillColourBox();
+    QApplication::restoreOverrideCursor();
+    m_status->setText(QString("Coloured by %1, radii x%2 (%3 ms, nothing read again)")
+                          .arg(QString::fromStdString(colour.quantity))
+                          .arg(radialExaggeration)
+                          .arg(clock.elapsed()));
+    return true;
+}
+
+void MainWindow::applyStyleAfterLoad() {
+    std::vector<std::shared_ptr<const reconstruction::WellGeometry>> geometries;
+    for (const auto& well : m_wells)
+        if (well->geometry) geometries.push_back(well->geometry);
+    if (geometries.empty()) return;
+    const reconstruction::ColourRequest& colour = m_lastOptions.colour;
+    bool rebuild = colour.quantity != "departure" || colour.range.has_value();
+    for (const auto& g : geometries) {
+        bool anyBit = false;
+        for (std::size_t row = 0; row < g->table().rowCount() && !anyBit; ++row)
+            anyBit = std::isfinite(g->bitRadius_mm(row));
+        rebuild = rebuild || !anyBit;
+    }
+    const QString status = m_status->text();
+    if (rebuild && restyle(m_lastOptions.radialExaggeration, colour)) {
+        m_status->setText(status);
+        return;
+    }
+    // The streamed segments are coloured as asked already: only the legend is new.
+    try {
+        m_legendSource = wallColourings({geometries.front()}, colour).front();
+    } catch (const std::exception& e) {
+        m_status->setText(QString::fromStdString(e.what()));
+        m_legendSource = nullptr;
+    }
+    m_viewer->setLegend(legend());
+    fillColourBox();
 }
 
 bool MainWindow::loading() const {
@@ -186,6 +322,7 @@ void MainWindow::addWell(const WellSource& source, const LoadOptions& options) {
                                        : QString("caliper3d - %1 wells").arg(m_wells.size()));
     scenegraph::SegmentFeeder::Callbacks callbacks;
     callbacks.geometry = [this, &w](std::shared_ptr<const reconstruction::WellGeometry> g) {
+        w.geometry = g;
         m_detail->addWell(*w.scene, std::move(g));
     };
     callbacks.warnings = [this, &w](const io::Diagnostics& diagnostics) {
@@ -236,6 +373,7 @@ void MainWindow::addWell(const WellSource& source, const LoadOptions& options) {
 
 void MainWindow::wellDone() {
     if (loading()) return;
+    applyStyleAfterLoad();
     m_viewer->viewAll();
     emit allWellsLoaded();
 }
@@ -264,17 +402,7 @@ void MainWindow::exportDialog() {
 }
 
 void MainWindow::setExaggeration(double factor) {
-    std::vector<std::pair<WellSource, LoadOptions>> shown;
-    for (const auto& well : m_wells) shown.emplace_back(well->source, well->options);
-    if (shown.empty()) return;
-    m_detail->removeAll();
-    m_wells.clear();
-    m_sceneRoot->removeAllChildren();
-    updateWarningsButton();
-    for (auto& [source, options] : shown) {
-        options.radialExaggeration = factor;
-        addWell(source, options);
-    }
+    restyle(factor, m_lastOptions.colour);
 }
 
 void MainWindow::setView(int direction) {

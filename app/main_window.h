@@ -8,6 +8,7 @@
 
 #include "app/input_options.h"
 
+class QComboBox;
 class QLabel;
 class QPushButton;
 class SoQtExaminerViewer;
@@ -23,6 +24,8 @@ class WellScene;
 }  // namespace caliper3d::scenegraph
 
 namespace caliper3d::app {
+
+class WellViewer;
 
 // The desktop window: an SoQtExaminerViewer in the centre, a status bar that
 // reports loading, and File/View menus. Wells load on a worker thread; their
@@ -43,13 +46,24 @@ public:
     void addWell(const WellSource& well, const LoadOptions& options);
     void addWell(const QString& path, const LoadOptions& options);
     std::size_t wellCount() const { return m_wells.size(); }
-    SoQtExaminerViewer* viewer() const { return m_viewer; }
+    SoQtExaminerViewer* viewer() const;
     bool loading() const;
     // The warnings of the wells shown (reader, survey, geometry), as loaded so
     // far: their count, and the text the warnings dialog shows.
     std::size_t warningCount() const;
     QString warningsText() const;
     QString statusText() const;
+
+    // Draws the wells shown with another radial exaggeration and wall colouring, from the
+    // geometry in memory: no file is read again and no path placed again; the coarse levels
+    // are rebuilt (two threads) and the detail near the camera follows. Returns false, with
+    // the reason in the status bar, while a well still loads or when a well cannot be
+    // coloured so (an unknown curve). The colour range is shared by every well.
+    bool restyle(double radialExaggeration, const reconstruction::ColourRequest& colour);
+    // The geometry well `i` is drawn from (null until its load has placed it).
+    std::shared_ptr<const reconstruction::WellGeometry> geometry(std::size_t i) const;
+    // The legend shown over the scene (null before a well is loaded).
+    const reconstruction::ColourLegend* legend() const;
 
 signals:
     void wellLoaded(int segments);  // once per well
@@ -62,10 +76,17 @@ private:
     void exportDialog();
     void setView(int direction);
     void setExaggeration(double factor);
+    void colourByChosen(int index);
+    // The names of the "Colour by" box: the built-in quantities and the first well's curves.
+    void fillColourBox();
+    // Once every well is loaded: its colours as asked (a quantity other than the departure
+    // from bit size, a range, a well without a bit size) and the legend.
+    void applyStyleAfterLoad();
     void showWarnings();
     void updateWarningsButton();
 
-    SoQtExaminerViewer* m_viewer = nullptr;
+    WellViewer* m_viewer = nullptr;
+    QComboBox* m_colourBox = nullptr;
     std::unique_ptr<scenegraph::DetailLoader> m_detail;
     SoSeparator* m_sceneRoot = nullptr;
     QLabel* m_status = nullptr;
@@ -78,6 +99,9 @@ private:
         WellSource source;
         LoadOptions options;
         io::Diagnostics diagnostics;  // from the worker, once the geometry is ready
+        std::shared_ptr<const reconstruction::WellGeometry> geometry;  // once placed
+        // The report's section values, computed the first time a colouring needs them.
+        std::shared_ptr<const reconstruction::SectionValues> values;
         std::unique_ptr<scenegraph::WellScene> scene;
         std::unique_ptr<reconstruction::WellLoadPipeline> pipeline;
         std::unique_ptr<scenegraph::SegmentFeeder> feeder;
@@ -86,6 +110,7 @@ private:
     void wellDone();
     std::vector<std::unique_ptr<Well>> m_wells;
     bool m_viewedAll = false;
+    std::shared_ptr<const reconstruction::WallColouring> m_legendSource;  // what the legend shows
 };
 
 }  // namespace caliper3d::app

@@ -43,6 +43,7 @@ int runRender(const QStringList& args) {
                      "5 frames drawn after it) rss_mb (peak) first_picture_ms and load_ms "
                      "(from the start of reading)."});
         addInputOptions(p);
+        addColourOptions(p);
         addWellSourceOptions(p);
         if (!verb.parse(args, 1)) return kExitOk;
         if (!verb.isSet("output")) throw UsageError("caliper3d render: -o OUT.png is required");
@@ -61,7 +62,8 @@ int runRender(const QStringList& args) {
         if (verb.isSet("at") && !downHole)
             throw UsageError("caliper3d render: --at places the eye of --view hole; the " +
                              verb.value("view") + " view shows the whole scene and ignores it");
-        const LoadOptions options = inputOptionsFrom(p);
+        LoadOptions options = inputOptionsFrom(p);
+        options.colour = colourRequestFrom(p);
 
         double tolerance = 2.0;
         if (!io::parseNumber(verb.value("pixel-tolerance"), tolerance) ||
@@ -93,6 +95,7 @@ int runRender(const QStringList& args) {
                 scenegraph::makeRenderRoot(scene.root.get(), *view, width, height));
         }
         refineForCamera(scene, root.get(), height, static_cast<float>(tolerance));
+        addColourLegend(root.get(), scene);
         scenegraph::OffscreenRenderer renderer;
         const scenegraph::RenderedImage image =
             renderer.render(root.get(), width, height, scenegraph::kBackgroundColour);

@@ -15,6 +15,7 @@
 #include "reconstruction/load/load_well.h"
 #include "reconstruction/mesh/lod_levels.h"
 #include "reconstruction/well_geometry.h"
+#include "scenegraph/colour_legend.h"
 #include "scenegraph/render_stats.h"
 #include "scenegraph/well_scene.h"
 
@@ -27,37 +28,85 @@ AssembledScene assembleScene(const std::vector<std::string>& files, const LoadOp
     return assembleScene(wells, options);
 }
 
+std::vector<std::shared_ptr<const reconstruction::WallColouring>> wallColourings(
+    const std::vector<std::shared_ptr<const reconstruction::WellGeometry>>& wells,
+    const reconstruction::ColourRequest& request,
+    const std::vector<const reconstruction::SectionValues*>& values) {
+    auto valuesOf = [&values](std::size_t w) { return w < values.size() ? values[w] : nullptr; };
+    std::vector<std::shared_ptr<const reconstruction::WallColouring>> out;
+    for (std::size_t w = 0; w < wells.size(); ++w)
+        out.push_back(reconstruction::makeWallColouring(*wells[w], request, valuesOf(w)));
+    if (out.size() < 2 || request.range ||
+        out.front()->legend().kind != reconstruction::ColourMapKind::Sequential)
+        return out;
+    double lo = out.front()->legend().lo, hi = out.front()->legend().hi;
+    for (const auto& colouring : out) {
+        lo = std::min(lo, colouring->legend().lo);
+        hi = std::max(hi, colouring->legend().hi);
+    }
+    reconstruction::ColourRequest shared = request;
+    shared.range = std::make_pair(lo, hi);
+    for (std::size_t w = 0; w < wells.size(); ++w) {
+        auto colouring = reconstruction::makeWallColouring(*wells[w], shared, valuesOf(w));
+        reconstruction::ColourLegend legend = colouring->legend();
+        legend.range =
+            out[w]->legend().range + ", over all " + std::to_string(wells.size()) + " wells";
+        out[w] = std::make_shared<const reconstruction::WallColouring>(
+            colouring->withLegend(std::move(legend)));
+    }
+    return out;
+}
+
 AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     AssembledScene out;
     out.root = scenegraph::NodeRef<SoSeparator>(new SoSeparator);
     out.root->setName("caliper3d_scene");
     const reconstruction::Wellhead origin = reconstruction::sceneOrigin(wells);
+    std::vector<std::shared_ptr<const reconstruction::WellGeometry>> loaded;
+    std::vector<std::string> files;
+    std::vector<io::Diagnostics> diagnostics;
     for (const WellSource& well : wells) {
-        const std::string& file = well.path;
         try {
-            const reconstruction::LoadedWell loaded =
-                reconstruction::loadWell(well, options, origin);
-            auto scene = std::make_shared<scenegraph::WellScene>();
-            scene->buildAll(*loaded.geometry);
-            out.geometries.push_back(loaded.geometry);
-            out.scenes.push_back(scene);
-            out.root->addChild(scene->root());
-            ++out.wells;
-            const io::Diagnostics& diagnostics = loaded.diagnostics;
-            std::printf(
-                "%s: %zu sections, %zu segments, %zu triangles at full detail, %zu warnings\n",
-                file.c_str(), loaded.table->rowCount(), scene->segmentCount(),
-                scene->fullDetailTriangles(), diagnostics.warningCount);
-            printWarnings(diagnostics);
+            reconstruction::LoadedWell one = reconstruction::loadWell(well, options, origin);
+            loaded.push_back(one.geometry);
+            files.push_back(well.path);
+            diagnostics.push_back(std::move(one.diagnostics));
         } catch (const std::exception& e) {
             ++out.failures;
             std::fprintf(stderr, "caliper3d: %s\n", e.what());
         }
     }
+    std::vector<std::shared_ptr<const reconstruction::WallColouring>> colourings;
+    try {
+        colourings = wallColourings(loaded, options.colour);
+    } catch (const std::exception& e) {
+        out.failures += static_cast<int>(loaded.size());
+        std::fprintf(stderr, "caliper3d: %s\n", e.what());
+        loaded.clear();
+    }
+    for (std::size_t w = 0; w < loaded.size(); ++w) {
+        const auto geometry = std::make_shared<const reconstruction::WellGeometry>(
+            loaded[w]->restyled(options.radialExaggeration, colourings[w]));
+        auto scene = std::make_shared<scenegraph::WellScene>();
+        scene->buildAll(*geometry);
+        out.geometries.push_back(geometry);
+        out.scenes.push_back(scene);
+        out.root->addChild(scene->root());
+        ++out.wells;
+        std::printf("%s: %zu sections, %zu segments, %zu triangles at full detail, %zu warnings\n",
+                    files[w].c_str(), geometry->table().rowCount(), scene->segmentCount(),
+                    scene->fullDetailTriangles(), diagnostics[w].warningCount);
+        printWarnings(diagnostics[w]);
+    }
     out.load_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return out;
+}
+
+const reconstruction::ColourLegend* AssembledScene::legend() const {
+    if (geometries.empty() || !geometries.front()->options().colouring) return nullptr;
+    return &geometries.front()->options().colouring->legend();
 }
 
 std::size_t refineForView(AssembledScene& scene, const glm::vec3& eye,
@@ -93,6 +142,11 @@ std::size_t refineForCamera(AssembledScene& scene, SoNode* renderRoot, int heigh
         scenegraph::lodViewFor(height, camera->heightAngle.getValue(), pixelTolerance);
     view.visibility_m = scenegraph::fogVisibility(renderRoot);
     return refineForView(scene, glm::vec3(eye[0], eye[1], eye[2]), view);
+}
+
+void addColourLegend(SoSeparator* renderRoot, const AssembledScene& scene) {
+    if (const reconstruction::ColourLegend* legend = scene.legend())
+        renderRoot->addChild(scenegraph::makeColourLegend(*legend));
 }
 
 scenegraph::CameraPose downHolePose(const reconstruction::WellGeometry& geometry, double md_m) {

@@ -26,7 +26,19 @@ struct AssembledScene {
     std::vector<std::shared_ptr<const reconstruction::WellGeometry>> geometries;
     std::vector<std::shared_ptr<scenegraph::WellScene>> scenes;  // one per geometry
     double load_ms = 0.0;  // reading, geometry and the coarse levels of every well
+    // What the wall's colours mean (every well shares it); null with no well.
+    const reconstruction::ColourLegend* legend() const;
 };
+// The wall colourings `request` asks for, one per well, sharing one colour range so a colour
+// means the same value in each (the union of their own ranges, when it comes from the
+// data). Throws std::invalid_argument as reconstruction::makeWallColouring does.
+// `values`: each well's reconstruction::sectionValues where known (null or missing: computed
+// when the quantity needs them).
+std::vector<std::shared_ptr<const reconstruction::WallColouring>> wallColourings(
+    const std::vector<std::shared_ptr<const reconstruction::WellGeometry>>& wells,
+    const reconstruction::ColourRequest& request,
+    const std::vector<const reconstruction::SectionValues*>& values = {});
+
 // The first well's wellhead is the scene origin; each well's survey, if
 // given, replaces its log's DEVI/HAZI for the path.
 AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOptions& options);
@@ -43,6 +55,10 @@ std::size_t refineForView(AssembledScene& scene, const glm::vec3& eye,
 // scenegraph::makeRenderRoot over scene.root) for a picture `height` pixels high.
 std::size_t refineForCamera(AssembledScene& scene, SoNode* renderRoot, int height,
                             float pixelTolerance = scenegraph::kDefaultPixelTolerance);
+
+// Adds the legend of the scene's wall colours over a picture made from `renderRoot` (a
+// root made by scenegraph::makeRenderRoot over scene.root); nothing without a well.
+void addColourLegend(SoSeparator* renderRoot, const AssembledScene& scene);
 
 // The fly-through view: a camera on the first well's axis at measured depth
 // `md_m`, looking down the hole, high side up.

@@ -52,9 +52,11 @@ int runView(int argc, char** argv, const QStringList& args) {
     return guardedVerb("view", [&]() -> int {
         VerbParser verb("view", "FILE...", "Open wells in the 3D viewer.");
         addInputOptions(verb.parser());
+        addColourOptions(verb.parser());
         addWellSourceOptions(verb.parser());
         if (!verb.parse(args, 1)) return kExitOk;
-        const LoadOptions options = inputOptionsFrom(verb.parser());
+        LoadOptions options = inputOptionsFrom(verb.parser());
+        options.colour = colourRequestFrom(verb.parser());
         const std::vector<WellSource> wells = wellSourcesFrom(verb.parser(), verb.positional());
         if (!haveDisplay()) {
             std::fprintf(
@@ -88,14 +90,17 @@ int runDefault(int argc, char** argv) {
         auto hole = scenegraph::makeRef(scenegraph::makeRenderRoot(
             scene.root.get(), downHolePose(*scene.geometries.front(), 59.0)));
         refineForCamera(scene, hole.get(), 768);  // full detail near the eye
+        addColourLegend(hole.get(), scene);
         detail::renderRootToPng(hole.get(), "out/example.png", 1024, 768);
         // And the whole well, radii drawn 50 times larger so it is more than a line.
         LoadOptions overview = exampleOptions();
         overview.radialExaggeration = 50.0;
         AssembledScene whole = assembleScene({example}, overview);
         if (whole.wells == 0) return kExitBadInput;
-        renderToPng(whole.root.get(), "out/example-overview.png", 600, 900,
-                    scenegraph::ViewDirection::Iso);
+        auto overviewRoot = scenegraph::makeRef(
+            scenegraph::makeRenderRoot(whole.root.get(), scenegraph::ViewDirection::Iso, 600, 900));
+        addColourLegend(overviewRoot.get(), whole);
+        detail::renderRootToPng(overviewRoot.get(), "out/example-overview.png", 600, 900);
         const auto here = std::filesystem::current_path();
         std::printf(
             "No display: rendered the example well instead of opening a window.\n"

@@ -9,6 +9,7 @@
 #include <glm/trigonometric.hpp>
 
 #include "reconstruction/mesh/lod_levels.h"
+#include "reconstruction/mesh/wall_colouring.h"
 #include "reconstruction/parallel/ordered_blocks.h"
 #include "reconstruction/parallel/prefault.h"
 #include "reconstruction/path/survey_interpolation.h"
@@ -67,6 +68,7 @@ WellGeometry::WellGeometry(std::shared_ptr<const io::SectionTable> table,
                            const GeometryOptions& options)
     : m_table(std::move(table)),
       m_options(options),
+      m_placed(std::make_shared<Placement>()),
       m_sampler(sectionKnotCount(m_table ? m_table->armCount : 3), options.splinePoints) {
     checkDrawable(*m_table);
     markMeasuredRows();
@@ -81,14 +83,14 @@ void WellGeometry::markMeasuredRows() {
     // Sections with too few valid arms have no shape: a log without any
     // section that has one is bad input, not a hole of invented gauge.
     const int needed = minValidArms(t.armCount, m_options.minValidArmFraction);
-    m_measured.resize(rows);
+    m_placed->measured.resize(rows);
     for (std::size_t i = 0; i < rows; ++i) {
         if (i % 65536 == 0 && cancelled()) throw GeometryCancelled();
-        m_measured[i] = countValidArms(t.radii(i), t.armCount, m_options.minArmRadius_mm,
-                                       m_options.maxArmRadius_mm) >= needed;
-        m_measuredRows += m_measured[i];
+        m_placed->measured[i] = countValidArms(t.radii(i), t.armCount, m_options.minArmRadius_mm,
+                                               m_options.maxArmRadius_mm) >= needed;
+        m_placed->measuredRows += m_placed->measured[i];
     }
-    if (m_measuredRows == 0)
+    if (m_placed->measuredRows == 0)
         throw std::invalid_argument(t.source + ": no usable caliper data: none of its " +
                                     std::to_string(rows) + " sections has at least " +
                                     std::to_string(needed) + " of its " +
@@ -107,17 +109,17 @@ void WellGeometry::computePathAndFrames() {
     // faulted in on every worker at once first, not by the first writer.
     const int threads = std::max(1, m_options.threads);
     if (fromSurvey) {
-        m_path = interpolateSurveyPath(tiedToSurface(m_options.survey), t.depth_m);
+        m_placed->path = interpolateSurveyPath(tiedToSurface(m_options.survey), t.depth_m);
     } else {
-        m_path.reserve(rows);
-        prefaultPages(m_path.data(), rows * sizeof(PathPoint), threads, m_options.cancel);
+        m_placed->path.reserve(rows);
+        prefaultPages(m_placed->path.data(), rows * sizeof(PathPoint), threads, m_options.cancel);
         if (cancelled()) throw GeometryCancelled();  // before the rest is faulted in by one thread
-        m_path.resize(rows);
+        m_placed->path.resize(rows);
     }
-    m_frames = FillArray<SectionFrame>(rows);
-    prefaultPages(m_frames.data(), rows * sizeof(SectionFrame), threads, m_options.cancel);
+    m_placed->frames = FillArray<SectionFrame>(rows);
+    prefaultPages(m_placed->frames.data(), rows * sizeof(SectionFrame), threads, m_options.cancel);
     if (cancelled()) throw GeometryCancelled();
-    m_orientation.resize(rows);
+    m_placed->orientation.resize(rows);
 
     // Each block computes its rows' minimum-curvature steps and frames from
     // one set of sines and cosines per row; the positions are then the running
@@ -142,8 +144,8 @@ void WellGeometry::computePathAndFrames() {
             if (fromSurvey || cancelled()) return;
             const std::size_t first = block * kBlockRows, last = std::min(rows, first + kBlockRows);
             for (std::size_t i = std::max<std::size_t>(first, 1); i < last; ++i) {
-                PathPoint& p = m_path[i];
-                const PathPoint& prev = m_path[i - 1];
+                PathPoint& p = m_placed->path[i];
+                const PathPoint& prev = m_placed->path[i - 1];
                 p.north = prev.north + p.north;
                 p.east = prev.east + p.east;
                 p.tvd = prev.tvd + p.tvd;
@@ -162,7 +164,7 @@ void WellGeometry::cutSegments() {
         const double limit = t.depth_m[first] + segment;
         std::size_t last = first + 1;
         while (last + 1 < rows && t.depth_m[last + 1] <= limit) ++last;
-        m_segments.emplace_back(first, last);
+        m_placed->segments.emplace_back(first, last);
         first = last;
     }
 }
@@ -178,7 +180,7 @@ void WellGeometry::computeSteps(std::size_t first, std::size_t last, double inc,
         if (std::isfinite(devi)) inc = devi;
         if (std::isfinite(hazi)) azi = hazi;
         current.update(inc, azi);
-        PathPoint& p = m_path[i];
+        PathPoint& p = m_placed->path[i];
         p = PathPoint{};
         p.md = t.depth_m[i];
         p.inc_deg = inc;
@@ -217,26 +219,27 @@ void WellGeometry::computeSteps(std::size_t first, std::size_t last, double inc,
 // keeps arm 1 north and is counted as unoriented.
 void WellGeometry::computeFrames(std::size_t first, std::size_t last) {
     const io::SectionTable& t = *m_table;
-    HoleDirection direction(m_path[first].inc_deg, m_path[first].azi_deg);
+    HoleDirection direction(m_placed->path[first].inc_deg, m_placed->path[first].azi_deg);
     for (std::size_t i = first; i < last; ++i) {
-        const double inc = m_path[i].inc_deg, azi = m_path[i].azi_deg;
+        const double inc = m_placed->path[i].inc_deg, azi = m_placed->path[i].azi_deg;
         direction.update(inc, azi);
         const double p1az = valueAt(t.p1az_deg, i);
         const double rb = valueAt(t.rb_deg, i);
         const bool steep = inc > m_options.steepInclination_deg;
         if (std::isfinite(rb) && (steep || !std::isfinite(p1az))) {
-            m_frames.set(i, frameFromRelativeBearing(direction, rb));
-            m_orientation[i] = Orientation::RelativeBearing;
+            m_placed->frames.set(i, frameFromRelativeBearing(direction, rb));
+            m_placed->orientation[i] = Orientation::RelativeBearing;
         } else {
-            m_frames.set(i, frameFromPadAzimuth(direction, std::isfinite(p1az) ? p1az : 0.0));
-            m_orientation[i] =
+            m_placed->frames.set(i,
+                                 frameFromPadAzimuth(direction, std::isfinite(p1az) ? p1az : 0.0));
+            m_placed->orientation[i] =
                 std::isfinite(p1az) ? Orientation::PadAzimuth : Orientation::Unoriented;
         }
     }
 }
 
 Ned WellGeometry::centre(std::size_t row) const {
-    const PathPoint& p = m_path[row];
+    const PathPoint& p = m_placed->path[row];
     return Ned(p.north, p.east, p.tvd) + m_options.wellheadOffset;
 }
 
@@ -299,7 +302,20 @@ int WellGeometry::sectionKnots(std::size_t row, double* out) const {
 }
 
 std::vector<NoDataInterval> WellGeometry::noDataIntervals() const {
-    return reconstruction::noDataIntervals(m_measured, m_table->depth_m);
+    return reconstruction::noDataIntervals(m_placed->measured, m_table->depth_m);
+}
+
+WellGeometry WellGeometry::restyled(double radialExaggeration,
+                                    std::shared_ptr<const WallColouring> colouring) const {
+    if (colouring && colouring->rowCount() != m_table->rowCount())
+        throw std::invalid_argument(m_table->source + ": a wall colouring of " +
+                                    std::to_string(colouring->rowCount()) + " rows for a well of " +
+                                    std::to_string(m_table->rowCount()));
+    WellGeometry out(*this);
+    out.m_options.radialExaggeration = radialExaggeration;
+    out.m_options.colouring = std::move(colouring);
+    out.m_options.cancel = nullptr;  // built already; the token may be gone
+    return out;
 }
 
 SegmentMesh WellGeometry::buildSegment(std::size_t segment) const {

@@ -20,15 +20,21 @@
 
 namespace caliper3d::reconstruction {
 
+class WallColouring;
+
 struct GeometryOptions {
     int splinePoints = 48;               // M: samples of the closed spline per section
     double segmentLength_m = 1.0;        // the well is cut into segments of this length
     double shapeTolerance_mm = 0.5;      // level 1's shape error; coarser levels x4, x16
                                          //   (reconstruction/mesh/lod_levels.h)
     double steepInclination_deg = 15.0;  // above this, arm 1 comes from RB when present
-    // Display only: radii drawn this many times larger around the true path, so
-    // that a long well seen whole is more than a line. Analysis never uses it.
+    // Display only: each section drawn this many times larger about its own centre (the
+    // centroid of its area), so that a long well seen whole is more than a line. The path
+    // and the analysis never use it.
     double radialExaggeration = 1.0;
+    // Display only: the wall's colours; null: departure from bit size
+    // (reconstruction/mesh/wall_colouring.h). One value per row of this well's table.
+    std::shared_ptr<const WallColouring> colouring;
     glm::dvec3 wellheadOffset{0.0, 0.0, 0.0};  // NED offset of this wellhead from the scene origin
     // A deviation survey (--survey) replaces the log's DEVI/HAZI for the path
     // when not empty: the path is interpolated along its minimum-curvature arcs.
@@ -79,17 +85,23 @@ public:
 
     const io::SectionTable& table() const { return *m_table; }
     const GeometryOptions& options() const { return m_options; }
-    const std::vector<PathPoint>& path() const { return m_path; }
-    const SectionFrame& frame(std::size_t row) const { return m_frames[row]; }
-    std::size_t segmentCount() const { return m_segments.size(); }
+    const std::vector<PathPoint>& path() const { return m_placed->path; }
+    const SectionFrame& frame(std::size_t row) const { return m_placed->frames[row]; }
+    std::size_t segmentCount() const { return m_placed->segments.size(); }
     std::pair<std::size_t, std::size_t> segmentRows(std::size_t segment) const {
-        return m_segments[segment];
+        return m_placed->segments[segment];
     }
+
+    // The same well drawn another way (radial exaggeration, wall colours): shares this
+    // geometry's table, path, frames and segments, so a new look costs no read and no
+    // placement. `colouring` (null: departure from bit size) must have a value per row.
+    WellGeometry restyled(double radialExaggeration,
+                          std::shared_ptr<const WallColouring> colouring) const;
 
     // Whether a row has enough valid arms to define its section's shape; a
     // row without is drawn as a gap and analysed as no_data.
-    bool measured(std::size_t row) const { return m_measured[row] != 0; }
-    std::size_t measuredRows() const { return m_measuredRows; }
+    bool measured(std::size_t row) const { return m_placed->measured[row] != 0; }
+    std::size_t measuredRows() const { return m_placed->measuredRows; }
     // The runs of rows without data, in depth order.
     std::vector<NoDataInterval> noDataIntervals() const;
 
@@ -108,7 +120,7 @@ public:
 
     // Which reading placed arm 1 on each row.
     enum class Orientation : unsigned char { PadAzimuth, RelativeBearing, Unoriented };
-    Orientation orientation(std::size_t row) const { return m_orientation[row]; }
+    Orientation orientation(std::size_t row) const { return m_placed->orientation[row]; }
 
     // False when the log is inclined but gives no hole azimuth and no survey
     // replaces it: the path then leans north only because an azimuth is needed
@@ -138,14 +150,19 @@ private:
     void computeSteps(std::size_t first, std::size_t last, double inc, double azi);
     void computeFrames(std::size_t first, std::size_t last);
 
+    // What the constructor computes, shared (never changed after) by restyled copies.
+    struct Placement {
+        std::vector<PathPoint> path;
+        FillArray<SectionFrame> frames;  // constructed by the workers that compute them
+        std::vector<Orientation> orientation;
+        std::vector<unsigned char> measured;
+        std::size_t measuredRows = 0;
+        std::vector<std::pair<std::size_t, std::size_t>> segments;
+    };
+
     std::shared_ptr<const io::SectionTable> m_table;
     GeometryOptions m_options;
-    std::vector<PathPoint> m_path;
-    FillArray<SectionFrame> m_frames;  // constructed by the workers that compute them
-    std::vector<Orientation> m_orientation;
-    std::vector<unsigned char> m_measured;
-    std::size_t m_measuredRows = 0;
-    std::vector<std::pair<std::size_t, std::size_t>> m_segments;
+    std::shared_ptr<Placement> m_placed;
     PeriodicSplineSampler m_sampler;
 };
 

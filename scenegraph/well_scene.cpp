@@ -11,6 +11,7 @@
 #include <Inventor/nodes/SoShapeHints.h>
 
 #include <algorithm>
+#include <thread>
 
 #include <glm/geometric.hpp>
 
@@ -91,8 +92,18 @@ void WellScene::addSegment(const reconstruction::SegmentMesh& segment) {
 
 void WellScene::buildAll(const reconstruction::WellGeometry& geometry) {
     setPath(geometry);
-    for (std::size_t s = 0; s < geometry.segmentCount(); ++s)
-        addSegment(reconstruction::buildCoarseSegment(geometry, s));
+    // Meshes on two threads (they read the immutable geometry only), nodes on this one, in
+    // order. Every coarse mesh is held at once: a few MB for a 4 km well.
+    const std::size_t count = geometry.segmentCount();
+    std::vector<reconstruction::SegmentMesh> meshes(count);
+    auto build = [&geometry, &meshes, count](std::size_t from) {
+        for (std::size_t s = from; s < count; s += 2)
+            meshes[s] = reconstruction::buildCoarseSegment(geometry, s);
+    };
+    std::thread helper(build, 1);
+    build(0);
+    helper.join();
+    for (const reconstruction::SegmentMesh& mesh : meshes) addSegment(mesh);
 }
 
 void WellScene::buildAllLevels(const reconstruction::WellGeometry& geometry) {

@@ -11,6 +11,7 @@
 #include "io/read_options.h"
 #include "io/section_table.h"
 #include "io/survey_reader.h"
+#include "reconstruction/analysis/wall_colour_request.h"
 #include "reconstruction/path/survey_interpolation.h"
 #include "reconstruction/path/wellhead.h"
 #include "reconstruction/well_geometry.h"
@@ -34,6 +35,9 @@ struct LoadOptions {
     double segmentLength_m = 1.0;
     double shapeTolerance_mm = 0.5;  // level-of-detail shape error of the finest coarse level
     double radialExaggeration = 1.0;
+    // What the wall is coloured by. Applied by the callers that draw (the window after its
+    // streamed load, app::assembleScene), with makeWallColouring and WellGeometry::restyled.
+    ColourRequest colour;
     double steepInclination_deg = 15.0;  // above this, arm 1 comes from RB when present
     double toolReach_mm = 1.0e9;         // arm readings beyond this are repaired
     // A section with fewer valid arms than minValidArms(armCount, this) has no data.

@@ -11,8 +11,9 @@
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
+#include <glm/vec2.hpp>
 
-#include "reconstruction/mesh/colour_map.h"
+#include "reconstruction/mesh/wall_colouring.h"
 #include "reconstruction/well_geometry.h"
 
 namespace caliper3d::reconstruction {
@@ -20,21 +21,48 @@ namespace caliper3d::reconstruction {
 namespace {
 
 // Appends the ring of one row: `radii` at equal angles from arm 1, with outward normals and
-// colours by departure from the bit.
+// the colours of the geometry's WallColouring (departure from bit size without one). With a
+// radial exaggeration F the ring is drawn F times larger about its own centre (the centroid
+// of its area), so an off-centre tool does not push the drawn hole off the path and the
+// shape stays the shape measured.
 void appendRing(const WellGeometry& g, Mesh& mesh, std::size_t row,
                 const std::vector<double>& radii) {
     const int points = static_cast<int>(radii.size());
     const SectionFrame& f = g.frame(row);
     const Ned c = g.centre(row);
     const double bitRadius = g.bitRadius_mm(row);
+    const WallColouring* colouring = g.options().colouring.get();
+    const double exaggeration = g.options().radialExaggeration;
     const std::size_t base = mesh.positions.size();
+    // In-plane coordinates (u along arm 1, v 90 degrees clockwise), metres.
+    thread_local std::vector<glm::dvec2> plane;
+    plane.resize(static_cast<std::size_t>(points));
     for (int j = 0; j < points; ++j) {
         const double phi = glm::two_pi<double>() * j / points;
-        const double drawn_m =
-            radii[static_cast<std::size_t>(j)] / 1000.0 * g.options().radialExaggeration;
-        const Ned p = c + drawn_m * f.direction(phi);
+        const double r = radii[static_cast<std::size_t>(j)] / 1000.0;
+        plane[static_cast<std::size_t>(j)] = glm::dvec2(r * std::cos(phi), r * std::sin(phi));
+    }
+    glm::dvec2 centroid(0.0);
+    if (exaggeration != 1.0) {
+        // Polygon centroid (shoelace); the tool axis when the ring has no area.
+        double area2 = 0.0;
+        glm::dvec2 sum(0.0);
+        for (std::size_t j = 0; j < plane.size(); ++j) {
+            const glm::dvec2 &a = plane[j], &b = plane[(j + 1) % plane.size()];
+            const double cross = a.x * b.y - b.x * a.y;
+            area2 += cross;
+            sum += (a + b) * cross;
+        }
+        if (std::abs(area2) > 1e-12) centroid = sum / (3.0 * area2);
+    }
+    for (int j = 0; j < points; ++j) {
+        const glm::dvec2 drawn =
+            centroid + (plane[static_cast<std::size_t>(j)] - centroid) * exaggeration;
+        const Ned p = c + drawn.x * f.arm1 + drawn.y * f.side;
         mesh.positions.emplace_back(toScene(p));
-        mesh.colours.push_back(gaugeColour(radii[static_cast<std::size_t>(j)], bitRadius));
+        const double r = radii[static_cast<std::size_t>(j)];
+        mesh.colours.push_back(colouring ? colouring->colour(row, r)
+                                         : departureColour(r, bitRadius));
     }
     // Outward normals: in-plane tangent (clockwise) crossed with the hole axis.
     for (int j = 0; j < points; ++j) {
@@ -277,8 +305,12 @@ SegmentMesh buildSegmentLevels(const WellGeometry& geometry, std::size_t segment
     for (std::size_t r = first; r < last; ++r)
         if (geometry.measured(r) && geometry.measured(r + 1))
             out.fullDetailTriangles += 2 * static_cast<std::size_t>(pyramid.front().points);
-    const double drawn_mm = maxRadius_mm * geometry.options().radialExaggeration;
-    out.maxRadius_m = static_cast<float>(drawn_mm / 1000.0);
+    const double exaggeration = geometry.options().radialExaggeration;
+    const double drawn_mm = maxRadius_mm * exaggeration;
+    // Sections are drawn about their centroids, within maxRadius of the path: a drawn point
+    // is within F maxRadius + (F - 1) maxRadius of it.
+    out.maxRadius_m =
+        static_cast<float>(maxRadius_mm * std::max(1.0, 2.0 * exaggeration - 1.0) / 1000.0);
     for (std::size_t i = 0; i < pyramid.size(); ++i) {
         const LodLevel& l = pyramid[i];
         const double error =

@@ -132,3 +132,44 @@ TEST_F(MainWindowTest, ReaderWarningsOfALoadedWellAreCountedAndListed) {
         << window.warningsText().toStdString();
     EXPECT_TRUE(window.statusText().endsWith(", 1 warning")) << window.statusText().toStdString();
 }
+
+TEST_F(MainWindowTest, RecolouringAndReExaggeratingReuseTheWellInMemory) {
+    const auto log = test::scratch("window_restyle.txt");
+    io::writeColumnTextFile(
+        log.string(),
+        reconstruction::makeSyntheticWell(reconstruction::syntheticProfile("washout", 40.0, 0.1)));
+    app::MainWindow window;
+    window.resize(640, 480);
+    window.show();
+    app::LoadOptions options;
+    options.read.bitSize_mm = 215.9;
+    window.openWell(QString::fromStdString(log.string()), options);
+    ASSERT_TRUE(waitFor(window, &app::MainWindow::allWellsLoaded, 60000)) << "no load";
+    const auto loaded = window.geometry(0);
+    ASSERT_NE(loaded, nullptr);
+    ASSERT_NE(window.legend(), nullptr);
+    EXPECT_EQ(window.legend()->title, "radius - bit radius");
+
+    reconstruction::ColourRequest byClass;
+    byClass.quantity = "class";
+    ASSERT_TRUE(window.restyle(20.0, byClass)) << window.statusText().toStdString();
+    const auto styled = window.geometry(0);
+    ASSERT_NE(styled, loaded);
+    EXPECT_EQ(&styled->table(), &loaded->table());  // not read again
+    EXPECT_EQ(&styled->path(), &loaded->path());    // not placed again
+    EXPECT_EQ(styled->options().radialExaggeration, 20.0);
+    ASSERT_NE(window.legend(), nullptr);
+    EXPECT_EQ(window.legend()->title, "class");
+    EXPECT_NE(window.statusText().indexOf("nothing read again"), -1)
+        << window.statusText().toStdString();
+    // The washout's sections now draw in the washout's colour.
+    const reconstruction::SegmentMesh segment = styled->buildSegment(20);
+    ASSERT_FALSE(segment.levels.front().colours.empty());
+    EXPECT_EQ(segment.levels.front().colours.front(), 0xD55E00FFu);
+
+    reconstruction::ColourRequest bogus;
+    bogus.quantity = "porosity";
+    EXPECT_FALSE(window.restyle(1.0, bogus));
+    EXPECT_NE(window.statusText().indexOf("cannot colour by 'porosity'"), -1);
+    EXPECT_EQ(window.geometry(0), styled);  // left as it was
+}

@@ -1,0 +1,54 @@
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "reconstruction/analysis/well_analysis.h"
+#include "reconstruction/mesh/wall_colouring.h"
+
+namespace caliper3d::reconstruction {
+
+// What to colour the wall by (`--colour-by NAME`, the window's "Colour by" box) and over
+// which range (`--colour-range LO,HI`; unset: the quantity's default, docs/conventions.md,
+// "Colours").
+struct ColourRequest {
+    std::string quantity = "departure";
+    std::optional<std::pair<double, double>> range;
+};
+
+// The report's per-section values a colouring may need, kept compact (three floats a row
+// instead of the whole analysis), so a window computes them once and recolours from them.
+struct SectionValues {
+    std::vector<float> equivalentDiameter_mm;  // NaN where no data
+    std::vector<float> ellipticity;
+    std::vector<float> cls;          // BoreholeClass as a number; NaN where no data
+    double gauge_mm = 0.0;           // the gauge the classes were found against (first row's)
+    bool gaugeFromSections = false;  // no bit size: the median equivalent diameter
+};
+SectionValues sectionValues(const WellGeometry& geometry, const AnalysisOptions& analysis = {});
+
+// The quantities a well can be coloured by: departure, diameter, ellipticity, class, dls,
+// then every extra curve of its log (gamma ray, resistivity...) by its mnemonic.
+std::vector<std::string> colourQuantities(const io::SectionTable& table);
+
+// The colouring of `geometry`'s wall that `request` asks for. Section values (diameter,
+// ellipticity, class) are the report's own (analyseWell with `analysis`); without a bit size
+// departures are measured from the median equivalent diameter, as the report does, and the
+// legend says so. Throws std::invalid_argument naming the valid quantities for an unknown
+// one, or for a range that is empty or (for departures) does not hold 0.
+// `values`: the well's sectionValues when already computed (null: computed here when needed).
+std::shared_ptr<const WallColouring> makeWallColouring(const WellGeometry& geometry,
+                                                       const ColourRequest& request,
+                                                       const SectionValues* values = nullptr,
+                                                       const AnalysisOptions& analysis = {});
+
+// The report's classes, from the Okabe-Ito palette (told apart with any colour vision).
+std::uint32_t classColour(BoreholeClass c);
+
+// The p-th fraction (0-1) of the finite `values`, nearest rank; NaN when none is finite.
+double robustPercentile(std::vector<float> values, double p);
+
+}  // namespace caliper3d::reconstruction

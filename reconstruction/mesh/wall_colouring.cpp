@@ -1,0 +1,74 @@
+#include "reconstruction/mesh/wall_colouring.h"
+
+#include <cmath>
+#include <utility>
+
+namespace caliper3d::reconstruction {
+
+double mapPosition(ColourMapKind kind, double value, double lo, double hi) {
+    if (!std::isfinite(value)) return value;
+    if (kind == ColourMapKind::Diverging) {
+        if (value >= 0.0) return hi > 0.0 ? 0.5 + 0.5 * std::min(value / hi, 1.0) : 1.0;
+        return lo < 0.0 ? 0.5 - 0.5 * std::min(value / lo, 1.0) : 0.0;
+    }
+    return hi > lo ? (value - lo) / (hi - lo) : 0.5;
+}
+
+std::uint32_t departureColour(double radius_mm, double bitRadius_mm, double lo_mm, double hi_mm) {
+    const double d = radius_mm - bitRadius_mm;
+    if (!std::isfinite(d)) return kNoValueColour;
+    return divergingColour(mapPosition(ColourMapKind::Diverging, d, lo_mm, hi_mm));
+}
+
+WallColouring::WallColouring(Source source, std::vector<float> values, ColourLegend legend)
+    : m_source(source), m_values(std::move(values)), m_legend(std::move(legend)) {
+    for (const auto& category : m_legend.categories) m_categoryColours.push_back(category.second);
+}
+
+WallColouring WallColouring::departure(std::vector<float> referenceRadius_mm, double lo_mm,
+                                       double hi_mm, ColourLegend legend) {
+    legend.kind = ColourMapKind::Diverging;
+    legend.lo = lo_mm;
+    legend.hi = hi_mm;
+    return WallColouring(Source::Departure, std::move(referenceRadius_mm), std::move(legend));
+}
+
+WallColouring WallColouring::perRow(std::vector<float> values, ColourMapKind kind, double lo,
+                                    double hi, ColourLegend legend) {
+    legend.kind = kind;
+    legend.lo = lo;
+    legend.hi = hi;
+    return WallColouring(Source::Continuous, std::move(values), std::move(legend));
+}
+
+WallColouring WallColouring::categories(std::vector<float> values, ColourLegend legend) {
+    legend.kind = ColourMapKind::Categorical;
+    return WallColouring(Source::Categorical, std::move(values), std::move(legend));
+}
+
+WallColouring WallColouring::withLegend(ColourLegend legend) const {
+    WallColouring out = *this;
+    out.m_legend = std::move(legend);
+    return out;
+}
+
+std::uint32_t WallColouring::colour(std::size_t row, double radius_mm) const {
+    const double v = m_values[row];
+    switch (m_source) {
+        case Source::Departure:
+            return departureColour(radius_mm, v, m_legend.lo, m_legend.hi);
+        case Source::Continuous:
+            if (!std::isfinite(v)) return kNoValueColour;
+            return m_legend.kind == ColourMapKind::Diverging
+                       ? divergingColour(mapPosition(m_legend.kind, v, m_legend.lo, m_legend.hi))
+                       : sequentialColour(mapPosition(m_legend.kind, v, m_legend.lo, m_legend.hi));
+        case Source::Categorical: {
+            if (!(v >= 0.0) || static_cast<std::size_t>(v) >= m_categoryColours.size())
+                return kNoValueColour;
+            return m_categoryColours[static_cast<std::size_t>(v)];
+        }
+    }
+    return kNoValueColour;
+}
+
+}  // namespace caliper3d::reconstruction

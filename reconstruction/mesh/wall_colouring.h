@@ -1,0 +1,70 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "reconstruction/mesh/colour_map.h"
+
+namespace caliper3d::reconstruction {
+
+// What a picture's legend says about the wall's colours (docs/conventions.md, "Colours").
+struct ColourLegend {
+    std::string title;  // "radius - bit radius", "equivalent diameter", "GR", ...
+    std::string unit;   // "mm", "deg/30m", the curve's own unit; empty when none
+    ColourMapKind kind = ColourMapKind::Diverging;
+    double lo = 0.0, hi = 0.0;  // the values at the map's ends (continuous maps)
+    std::string range;          // where [lo, hi] comes from: "fixed", "given", "2-98 percentile"
+    std::string note;           // e.g. what stands in for a missing bit size
+    std::vector<std::pair<std::string, std::uint32_t>> categories;  // categorical maps
+    bool noValue = false;  // some drawn sections have no value: they show kNoValueColour
+};
+
+// The wall's colour at each point: a departure of the point's radius from a reference
+// radius of its row (bit size), or one value per row (a section's diameter, class, a log
+// curve...). Rows are those of one well's table. Immutable once made; shared by the
+// threads that build meshes.
+class WallColouring {
+public:
+    // Departures (radius - reference, mm) over [lo, hi] on the diverging map, 0 at its
+    // centre. A NaN reference colours its row kNoValueColour.
+    static WallColouring departure(std::vector<float> referenceRadius_mm, double lo_mm,
+                                   double hi_mm, ColourLegend legend);
+    // One value per row over [lo, hi] on a continuous map; NaN: kNoValueColour.
+    static WallColouring perRow(std::vector<float> values, ColourMapKind kind, double lo, double hi,
+                                ColourLegend legend);
+    // One category per row: values index legend.categories (NaN: kNoValueColour).
+    static WallColouring categories(std::vector<float> values, ColourLegend legend);
+
+    // The same colours, described by `legend` (its map and range must be this one's).
+    WallColouring withLegend(ColourLegend legend) const;
+
+    std::uint32_t colour(std::size_t row, double radius_mm) const;
+    std::size_t rowCount() const { return m_values.size(); }
+    const ColourLegend& legend() const { return m_legend; }
+
+private:
+    enum class Source : unsigned char { Departure, Continuous, Categorical };
+    WallColouring(Source source, std::vector<float> values, ColourLegend legend);
+
+    Source m_source;
+    std::vector<float> m_values;  // reference radius or value, per row
+    ColourLegend m_legend;
+    std::vector<std::uint32_t> m_categoryColours;
+};
+
+// Departure from bit size over the fixed range the window starts with (kDepartureRange_mm
+// either side of the bit; grey in gauge): the colour of a wall point when a geometry has no
+// WallColouring. A NaN bit radius gives kNoValueColour.
+inline constexpr double kDepartureRange_mm = 25.0;
+std::uint32_t departureColour(double radius_mm, double bitRadius_mm,
+                              double lo_mm = -kDepartureRange_mm,
+                              double hi_mm = kDepartureRange_mm);
+
+// Where a value falls on [lo, hi] as the map's t; for a diverging map 0 is always at 0.5
+// (each side scaled on its own, so a range that is not symmetric keeps the reference grey).
+double mapPosition(ColourMapKind kind, double value, double lo, double hi);
+
+}  // namespace caliper3d::reconstruction

@@ -1,0 +1,173 @@
+#include "scenegraph/colour_legend.h"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include <Inventor/nodes/SoAnnotation.h>
+#include <Inventor/nodes/SoBaseColor.h>
+#include <Inventor/nodes/SoFont.h>
+#include <Inventor/nodes/SoIndexedTriangleStripSet.h>
+#include <Inventor/nodes/SoLightModel.h>
+#include <Inventor/nodes/SoOrthographicCamera.h>
+#include <Inventor/nodes/SoPickStyle.h>
+#include <Inventor/nodes/SoSeparator.h>
+#include <Inventor/nodes/SoText2.h>
+#include <Inventor/nodes/SoTranslation.h>
+
+#include "reconstruction/mesh/mesh.h"
+#include "scenegraph/main_thread.h"
+#include "scenegraph/segment_node_builder.h"
+
+namespace caliper3d::scenegraph {
+
+namespace {
+
+using reconstruction::ColourMapKind;
+
+// Layout in the overlay camera's frame: the viewport is [-1, 1] on both axes whatever its
+// aspect (LEAVE_ALONE), text is in pixels and grows leftwards from its anchor (RIGHT).
+constexpr float kBarLeft = 0.90f, kBarRight = 0.94f, kBarTop = 0.55f, kBarBottom = -0.45f;
+constexpr float kTextRight = 0.885f, kTitleRight = 0.97f;
+constexpr int kBarSteps = 32;
+
+std::string withUnit(const std::string& text, const std::string& unit) {
+    return unit.empty() ? text : text + " " + unit;
+}
+
+void addText(SoSeparator* parent, float x, float y, const std::string& text,
+             SoText2::Justification justification = SoText2::RIGHT) {
+    auto* group = new SoSeparator;
+    auto* at = new SoTranslation;
+    at->translation.setValue(x, y, 0.0f);
+    auto* label = new SoText2;
+    label->string = text.c_str();
+    label->justification = justification;
+    group->addChild(at);
+    group->addChild(label);
+    parent->addChild(group);
+}
+
+// A quad strip from bottom to top; `colours` one per row of two vertices.
+SoIndexedTriangleStripSet* makeBar(float left, float right, const std::vector<float>& ys,
+                                   const std::vector<std::uint32_t>& colours) {
+    reconstruction::Mesh mesh;
+    for (std::size_t i = 0; i < ys.size(); ++i) {
+        mesh.positions.emplace_back(left, ys[i], 0.0f);
+        mesh.positions.emplace_back(right, ys[i], 0.0f);
+        mesh.colours.push_back(colours[i]);
+        mesh.colours.push_back(colours[i]);
+    }
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i)
+        mesh.stripIndices.push_back(static_cast<std::int32_t>(i));
+    mesh.stripIndices.push_back(-1);
+    return makeStripSet(mesh);
+}
+
+std::uint32_t mapColour(const reconstruction::ColourLegend& legend, double t) {
+    return legend.kind == ColourMapKind::Diverging ? reconstruction::divergingColour(t)
+                                                   : reconstruction::sequentialColour(t);
+}
+
+}  // namespace
+
+std::string legendNumber(double value) {
+    if (!std::isfinite(value)) return "no value";
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", value);
+    std::string s(text);
+    if (s == "-0") s = "0";
+    return s;
+}
+
+LegendText legendText(const reconstruction::ColourLegend& legend) {
+    LegendText out;
+    out.title = legend.unit.empty() ? legend.title : legend.title + " (" + legend.unit + ")";
+    if (legend.kind == ColourMapKind::Categorical) {
+        for (const auto& category : legend.categories) out.labels.push_back(category.first);
+    } else {
+        const double centre =
+            legend.kind == ColourMapKind::Diverging ? 0.0 : (legend.lo + legend.hi) / 2.0;
+        out.labels = {withUnit(legendNumber(legend.hi), legend.unit),
+                      legend.kind == ColourMapKind::Diverging
+                          ? "0 (" + std::string(legend.note.empty() ? "bit" : "gauge") + ")"
+                          : withUnit(legendNumber(centre), legend.unit),
+                      withUnit(legendNumber(legend.lo), legend.unit)};
+        if (!legend.range.empty()) out.footer.push_back("range: " + legend.range);
+    }
+    if (!legend.note.empty()) out.footer.push_back(legend.note);
+    if (legend.noValue) out.footer.emplace_back("dark grey: no value");
+    out.footer.emplace_back("gaps: no data");
+    return out;
+}
+
+SoSeparator* makeColourLegend(const reconstruction::ColourLegend& legend) {
+    assertMainThread("makeColourLegend");
+    auto* root = new SoAnnotation;
+    root->setName("colour_legend");
+    auto* camera = new SoOrthographicCamera;
+    camera->viewportMapping = SoCamera::LEAVE_ALONE;
+    camera->position.setValue(0.0f, 0.0f, 1.0f);
+    camera->height = 2.0f;
+    camera->nearDistance = 0.5f;
+    camera->farDistance = 1.5f;
+    auto* pick = new SoPickStyle;
+    pick->style = SoPickStyle::UNPICKABLE;  // picking a section never hits the legend
+    auto* unlit = new SoLightModel;
+    unlit->model = SoLightModel::BASE_COLOR;
+    auto* font = new SoFont;
+    font->name = "Sans";
+    font->size = 13.0f;
+    root->addChild(camera);
+    root->addChild(pick);
+    root->addChild(unlit);
+    root->addChild(font);
+
+    // A panel behind the legend so it reads over the wall.
+    const LegendText text = legendText(legend);
+    const float panelBottom = kBarBottom - 0.07f * static_cast<float>(text.footer.size()) - 0.06f;
+    root->addChild(makeBar(0.55f, 1.0f, {panelBottom, 0.72f}, {0x262B36FFu, 0x262B36FFu}));
+
+    std::vector<float> ys;
+    std::vector<std::uint32_t> colours;
+    const int steps = legend.kind == ColourMapKind::Categorical
+                          ? static_cast<int>(legend.categories.size())
+                          : kBarSteps;
+    const float step = (kBarTop - kBarBottom) / static_cast<float>(std::max(steps, 1));
+    if (legend.kind == ColourMapKind::Categorical) {
+        // One swatch a class, top to bottom in the legend's order.
+        for (int i = 0; i < steps; ++i) {
+            const float top = kBarTop - step * static_cast<float>(i);
+            const std::uint32_t c = legend.categories[static_cast<std::size_t>(i)].second;
+            root->addChild(makeBar(kBarLeft, kBarRight, {top - step * 0.85f, top}, {c, c}));
+        }
+    } else {
+        for (int i = 0; i <= steps; ++i) {
+            const double t = static_cast<double>(i) / steps;
+            ys.push_back(kBarBottom + step * static_cast<float>(i));
+            colours.push_back(mapColour(legend, t));
+        }
+        root->addChild(makeBar(kBarLeft, kBarRight, ys, colours));
+    }
+
+    auto* ink = new SoBaseColor;
+    ink->rgb.setValue(0.92f, 0.93f, 0.95f);
+    root->addChild(ink);
+    addText(root, kTitleRight, 0.64f, text.title);
+    const float lineHeight = 0.035f;  // baseline to the centre of a line, roughly
+    if (legend.kind == ColourMapKind::Categorical) {
+        for (std::size_t i = 0; i < text.labels.size(); ++i) {
+            const float top = kBarTop - step * static_cast<float>(i);
+            addText(root, kTextRight, top - step * 0.425f - lineHeight / 2, text.labels[i]);
+        }
+    } else {
+        const float ysOf[3] = {kBarTop, (kBarTop + kBarBottom) / 2.0f, kBarBottom};
+        for (std::size_t i = 0; i < 3; ++i)
+            addText(root, kTextRight, ysOf[i] - lineHeight / 2, text.labels[i]);
+    }
+    for (std::size_t i = 0; i < text.footer.size(); ++i)
+        addText(root, kTitleRight, kBarBottom - 0.07f * static_cast<float>(i + 1), text.footer[i]);
+    return root;
+}
+
+}  // namespace caliper3d::scenegraph
