@@ -1,84 +1,180 @@
 #include <chrono>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "app/commands.h"
 #include "app/input_options.h"
 #include "app/scene_assembly.h"
 #include "app/verb_parser.h"
+#include "reconstruction/load/load_well.h"
 #include "scenegraph/iv_export.h"
 #include "scenegraph/main_thread.h"
+#include "scenegraph/mesh_export.h"
 
 namespace caliper3d::app {
 
+namespace {
+
+constexpr const char* kAcceptedExtensions = ".iv, .iv.gz, .glb, .ply, .stl or .obj";
+
+using Seconds = std::chrono::duration<double>;
+
+bool endsWith(const std::string& text, const std::string& tail) {
+    return text.size() > tail.size() &&
+           text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+// The Open Inventor export: the scene the window builds, or every level streamed.
+int exportIv(const std::vector<WellSource>& sources, const LoadOptions& options,
+             const std::string& out, bool full, const scenegraph::IvExportOptions& ivOptions) {
+    scenegraph::initCoin();
+    const auto start = std::chrono::steady_clock::now();
+    AssembledScene scene = assembleScene(sources, options);
+    if (scene.wells == 0) return kExitBadInput;
+    const auto built = std::chrono::steady_clock::now();
+    if (full) {
+        std::vector<const reconstruction::WellGeometry*> wells;
+        for (const auto& geometry : scene.geometries) wells.push_back(geometry.get());
+        scenegraph::writeIvFullDetail(wells, out, ivOptions);
+    } else {
+        scenegraph::writeIv(scene.root.get(), out, ivOptions);
+    }
+    const auto written = std::chrono::steady_clock::now();
+    std::printf("wrote %s (%d well%s): read and built in %.2f s, written in %.2f s\n", out.c_str(),
+                scene.wells, scene.wells == 1 ? "" : "s", Seconds(built - start).count(),
+                Seconds(written - built).count());
+    return scene.failures > 0 ? kExitBadInput : kExitOk;
+}
+
+// A mesh export: no Coin nodes, each well read, its segments meshed at one level into the
+// writer, and the well freed before the next is read.
+int exportMesh(const std::vector<WellSource>& sources, const LoadOptions& options,
+               const std::string& out, scenegraph::MeshFormat format, bool full, bool binary) {
+    const auto start = std::chrono::steady_clock::now();
+    const reconstruction::Wellhead origin = reconstruction::sceneOrigin(sources);
+    scenegraph::MeshFileWriter writer(format, binary);
+    const scenegraph::MeshDetail detail =
+        full ? scenegraph::MeshDetail::Full : scenegraph::MeshDetail::Shown;
+    int wells = 0, failures = 0;
+    for (const WellSource& source : sources) {
+        try {
+            const reconstruction::LoadedWell loaded =
+                reconstruction::loadWell(source, options, origin);
+            // Drawn as asked (--colour-by, --exaggerate); each well over its own colour range,
+            // as it is freed before the next is read.
+            const reconstruction::WellGeometry styled = loaded.geometry->restyled(
+                options.radialExaggeration,
+                reconstruction::makeWallColouring(*loaded.geometry, options.colour));
+            writer.addWell(styled, std::filesystem::path(source.path).stem().string(), detail);
+            ++wells;
+            std::printf("%s: %zu sections, %zu segments, %zu warnings\n", source.path.c_str(),
+                        loaded.table->rowCount(), loaded.geometry->segmentCount(),
+                        loaded.diagnostics.warningCount);
+            printWarnings(loaded.diagnostics);
+        } catch (const scenegraph::MeshTooLarge& e) {
+            throw std::runtime_error(std::string(e.what()) +
+                                     "; --detail shown, or .iv with --detail full (written "
+                                     "segment by segment), need far less");
+        } catch (const std::exception& e) {
+            ++failures;
+            std::fprintf(stderr, "caliper3d: %s\n", e.what());
+        }
+    }
+    if (wells == 0) return kExitBadInput;
+    const scenegraph::MeshExportCounts counts = writer.counts();
+    const auto built = std::chrono::steady_clock::now();
+    writer.write(out);
+    const auto written = std::chrono::steady_clock::now();
+    std::printf(
+        "wrote %s (%d well%s, %zu meshes, %zu vertices, %zu triangles): read and built in "
+        "%.2f s, written in %.2f s\n",
+        out.c_str(), wells, wells == 1 ? "" : "s", counts.meshes, counts.vertices, counts.triangles,
+        Seconds(built - start).count(), Seconds(written - built).count());
+    return failures > 0 ? kExitBadInput : kExitOk;
+}
+
+}  // namespace
+
 int runExport(const QStringList& args) {
     return guardedVerb("export", [&]() -> int {
-        VerbParser verb("export", "FILE... -o OUT.iv",
-                        "Export wells as an Open Inventor scene: each well's path and, per "
-                        "segment, an SoLOD. By default (--detail shown) its levels are the coarse "
-                        "ones the window loads up front (sections kept by shape error, 12-point "
-                        "rings and the raw N-gon; see --shape-tolerance). --detail full writes "
-                        "every level, full detail first, one segment at a time (memory holds one "
-                        "segment's nodes; the file is large: 2.9 GB for 4 km at 2.5 mm). The file "
-                        "is binary Open Inventor unless --ascii is given: every Inventor reader "
-                        "takes both, and text takes 4-5 times as long to write.");
+        VerbParser verb(
+            "export", "FILE... -o OUT",
+            "Export wells for other tools; the extension of OUT chooses the format.\n"
+            ".iv, .iv.gz: an Open Inventor scene, each well's path and, per segment, an SoLOD. "
+            "By default (--detail shown) its levels are the coarse ones the window loads up "
+            "front (sections kept by shape error, 12-point rings and the raw N-gon; see "
+            "--shape-tolerance). --detail full writes every level, full detail first, one "
+            "segment at a time (memory holds one segment's nodes; the file is large: 2.9 GB "
+            "for 4 km at 2.5 mm). Binary unless --ascii is given: every Inventor reader takes "
+            "both, and text takes 4-5 times as long to write.\n"
+            ".glb (glTF 2.0 binary, a node and a mesh per segment, per-vertex colours), .ply "
+            "(text, per-vertex colours), .stl (no colours), .obj (colours only as the common "
+            "'v x y z r g b' extension): the wall as triangles, one level per segment, in "
+            "metres in the scene frame (x east, y up, z south from the first wellhead: glTF's "
+            "own axes). --detail shown writes the finest coarse level (what the window shows "
+            "up front: sections kept by shape error, 12-point rings); --detail full every "
+            "section with the full spline. Each mesh library holds the whole file in memory "
+            "before it writes it: --detail full of 4 km at 2.5 mm (154 M triangles) takes "
+            "6.7 GB as .glb (a 3.4 GB file), and as .ply, .stl or .obj would take 46-84 GB, "
+            "so it is refused when the estimate passes the machine's memory (.iv --detail full "
+            "is written segment by segment). .stl is binary unless --ascii is given. See "
+            "docs/formats.md, \"Mesh exports\".");
         QCommandLineParser& p = verb.parser();
         p.addOption({{"o", "output"},
-                     "Output file: .iv, or .iv.gz for a gzip-compressed scene (as --gzip).",
+                     "Output file: .iv, .iv.gz (gzip-compressed Inventor, as --gzip), .glb, "
+                     ".ply, .stl or .obj.",
                      "OUT"});
         p.addOption({"ascii",
-                     "Write Open Inventor as text (3 times the size and 4-5 times the writing "
-                     "time of binary)."});
-        p.addOption({"binary", "Write binary Open Inventor (the default)."});
-        p.addOption({"gzip", "Compress the output with gzip (implied by a name ending .iv.gz)."});
+                     "Write text: Open Inventor (3 times the size and 4-5 times the writing "
+                     "time of binary) or STL."});
+        p.addOption({"binary", "Write binary Open Inventor or STL (the default)."});
+        p.addOption(
+            {"gzip", "Compress Open Inventor with gzip (implied by a name ending .iv.gz)."});
         p.addOption({"detail",
-                     "shown (the coarse levels, default) or full (every level, streamed).",
+                     "shown (default): the coarse levels the window shows up front (.iv: every "
+                     "coarse level; mesh formats: the finest of them). full: every section at "
+                     "full detail (.iv: every level, streamed segment by segment; mesh formats: "
+                     "the full level only, the whole file held in memory).",
                      "LEVELS", "shown"});
         addInputOptions(p);
         addColourOptions(p);
         addWellSourceOptions(p);
         if (!verb.parse(args, 1)) return kExitOk;
-        if (!verb.isSet("output")) throw UsageError("caliper3d export: -o OUT.iv is required");
+        if (!verb.isSet("output")) throw UsageError("caliper3d export: -o OUT is required");
         const std::string out = verb.value("output");
-        const auto endsWith = [&out](const std::string& tail) {
-            return out.size() > tail.size() &&
-                   out.compare(out.size() - tail.size(), tail.size(), tail) == 0;
-        };
-        const bool gzipName = endsWith(".iv.gz");
-        if (!endsWith(".iv") && !gzipName)
-            throw UsageError("caliper3d export: the output must end in .iv or .iv.gz, got '" + out +
-                             "'");
+        const bool gzipName = endsWith(out, ".iv.gz");
+        const bool iv = endsWith(out, ".iv") || gzipName;
+        const std::optional<scenegraph::MeshFormat> mesh = scenegraph::meshFormatFor(out);
+        if (!iv && !mesh)
+            throw UsageError("caliper3d export: the output must end in " +
+                             std::string(kAcceptedExtensions) + ", got '" + out + "'");
         const std::string detail = verb.value("detail");
         if (detail != "shown" && detail != "full")
             throw UsageError("caliper3d export: --detail takes shown or full, got '" + detail +
                              "'");
         if (verb.isSet("ascii") && verb.isSet("binary"))
             throw UsageError("caliper3d export: give --ascii or --binary, not both");
+        if (mesh && verb.isSet("gzip"))
+            throw UsageError("caliper3d export: --gzip applies to .iv only");
+        if (mesh && *mesh != scenegraph::MeshFormat::Stl &&
+            (verb.isSet("ascii") || verb.isSet("binary")))
+            throw UsageError(
+                "caliper3d export: --ascii and --binary apply to .iv and .stl (.glb is always "
+                "binary, .ply and .obj always text)");
         LoadOptions options = inputOptionsFrom(p);
         options.colour = colourRequestFrom(p);
+        const std::vector<WellSource> sources = wellSourcesFrom(p, verb.positional());
+        const bool full = detail == "full";
+        if (mesh) return exportMesh(sources, options, out, *mesh, full, !verb.isSet("ascii"));
 
-        scenegraph::initCoin();
-        const auto start = std::chrono::steady_clock::now();
-        AssembledScene scene = assembleScene(wellSourcesFrom(p, verb.positional()), options);
-        if (scene.wells == 0) return kExitBadInput;
         scenegraph::IvExportOptions ivOptions;
         ivOptions.binary = !verb.isSet("ascii");
         ivOptions.gzip = verb.isSet("gzip") || gzipName;
-        const auto built = std::chrono::steady_clock::now();
-        if (detail == "full") {
-            std::vector<const reconstruction::WellGeometry*> wells;
-            for (const auto& geometry : scene.geometries) wells.push_back(geometry.get());
-            scenegraph::writeIvFullDetail(wells, out, ivOptions);
-        } else {
-            scenegraph::writeIv(scene.root.get(), out, ivOptions);
-        }
-        const auto written = std::chrono::steady_clock::now();
-        using Seconds = std::chrono::duration<double>;
-        std::printf("wrote %s (%d well%s): read and built in %.2f s, written in %.2f s\n",
-                    out.c_str(), scene.wells, scene.wells == 1 ? "" : "s",
-                    Seconds(built - start).count(), Seconds(written - built).count());
-        return scene.failures > 0 ? kExitBadInput : kExitOk;
+        return exportIv(sources, options, out, full, ivOptions);
     });
 }
 

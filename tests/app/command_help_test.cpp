@@ -135,7 +135,7 @@ TEST(CommandHelpTest, ExportToAGzipNameWritesGzip) {
     ASSERT_NE(std::fgets(text, sizeof text, pipe), nullptr);
     pclose(pipe);
     EXPECT_EQ(std::string(text).rfind("#Inventor V2.1 binary", 0), 0u) << text;
-    const CommandRun wrongName = run("export " + exampleLog().string() + " -o scene.obj");
+    const CommandRun wrongName = run("export " + exampleLog().string() + " -o scene.dae");
     EXPECT_EQ(wrongName.status, 2);
 }
 

@@ -1,7 +1,9 @@
 #include <fstream>
 #include <string>
 
+#include <assimp/scene.h>
 #include <gtest/gtest.h>
+#include <assimp/Importer.hpp>
 #include "cli_run.h"
 #include "test_support.h"
 
@@ -34,6 +36,82 @@ TEST(CommandLineTest, SynthThenExportWritesAnInventorFile) {
     exported = run("export " + log.string() + " -o " + iv.string() + " --ascii --binary");
     EXPECT_EQ(exported.status, 2) << exported.output;
     EXPECT_NE(exported.output.find("not both"), std::string::npos) << exported.output;
+}
+
+TEST(CommandLineTest, ExportWritesTheMeshFormatItsExtensionNames) {
+    const auto log = caliper3d::test::scratch("cli_mesh_example.txt");
+    ASSERT_EQ(run("synth --profile example -o " + log.string() + " --length 30 --step 0.1").status,
+              0);
+    const auto glb = caliper3d::test::scratch("cli_example.glb");
+    std::filesystem::remove(glb);
+    CommandRun exported = run("export " + log.string() + " -o " + glb.string());
+    ASSERT_EQ(exported.status, 0) << exported.output;
+    // 30 segments of 1 m, one mesh each; the triangles it reports are those in the file.
+    EXPECT_NE(exported.output.find("(1 well, 30 meshes, "), std::string::npos) << exported.output;
+    Assimp::Importer importer;
+    const aiScene* scene = importer.ReadFile(glb.string(), 0);
+    ASSERT_NE(scene, nullptr) << importer.GetErrorString();
+    ASSERT_EQ(scene->mNumMeshes, 30u);
+    std::size_t faces = 0;
+    for (unsigned int m = 0; m < scene->mNumMeshes; ++m) faces += scene->mMeshes[m]->mNumFaces;
+    EXPECT_NE(exported.output.find(" vertices, " + std::to_string(faces) + " triangles)"),
+              std::string::npos)
+        << exported.output;
+    EXPECT_TRUE(scene->mMeshes[0]->HasVertexColors(0));
+
+    // The same well at full detail: every section, 2 x 48 triangles between rows.
+    exported = run("export " + log.string() + " -o " + glb.string() + " --detail full");
+    ASSERT_EQ(exported.status, 0) << exported.output;
+    EXPECT_NE(exported.output.find(" vertices, " + std::to_string(2 * 48 * 300) + " triangles)"),
+              std::string::npos)
+        << exported.output;
+
+    for (const char* name : {"cli_example.ply", "cli_example.stl", "cli_example.obj"}) {
+        const auto out = caliper3d::test::scratch(name);
+        exported = run("export " + log.string() + " -o " + out.string());
+        ASSERT_EQ(exported.status, 0) << exported.output;
+        Assimp::Importer again;
+        const aiScene* read = again.ReadFile(out.string(), 0);
+        ASSERT_NE(read, nullptr) << name << ": " << again.GetErrorString();
+        std::size_t readFaces = 0;
+        for (unsigned int m = 0; m < read->mNumMeshes; ++m)
+            readFaces += read->mMeshes[m]->mNumFaces;
+        EXPECT_EQ(readFaces, faces) << name;
+    }
+}
+
+TEST(CommandLineTest, ExportRefusesAnUnknownExtensionOrAnOptionTheFormatIgnores) {
+    const auto log = caliper3d::test::scratch("cli_mesh_usage.txt");
+    ASSERT_EQ(run("synth -o " + log.string() + " --length 5 --step 0.1").status, 0);
+    const std::string input = "export " + log.string() + " -o ";
+    CommandRun r = run(input + caliper3d::test::scratch("x.dae").string());
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("the output must end in .iv, .iv.gz, .glb, .ply, .stl or .obj"),
+              std::string::npos)
+        << r.output;
+    EXPECT_FALSE(std::filesystem::exists(caliper3d::test::scratch("x.dae")));
+    r = run(input + caliper3d::test::scratch("x.glb").string() + " --gzip");
+    EXPECT_EQ(r.status, 2) << r.output;
+    EXPECT_NE(r.output.find("--gzip applies to .iv only"), std::string::npos) << r.output;
+    for (const char* name : {"x.obj", "x.ply", "x.glb"}) {
+        r = run(input + caliper3d::test::scratch(name).string() + " --ascii");
+        EXPECT_EQ(r.status, 2) << r.output;
+        EXPECT_NE(r.output.find("--ascii and --binary apply to .iv and .stl"), std::string::npos)
+            << r.output;
+    }
+    // STL is binary unless --ascii asks for text, as Inventor is.
+    const auto firstWord = [](const std::filesystem::path& path) {
+        std::ifstream in(path);
+        std::string word;
+        in >> word;
+        return word;
+    };
+    const auto stl = caliper3d::test::scratch("cli_ascii.stl");
+    ASSERT_EQ(run(input + stl.string()).status, 0);
+    EXPECT_NE(firstWord(stl), "solid");
+    r = run(input + stl.string() + " --ascii");
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(firstWord(stl), "solid");
 }
 
 TEST(CommandLineTest, BadInputExitsOneNamingFileAndLine) {
