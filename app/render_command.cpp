@@ -8,6 +8,7 @@
 
 #include "app/commands.h"
 #include "app/input_options.h"
+#include "app/pick_output.h"
 #include "app/png_output.h"
 #include "app/scene_assembly.h"
 #include "app/verb_parser.h"
@@ -42,6 +43,7 @@ int runRender(const QStringList& args) {
                      "After the picture, print one line: triangles_drawn frame_ms (the mean of "
                      "5 frames drawn after it) rss_mb (peak) first_picture_ms and load_ms "
                      "(from the start of reading)."});
+        addPickOption(p);
         addInputOptions(p);
         addColourOptions(p);
         addWellSourceOptions(p);
@@ -62,6 +64,7 @@ int runRender(const QStringList& args) {
         if (verb.isSet("at") && !downHole)
             throw UsageError("caliper3d render: --at places the eye of --view hole; the " +
                              verb.value("view") + " view shows the whole scene and ignores it");
+        const auto pick = pickPixelFrom(p, width, height, "caliper3d render");
         LoadOptions options = inputOptionsFrom(p);
         options.colour = colourRequestFrom(p);
 
@@ -112,6 +115,7 @@ int runRender(const QStringList& args) {
                 scenegraph::peakRss_mb(), Ms(firstPicture - start).count(), scene.load_ms);
         }
         std::printf("wrote %s (%dx%d)\n", out.c_str(), width, height);
+        if (pick) std::fputs(describePick(scene, root.get(), width, height, *pick).c_str(), stdout);
         return scene.failures > 0 ? kExitBadInput : kExitOk;
     });
 }

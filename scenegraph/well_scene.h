@@ -43,6 +43,8 @@ public:
     WellScene();
 
     SoSeparator* root() const { return m_root.get(); }
+    // The separator holding one SoLOD per segment, child i being segment i (picking).
+    const SoSeparator* segmentGroup() const { return m_segments; }
 
     // Draws the well path (decimated to about one point per `spacing_m`).
     void setPath(const reconstruction::WellGeometry& geometry, double spacing_m = 1.0);

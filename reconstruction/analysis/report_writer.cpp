@@ -4,6 +4,8 @@
 #include <cmath>
 #include <fstream>
 #include <stdexcept>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "io/las_writer.h"
@@ -90,45 +92,78 @@ std::vector<std::size_t> reportedSections(const WellAnalysis& a, const ReportOpt
     return rows;
 }
 
+namespace {
+
+constexpr const char* kSectionColumns =
+    "md_m,tvd_m,north_m,east_m,inc_deg,azi_deg,dmin_mm,dmax_mm,ellipticity,major_azimuth_deg,"
+    "area_mm2,centre_offset_mm,class,dls_deg_per_30m,bit_mm,equivalent_diameter_mm,"
+    "major_from_high_side_deg,centre_offset_azimuth_deg,repaired_arms";
+constexpr const char* kWellheadColumns = ",easting_m,northing_m,tvdss_m";
+
+// One section's CSV fields, comma separated, no line end.
+void appendSectionRow(std::string& line, const SectionResult& r, const ReportOptions& options) {
+    const double fields[] = {
+        r.md_m,    r.tvd_m,   r.north_m,     r.east_m,           r.inc_deg,  r.azi_deg,
+        r.dmin_mm, r.dmax_mm, r.ellipticity, r.majorAzimuth_deg, r.area_mm2, r.centreOffset_mm};
+    const int decimals[] = {4, 4, 4, 4, 3, 3, 2, 2, 4, 2, 1, 2};
+    for (int k = 0; k < 12; ++k) {
+        number(line, fields[k], decimals[k]);
+        line += ',';
+    }
+    line += className(r.cls);
+    const double extra[] = {r.dls_degPer30m, r.bit_mm, r.equivalentDiameter_mm,
+                            r.majorFromHighSide_deg, r.centreOffsetAzimuth_deg};
+    const int extraDecimals[] = {3, 2, 2, 2, 2};
+    for (int k = 0; k < 5; ++k) {
+        line += ',';
+        number(line, extra[k], extraDecimals[k]);
+    }
+    line += ',';
+    if (r.cls != BoreholeClass::NoData) line += std::to_string(r.repairedArms);
+    if (const auto& w = options.wellhead) {
+        const double map[] = {w->easting_m + r.east_m, w->northing_m + r.north_m,
+                              r.tvd_m - w->elevation_m};
+        for (double v : map) {
+            line += ',';
+            number(line, v, 4);
+        }
+    }
+}
+
+std::vector<std::string> splitFields(const std::string& line) {
+    std::vector<std::string> out;
+    std::size_t start = 0;
+    for (std::size_t comma; (comma = line.find(',', start)) != std::string::npos; start = comma + 1)
+        out.push_back(line.substr(start, comma - start));
+    out.push_back(line.substr(start));
+    return out;
+}
+
+}  // namespace
+
 void writeSectionReport(std::ostream& out, const WellAnalysis& a, const ReportOptions& options) {
-    out << "md_m,tvd_m,north_m,east_m,inc_deg,azi_deg,dmin_mm,dmax_mm,ellipticity,major_azimuth_"
-           "deg,"
-           "area_mm2,centre_offset_mm,class,dls_deg_per_30m,bit_mm,equivalent_diameter_mm,"
-           "major_from_high_side_deg,centre_offset_azimuth_deg,repaired_arms"
-        << (options.wellhead ? ",easting_m,northing_m,tvdss_m\n" : "\n");
+    out << kSectionColumns << (options.wellhead ? kWellheadColumns : "") << '\n';
     std::string line;
     for (std::size_t i : reportedSections(a, options)) {
-        const SectionResult& r = a.sections[i];
         line.clear();
-        const double fields[] = {
-            r.md_m,    r.tvd_m,   r.north_m,     r.east_m,           r.inc_deg,  r.azi_deg,
-            r.dmin_mm, r.dmax_mm, r.ellipticity, r.majorAzimuth_deg, r.area_mm2, r.centreOffset_mm};
-        const int decimals[] = {4, 4, 4, 4, 3, 3, 2, 2, 4, 2, 1, 2};
-        for (int k = 0; k < 12; ++k) {
-            number(line, fields[k], decimals[k]);
-            line += ',';
-        }
-        line += className(r.cls);
-        const double extra[] = {r.dls_degPer30m, r.bit_mm, r.equivalentDiameter_mm,
-                                r.majorFromHighSide_deg, r.centreOffsetAzimuth_deg};
-        const int extraDecimals[] = {3, 2, 2, 2, 2};
-        for (int k = 0; k < 5; ++k) {
-            line += ',';
-            number(line, extra[k], extraDecimals[k]);
-        }
-        line += ',';
-        if (r.cls != BoreholeClass::NoData) line += std::to_string(r.repairedArms);
-        if (const auto& w = options.wellhead) {
-            const double map[] = {w->easting_m + r.east_m, w->northing_m + r.north_m,
-                                  r.tvd_m - w->elevation_m};
-            for (double v : map) {
-                line += ',';
-                number(line, v, 4);
-            }
-        }
+        appendSectionRow(line, a.sections[i], options);
         line += '\n';
         out << line;
     }
+}
+
+std::vector<std::pair<std::string, std::string>> sectionReportFields(const SectionResult& r,
+                                                                     const ReportOptions& options) {
+    std::string header = kSectionColumns;
+    if (options.wellhead) header += kWellheadColumns;
+    std::string line;
+    appendSectionRow(line, r, options);
+    const std::vector<std::string> names = splitFields(header), values = splitFields(line);
+    std::vector<std::pair<std::string, std::string>> out;
+    out.reserve(names.size());
+    for (std::size_t k = 0; k < names.size() && k < values.size(); ++k)
+        out.emplace_back(names[k], values[k]);
+    return out;
 }
 
 void writeZoneReport(std::ostream& out, const WellAnalysis& a) {

@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <optional>
@@ -35,6 +36,12 @@ struct ReportOptions {
 // the locale.
 void writeSectionReport(std::ostream& out, const WellAnalysis& analysis,
                         const ReportOptions& options = {});
+
+// One section's row of that CSV as (column, text) pairs, in the CSV's order and with its
+// digits (the same code writes both): an undefined value is empty, and a no_data section
+// leaves every measurement and repaired_arms empty.
+std::vector<std::pair<std::string, std::string>> sectionReportFields(
+    const SectionResult& section, const ReportOptions& options = {});
 
 // The sections a report lists (indices into analysis.sections, ascending).
 std::vector<std::size_t> reportedSections(const WellAnalysis& analysis,

@@ -46,5 +46,9 @@ SectionFrame frameFromRelativeBearing(const HoleDirection& d, double rb_deg);
 inline glm::dvec3 toScene(const Ned& v) {
     return {v.y, -v.z, -v.x};
 }
+// Its inverse: a scene point or direction back in the analysis frame (picking).
+inline Ned fromScene(const glm::dvec3& v) {
+    return {-v.z, v.x, -v.y};
+}
 
 }  // namespace caliper3d::reconstruction

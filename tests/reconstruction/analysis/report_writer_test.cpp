@@ -133,3 +133,33 @@ TEST(ReportWriterTest, WellheadAddsMapCoordinatesAndDepthBelowDatum) {
     ASSERT_GT(r.east_m, 1.0);
     EXPECT_EQ(last.substr(last.size() - std::strlen(expected)), expected);
 }
+
+TEST(ReportWriterTest, OneSectionsFieldsAreItsCsvLine) {
+    WellAnalysis a = exampleAnalysis();
+    a.sections[7].cls = BoreholeClass::NoData;  // as analyseWell leaves a section without data
+    a.sections[7].dmin_mm = a.sections[7].dmax_mm = a.sections[7].equivalentDiameter_mm = io::kNaN;
+    for (const bool withWellhead : {false, true}) {
+        ReportOptions options;
+        if (withWellhead) options.wellhead = Wellhead{500000.0, 6800000.0, 30.0};
+        std::ostringstream out;
+        writeSectionReport(out, a, options);
+        std::istringstream in(out.str());
+        std::string header, line;
+        std::getline(in, header);
+        for (std::size_t i = 0; std::getline(in, line); ++i) {
+            const auto fields = sectionReportFields(a.sections[i], options);
+            std::string names, values;
+            for (std::size_t k = 0; k < fields.size(); ++k) {
+                names += (k ? "," : "") + fields[k].first;
+                values += (k ? "," : "") + fields[k].second;
+            }
+            ASSERT_EQ(names, header);
+            ASSERT_EQ(values, line) << i;
+        }
+    }
+    const auto noData = sectionReportFields(a.sections[7]);
+    EXPECT_EQ(noData[12].first, "class");
+    EXPECT_EQ(noData[12].second, "no_data");
+    EXPECT_EQ(noData[6].first, "dmin_mm");
+    EXPECT_EQ(noData[6].second, "");
+}

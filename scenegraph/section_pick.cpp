@@ -1,0 +1,181 @@
+#include "scenegraph/section_pick.h"
+
+#include <charconv>
+#include <cmath>
+#include <stdexcept>
+#include <system_error>
+#include <utility>
+
+#include <Inventor/SbViewportRegion.h>
+#include <Inventor/SoPath.h>
+#include <Inventor/SoPickedPoint.h>
+#include <Inventor/actions/SoRayPickAction.h>
+#include <Inventor/lists/SoPickedPointList.h>
+#include <Inventor/nodes/SoLOD.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+#include "reconstruction/analysis/report_writer.h"
+#include "scenegraph/main_thread.h"
+#include "scenegraph/well_scene.h"
+
+namespace caliper3d::scenegraph {
+
+namespace {
+
+// Which well, segment and level a picked path runs through:
+//   well root, segment group, segment SoLOD, level node [, part SoLOD, full | reduced copy]
+// (WellScene, makeSegmentLod, makeLevelNode). The path line's picks go elsewhere.
+struct PathHit {
+    std::size_t well = 0;
+    std::size_t segment = 0;
+    int level = 0;
+    bool inParts = false;
+    bool reducedPart = false;
+};
+
+std::optional<PathHit> wallOf(const SoPath* path, const std::vector<PickableWell>& wells) {
+    const int n = path->getLength();
+    for (int i = 0; i + 3 < n; ++i) {
+        for (std::size_t w = 0; w < wells.size(); ++w) {
+            const WellScene& scene = *wells[w].scene;
+            if (path->getNode(i) != scene.root()) continue;
+            if (path->getNode(i + 1) != scene.segmentGroup()) return std::nullopt;
+            PathHit hit;
+            hit.well = w;
+            hit.segment = static_cast<std::size_t>(path->getIndex(i + 2));
+            if (hit.segment >= scene.segmentCount()) return std::nullopt;
+            // A segment's SoLOD holds its levels from the finest it holds on.
+            hit.level = scene.heldFrom(hit.segment) + path->getIndex(i + 3);
+            if (i + 5 < n && path->getNode(i + 4)->isOfType(SoLOD::getClassTypeId())) {
+                hit.inParts = true;
+                hit.reducedPart = path->getIndex(i + 5) == 1;
+            }
+            return hit;
+        }
+    }
+    return std::nullopt;
+}
+
+void checkWells(const std::vector<PickableWell>& wells) {
+    for (const PickableWell& w : wells)
+        if (!w.scene || !w.geometry || !w.analysis ||
+            w.analysis->sections.size() != w.geometry->table().rowCount())
+            throw std::invalid_argument(
+                "pickSection: every well needs its scene, its geometry and that geometry's "
+                "analysis");
+}
+
+// The nearest wall point among the action's picks (all of them, nearest first: the path line
+// or another well's wall may lie in front).
+std::optional<SectionPick> nearestWall(SoRayPickAction& action, SoNode* root,
+                                       const std::vector<PickableWell>& wells) {
+    action.setPickAll(TRUE);
+    action.apply(root);
+    const SoPickedPointList& picked = action.getPickedPointList();
+    for (int k = 0; k < picked.getLength(); ++k) {
+        const SoPickedPoint* point = picked[k];
+        const std::optional<PathHit> hit = wallOf(point->getPath(), wells);
+        if (!hit) continue;
+        const PickableWell& well = wells[hit->well];
+        SectionPick out;
+        out.well = hit->well;
+        out.wellName = well.name;
+        out.segment = hit->segment;
+        out.level = hit->level;
+        out.inParts = hit->inParts;
+        out.reducedPart = hit->reducedPart;
+        const SbVec3f& p = point->getPoint();
+        out.point = glm::vec3(p[0], p[1], p[2]);
+        const auto [firstRow, lastRow] = well.geometry->segmentRows(hit->segment);
+        out.wall = reconstruction::locateWallPoint(*well.geometry, firstRow, lastRow,
+                                                   glm::dvec3(out.point));
+        out.section = well.analysis->sections[out.wall.row];
+        return out;
+    }
+    return std::nullopt;
+}
+
+// The report's columns that a section without data leaves empty (its position, path and bit
+// size stay known; docs/analysis.md, "Report CSV").
+bool isMeasurement(const std::string& column) {
+    static const char* const kMeasurements[] = {"dmin_mm",
+                                                "dmax_mm",
+                                                "ellipticity",
+                                                "major_azimuth_deg",
+                                                "area_mm2",
+                                                "centre_offset_mm",
+                                                "equivalent_diameter_mm",
+                                                "major_from_high_side_deg",
+                                                "centre_offset_azimuth_deg",
+                                                "repaired_arms"};
+    for (const char* m : kMeasurements)
+        if (column == m) return true;
+    return false;
+}
+
+std::string fixed(double v, int decimals) {
+    char buf[64];
+    const auto result = std::to_chars(buf, buf + sizeof buf, v == 0.0 ? 0.0 : v,
+                                      std::chars_format::fixed, decimals);
+    return result.ec == std::errc() ? std::string(buf, result.ptr) : std::string();
+}
+
+// A value of the pick's own: empty when undefined, as the report writes it.
+std::string valueOf(double v, int decimals) {
+    return std::isfinite(v) ? fixed(v, decimals) : std::string();
+}
+
+}  // namespace
+
+std::optional<SectionPick> pickSection(SoNode* root, const SbViewportRegion& viewport,
+                                       const SbVec2s& pixel,
+                                       const std::vector<PickableWell>& wells) {
+    assertMainThread("pickSection");
+    checkWells(wells);
+    SoRayPickAction action(viewport);
+    // Through the pixel's centre, where the picture's sample is taken.
+    const SbVec2s origin = viewport.getViewportOriginPixels();
+    const SbVec2s size = viewport.getViewportSizePixels();
+    action.setNormalizedPoint(SbVec2f((static_cast<float>(pixel[0] - origin[0]) + 0.5f) / size[0],
+                                      (static_cast<float>(pixel[1] - origin[1]) + 0.5f) / size[1]));
+    return nearestWall(action, root, wells);
+}
+
+std::optional<SectionPick> pickSection(SoNode* root, const SbViewportRegion& viewport,
+                                       const SbVec3f& start, const SbVec3f& direction,
+                                       const std::vector<PickableWell>& wells) {
+    assertMainThread("pickSection");
+    checkWells(wells);
+    SoRayPickAction action(viewport);
+    // From `start` on only: without a near distance Coin picks behind the start too.
+    action.setRay(start, direction, 0.0f);
+    return nearestWall(action, root, wells);
+}
+
+std::string formatSectionPick(const SectionPick& pick) {
+    const bool noData = pick.section.cls == reconstruction::BoreholeClass::NoData;
+    std::string out;
+    auto line = [&out](const std::string& key, const std::string& value) {
+        out += key;
+        out += '=';
+        out += value;
+        out += '\n';
+    };
+    line("well", std::to_string(pick.well));
+    line("well_name", pick.wellName);
+    line("section", std::to_string(pick.wall.row));
+    line("segment", std::to_string(pick.segment));
+    line("level", std::to_string(pick.level));
+    if (pick.inParts) line("part", pick.reducedPart ? "reduced" : "every_section");
+    line("angle_from_high_side_deg", valueOf(pick.wall.fromHighSide_deg, 2));
+    line("angle_azimuth_deg", valueOf(pick.wall.azimuth_deg, 2));
+    line("angle_from_arm1_deg", valueOf(pick.wall.fromArm1_deg, 2));
+    line("radius_mm", noData ? "no_data" : valueOf(pick.wall.radius_mm, 2));
+    line("scene_point_m",
+         fixed(pick.point.x, 4) + ',' + fixed(pick.point.y, 4) + ',' + fixed(pick.point.z, 4));
+    for (const auto& [column, value] : reconstruction::sectionReportFields(pick.section))
+        line(column, noData && value.empty() && isMeasurement(column) ? "no_data" : value);
+    return out;
+}
+
+}  // namespace caliper3d::scenegraph
