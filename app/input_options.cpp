@@ -34,7 +34,9 @@ void addInputOptions(QCommandLineParser& parser) {
          "interpolate every arm within this many millimetres (coarser levels 4 and 16 times "
          "more; default 0.5).",
          "MM", "0.5"},
-        {"exaggerate", "Draw radii F times larger around the true path (display only; default 1).",
+        {"exaggerate",
+         "Draw radii F times larger around the true path (display only; default 1; render "
+         "chooses one for its picture).",
          "F", "1"},
         {"steep-inclination",
          "Above this inclination (degrees) arm 1 is placed from RB when the log has it "

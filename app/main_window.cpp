@@ -36,6 +36,8 @@
 #include "scenegraph/detail_loader.h"
 #include "scenegraph/iv_export.h"
 #include "scenegraph/segment_feeder.h"
+#include "scenegraph/view_overlay.h"
+#include "scenegraph/well_annotations.h"
 #include "scenegraph/well_scene.h"
 
 namespace caliper3d::app {
@@ -50,7 +52,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_viewer->setTransparencyType(SoGLRenderAction::SORTED_OBJECT_BLEND);
     m_sceneRoot = new SoSeparator;
     m_sceneRoot->ref();
-    m_viewer->setSceneGraph(m_sceneRoot);
+    m_overlay = std::make_unique<scenegraph::ViewOverlay>();
+    m_viewRoot = new SoSeparator;
+    m_viewRoot->ref();
+    m_viewRoot->addChild(m_sceneRoot);
+    m_viewRoot->addChild(m_overlay->root());
+    m_viewer->setSceneGraph(m_viewRoot);
     // Full detail near the camera, built on a worker as the camera moves.
     m_detail = std::make_unique<scenegraph::DetailLoader>(
         [this]() -> std::optional<scenegraph::DetailView> {
@@ -80,6 +87,7 @@ MainWindow::~MainWindow() {
     m_detail.reset();
     m_wells.clear();
     m_viewer->setSceneGraph(nullptr);
+    m_viewRoot->unref();
     m_sceneRoot->unref();
     delete m_viewer;
 }
@@ -95,7 +103,7 @@ void MainWindow::buildMenus() {
     QMenu* view = menuBar()->addMenu("&View");
     view->addAction("Well &warnings...", this, &MainWindow::showWarnings);
     view->addSeparator();
-    view->addAction("View &all", this, [this] { m_viewer->viewAll(); });
+    view->addAction("View &all", this, [this] { viewAll(); });
     view->addAction("&Iso", this, [this] { setView(int(scenegraph::ViewDirection::Iso)); });
     view->addAction("Looking &north", this,
                     [this] { setView(int(scenegraph::ViewDirection::North)); });
@@ -195,8 +203,10 @@ bool MainWindow::restyle(double radialExaggeration, const reconstruction::Colour
         well->scene = std::move(scene);
         well->options.radialExaggeration = radialExaggeration;
         well->options.colour = colour;
+        annotate(*well);  // the tick marks stand off the wall as now drawn
         m_detail->addWell(*well->scene, well->geometry);
     }
+    m_overlay->setCaption({scenegraph::exaggerationCaption(radialExaggeration)});
     m_lastOptions.radialExaggeration = radialExaggeration;
     m_lastOptions.colour = colour;
     m_legendSource = colourings.empty() ? nullptr : colourings.front();
@@ -312,6 +322,7 @@ void MainWindow::addWell(const WellSource& source, const LoadOptions& options) {
     m_sceneRoot->addChild(w.scene->root());
     m_wells.push_back(std::move(well));
     m_lastOptions = options;
+    m_overlay->setCaption({scenegraph::exaggerationCaption(options.radialExaggeration)});
 
     const std::string file = source.path;
     const QString name = QFileInfo(QString::fromStdString(file)).fileName();
@@ -323,6 +334,7 @@ void MainWindow::addWell(const WellSource& source, const LoadOptions& options) {
     scenegraph::SegmentFeeder::Callbacks callbacks;
     callbacks.geometry = [this, &w](std::shared_ptr<const reconstruction::WellGeometry> g) {
         w.geometry = g;
+        annotate(w);
         m_detail->addWell(*w.scene, std::move(g));
     };
     callbacks.warnings = [this, &w](const io::Diagnostics& diagnostics) {
@@ -331,7 +343,7 @@ void MainWindow::addWell(const WellSource& source, const LoadOptions& options) {
     };
     callbacks.progress = [this, name](std::size_t attached) {
         if (!m_viewedAll) {
-            m_viewer->viewAll();
+            viewAll();
             m_viewedAll = true;
         }
         m_status->setText(QString("Loading %1: %2 segments").arg(name).arg(attached));
@@ -374,7 +386,7 @@ void MainWindow::addWell(const WellSource& source, const LoadOptions& options) {
 void MainWindow::wellDone() {
     if (loading()) return;
     applyStyleAfterLoad();
-    m_viewer->viewAll();
+    viewAll();
     emit allWellsLoaded();
 }
 
@@ -405,6 +417,30 @@ void MainWindow::setExaggeration(double factor) {
     restyle(factor, m_lastOptions.colour);
 }
 
+void MainWindow::annotate(Well& well) {
+    SoSeparator* annotations =
+        scenegraph::makeWholeWellAnnotations(*well.geometry, well.options.radialExaggeration);
+    if (well.annotations)
+        m_sceneRoot->replaceChild(well.annotations, annotations);
+    else
+        m_sceneRoot->addChild(annotations);
+    well.annotations = annotations;
+}
+
+void MainWindow::viewAll() {
+    SoCamera* camera = m_viewer->getCamera();
+    if (!camera) return;
+    camera->viewAll(m_sceneRoot, m_viewer->getViewportRegion());
+    // SoCamera::viewAll puts the ends of a long well on the window's edges, a vertical
+    // well's wellhead and its name half outside: back off along the view.
+    SbVec3f look;
+    camera->orientation.getValue().multVec(SbVec3f(0.0f, 0.0f, -1.0f), look);
+    const float distance = camera->focalDistance.getValue();
+    const SbVec3f focus = camera->position.getValue() + look * distance;
+    camera->position = focus - look * (distance * kViewAllRoom);
+    camera->focalDistance = distance * kViewAllRoom;
+}
+
 void MainWindow::setView(int direction) {
     SoCamera* camera = m_viewer->getCamera();
     if (!camera) return;
@@ -413,7 +449,7 @@ void MainWindow::setView(int direction) {
     if (bbox.getBoundingBox().isEmpty()) return;
     scenegraph::aimCamera(camera, static_cast<scenegraph::ViewDirection>(direction),
                           bbox.getBoundingBox().getCenter());
-    m_viewer->viewAll();
+    viewAll();
 }
 
 }  // namespace caliper3d::app

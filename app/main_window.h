@@ -20,6 +20,7 @@ class WellLoadPipeline;
 namespace caliper3d::scenegraph {
 class DetailLoader;
 class SegmentFeeder;
+class ViewOverlay;
 class WellScene;
 }  // namespace caliper3d::scenegraph
 
@@ -75,6 +76,8 @@ private:
     void openDialog(bool add);
     void exportDialog();
     void setView(int direction);
+    void viewAll();  // the scene with room around it for the labels at its ends
+    static constexpr float kViewAllRoom = 1.12f;  // distance, over SoCamera::viewAll's
     void setExaggeration(double factor);
     void colourByChosen(int index);
     // The names of the "Colour by" box: the built-in quantities and the first well's curves.
@@ -88,7 +91,9 @@ private:
     WellViewer* m_viewer = nullptr;
     QComboBox* m_colourBox = nullptr;
     std::unique_ptr<scenegraph::DetailLoader> m_detail;
-    SoSeparator* m_sceneRoot = nullptr;
+    SoSeparator* m_sceneRoot = nullptr;  // the wells, their annotations; what is exported
+    SoSeparator* m_viewRoot = nullptr;   // the viewer's graph: the scene, then the overlay
+    std::unique_ptr<scenegraph::ViewOverlay> m_overlay;  // north arrow, radial exaggeration
     QLabel* m_status = nullptr;
     QPushButton* m_warningsButton = nullptr;  // "N warnings": opens the list
     LoadOptions m_lastOptions;
@@ -103,11 +108,15 @@ private:
         // The report's section values, computed the first time a colouring needs them.
         std::shared_ptr<const reconstruction::SectionValues> values;
         std::unique_ptr<scenegraph::WellScene> scene;
+        // Its depth ticks, labels, name and path above the log, beside the scene's root.
+        SoSeparator* annotations = nullptr;
         std::unique_ptr<reconstruction::WellLoadPipeline> pipeline;
         std::unique_ptr<scenegraph::SegmentFeeder> feeder;
         bool done = false;
     };
     void wellDone();
+    // Adds (or replaces) the well's annotations in the scene, for its geometry as drawn.
+    void annotate(Well& well);
     std::vector<std::unique_ptr<Well>> m_wells;
     bool m_viewedAll = false;
     std::shared_ptr<const reconstruction::WallColouring> m_legendSource;  // what the legend shows

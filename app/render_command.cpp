@@ -1,6 +1,10 @@
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <exception>
+#include <limits>
+#include <optional>
 
 #include <Inventor/nodes/SoPerspectiveCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
@@ -13,40 +17,142 @@
 #include "app/scene_assembly.h"
 #include "app/verb_parser.h"
 #include "io/number_parsing.h"
+#include "reconstruction/well_interval.h"
 #include "scenegraph/main_thread.h"
+#include "scenegraph/picture_scale.h"
 #include "scenegraph/render_stats.h"
+#include "scenegraph/view_overlay.h"
+#include "scenegraph/well_annotations.h"
 
 namespace caliper3d::app {
+
+namespace {
+
+// --depth TOP,BOTTOM: measured depths in metres.
+struct DepthInterval {
+    double top_m = 0.0;
+    double bottom_m = 0.0;
+};
+
+std::optional<DepthInterval> parseDepthInterval(const VerbParser& verb) {
+    if (!verb.isSet("depth")) return std::nullopt;
+    const std::string text = verb.value("depth");
+    const auto comma = text.find(',');
+    DepthInterval interval;
+    if (comma == std::string::npos || !io::parseNumber(text.substr(0, comma), interval.top_m) ||
+        !io::parseNumber(text.substr(comma + 1), interval.bottom_m))
+        throw UsageError("caliper3d render: --depth takes TOP,BOTTOM, measured depths in metres");
+    if (!(interval.top_m < interval.bottom_m))
+        throw UsageError("caliper3d render: --depth " + text + ": TOP must lie above BOTTOM");
+    return interval;
+}
+
+std::string depthRange(double top_m, double bottom_m) {
+    char range[96];
+    std::snprintf(range, sizeof range, "%.2f to %.2f m", top_m, bottom_m);
+    return range;
+}
+
+// What a picture draws of the wells loaded: the interval asked for (each well's whole
+// log otherwise), at the radial exaggeration given or else chosen for the picture
+// (scenegraph::autoExaggeration). An interval replaces each well's geometry by its rows
+// there; the exaggeration is applied as the wells are coloured (assembleScene).
+struct PicturePlan {
+    std::optional<DepthInterval> depth;
+    std::string depthText;    // as given, for messages
+    bool chooseExaggeration;  // no --exaggerate, and a view of the whole or of an interval
+    int height;               // of the picture, pixels
+    double exaggeration;      // as asked; then as drawn
+    double top_m() const { return depth ? depth->top_m : 0.0; }
+    double bottom_m() const {
+        return depth ? depth->bottom_m : std::numeric_limits<double>::infinity();
+    }
+
+    void operator()(std::vector<std::shared_ptr<const reconstruction::WellGeometry>>& wells,
+                    double& radialExaggeration) {
+        if (depth)
+            for (auto& well : wells) {
+                const std::vector<double>& md = well->table().depth_m;
+                if (depth->top_m < md.front() || depth->bottom_m > md.back())
+                    throw UsageError("caliper3d render: --depth " + depthText +
+                                     " is outside the logged depths of " + well->table().source +
+                                     " (" + depthRange(md.front(), md.back()) + ")");
+                well = reconstruction::intervalGeometry(*well, depth->top_m, depth->bottom_m,
+                                                        well->options());
+            }
+        if (chooseExaggeration) {
+            scenegraph::Bounds bounds;
+            double radius = std::numeric_limits<double>::infinity();
+            for (const auto& well : wells) {
+                scenegraph::addPathBounds(*well, top_m(), bottom_m(), bounds);
+                const double r = scenegraph::typicalRadius_m(*well, top_m(), bottom_m());
+                if (std::isfinite(r)) radius = std::min(radius, r);  // the thinnest hole reads too
+            }
+            exaggeration = scenegraph::autoExaggeration(bounds.diagonal(), radius, height);
+        }
+        radialExaggeration = exaggeration;
+    }
+};
+
+void addRenderOptions(QCommandLineParser& p) {
+    p.addOption({{"o", "output"}, "Output picture (.png).", "OUT"});
+    p.addOption({"width", "Picture width in pixels (default 1024).", "W", "1024"});
+    p.addOption({"height", "Picture height in pixels (default 768).", "H", "768"});
+    p.addOption({"view",
+                 "iso, north, east, top, or hole (inside the first well, looking down it) "
+                 "(default iso).",
+                 "VIEW", "iso"});
+    p.addOption({"at",
+                 "With --view hole: measured depth of the eye in metres (default: top of the log).",
+                 "MD"});
+    p.addOption({"depth",
+                 "Draw only the sections with measured depths from TOP to BOTTOM (metres, "
+                 "within the logged depths) and frame them.",
+                 "TOP,BOTTOM"});
+    p.addOption({"pixel-tolerance",
+                 QString("Level of detail: the shape error, in pixels, that may show "
+                         "(default %1).")
+                     .arg(double(scenegraph::kDefaultPixelTolerance)),
+                 "PX", QString::number(double(scenegraph::kDefaultPixelTolerance))});
+    p.addOption({"stats",
+                 "After the picture, print one line: triangles_drawn frame_ms (the mean of "
+                 "5 frames drawn after it) rss_mb (peak) first_picture_ms and load_ms "
+                 "(from the start of reading)."});
+    addPickOption(p);
+    addInputOptions(p);
+    addColourOptions(p);
+    addWellSourceOptions(p);
+}
+
+// Depth ticks, labels and each well's name over measured depths [top_m, bottom_m], for the
+// camera under `root`, added to it (they take no part in its framing).
+void annotate(const AssembledScene& scene, SoSeparator* root, int width, int height, double top_m,
+              double bottom_m, double exaggeration, bool tickMarks) {
+    const SoCamera* camera = scenegraph::findCamera(root);
+    if (!camera) return;
+    for (const auto& geometry : scene.geometries) {
+        scenegraph::AnnotationView view =
+            scenegraph::pictureAnnotationView(*camera, width, height, top_m, bottom_m);
+        view.radialExaggeration = exaggeration;
+        view.tickMarks = tickMarks;
+        root->addChild(scenegraph::makeWellAnnotations(*geometry, view));
+    }
+}
+
+}  // namespace
 
 int runRender(const QStringList& args) {
     return guardedVerb("render", [&]() -> int {
         VerbParser verb("render", "FILE... -o OUT.png",
-                        "Render wells to a PNG picture without a window.");
+                        "Render wells to a PNG picture without a window.\n"
+                        "The picture shows every well whole (or --depth TOP,BOTTOM of it) with\n"
+                        "depth ticks labelled in metres of measured depth, each well's name at\n"
+                        "its wellhead, the path above the log dashed, a north arrow and the\n"
+                        "radial exaggeration. Unless --exaggerate is given, radii are drawn\n"
+                        "large enough that the hole reads as a tube (at least 1.5 % of the\n"
+                        "picture's height across); looking down the hole, as logged.");
         QCommandLineParser& p = verb.parser();
-        p.addOption({{"o", "output"}, "Output picture (.png).", "OUT"});
-        p.addOption({"width", "Picture width in pixels (default 1024).", "W", "1024"});
-        p.addOption({"height", "Picture height in pixels (default 768).", "H", "768"});
-        p.addOption({"view",
-                     "iso, north, east, top, or hole (inside the first well, looking down it) "
-                     "(default iso).",
-                     "VIEW", "iso"});
-        p.addOption(
-            {"at",
-             "With --view hole: measured depth of the eye in metres (default: top of the log).",
-             "MD"});
-        p.addOption({"pixel-tolerance",
-                     QString("Level of detail: the shape error, in pixels, that may show "
-                             "(default %1).")
-                         .arg(double(scenegraph::kDefaultPixelTolerance)),
-                     "PX", QString::number(double(scenegraph::kDefaultPixelTolerance))});
-        p.addOption({"stats",
-                     "After the picture, print one line: triangles_drawn frame_ms (the mean of "
-                     "5 frames drawn after it) rss_mb (peak) first_picture_ms and load_ms "
-                     "(from the start of reading)."});
-        addPickOption(p);
-        addInputOptions(p);
-        addColourOptions(p);
-        addWellSourceOptions(p);
+        addRenderOptions(p);
         if (!verb.parse(args, 1)) return kExitOk;
         if (!verb.isSet("output")) throw UsageError("caliper3d render: -o OUT.png is required");
         bool okW = false, okH = false;
@@ -67,6 +173,8 @@ int runRender(const QStringList& args) {
         const auto pick = pickPixelFrom(p, width, height, "caliper3d render");
         LoadOptions options = inputOptionsFrom(p);
         options.colour = colourRequestFrom(p);
+        PicturePlan plan{parseDepthInterval(verb), verb.value("depth"),
+                         !downHole && !p.isSet("exaggerate"), height, options.radialExaggeration};
 
         double tolerance = 2.0;
         if (!io::parseNumber(verb.value("pixel-tolerance"), tolerance) ||
@@ -75,28 +183,44 @@ int runRender(const QStringList& args) {
 
         const auto start = std::chrono::steady_clock::now();
         scenegraph::initCoin();
-        AssembledScene scene = assembleScene(wellSourcesFrom(p, verb.positional()), options);
+        AssembledScene scene =
+            assembleScene(wellSourcesFrom(p, verb.positional()), options, std::ref(plan));
         if (scene.wells == 0) return kExitBadInput;
         const std::string out = verb.value("output");
         scenegraph::NodeRef<SoSeparator> root;
+        scenegraph::ViewOverlay overlay;
+        std::vector<std::string> caption{scenegraph::exaggerationCaption(plan.exaggeration)};
+        double annotatedTop = plan.top_m(), annotatedBottom = plan.bottom_m();
         if (downHole) {
             const auto& geometry = *scene.geometries.front();
             const double top = geometry.table().depth_m.front();
             const double bottom = geometry.table().depth_m.back();
             if (!verb.isSet("at")) at = top;
-            if (at < top || at > bottom) {
-                char range[96];
-                std::snprintf(range, sizeof range, "%.2f to %.2f m", top, bottom);
-                throw UsageError("caliper3d render: --at " + verb.value("at") +
-                                 " is outside the logged depths of " + geometry.table().source +
-                                 " (" + range + ")");
-            }
-            root = scenegraph::makeRef(
-                scenegraph::makeRenderRoot(scene.root.get(), downHolePose(geometry, at)));
+            if (at < top || at > bottom)
+                throw UsageError("caliper3d render: --at " + verb.value("at") + " is outside " +
+                                 (plan.depth ? "--depth " + plan.depthText
+                                             : "the logged depths of " + geometry.table().source) +
+                                 " (" + depthRange(top, bottom) + ")");
+            const scenegraph::CameraPose pose = downHolePose(geometry, at);
+            root = scenegraph::makeRef(scenegraph::makeRenderRoot(scene.root.get(), pose));
+            annotatedTop = at;
+            annotatedBottom = at + pose.fogVisibility_m;
+            char eye[64];
+            std::snprintf(eye, sizeof eye, "eye at MD %.2f m", at);
+            caption.insert(caption.begin(), eye);
         } else {
+            // The path above each log is part of the picture when it shows the whole well.
+            if (!plan.depth)
+                for (const auto& geometry : scene.geometries)
+                    if (SoSeparator* above = scenegraph::makeUnloggedPath(*geometry))
+                        scene.root->addChild(above);
             root = scenegraph::makeRef(
                 scenegraph::makeRenderRoot(scene.root.get(), *view, width, height));
         }
+        annotate(scene, root.get(), width, height, annotatedTop, annotatedBottom, plan.exaggeration,
+                 !downHole);
+        overlay.setCaption(caption);
+        root->addChild(overlay.root());
         refineForCamera(scene, root.get(), height, static_cast<float>(tolerance));
         addColourLegend(root.get(), scene);
         scenegraph::OffscreenRenderer renderer;

@@ -58,6 +58,11 @@ std::vector<std::shared_ptr<const reconstruction::WallColouring>> wallColourings
 }
 
 AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOptions& options) {
+    return assembleScene(wells, options, ScenePlan());
+}
+
+AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOptions& options,
+                             const ScenePlan& plan) {
     const auto start = std::chrono::steady_clock::now();
     AssembledScene out;
     out.root = scenegraph::NodeRef<SoSeparator>(new SoSeparator);
@@ -77,6 +82,8 @@ AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOpt
             std::fprintf(stderr, "caliper3d: %s\n", e.what());
         }
     }
+    double exaggeration = options.radialExaggeration;
+    if (plan && !loaded.empty()) plan(loaded, exaggeration);
     std::vector<std::shared_ptr<const reconstruction::WallColouring>> colourings;
     try {
         colourings = wallColourings(loaded, options.colour);
@@ -87,7 +94,7 @@ AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOpt
     }
     for (std::size_t w = 0; w < loaded.size(); ++w) {
         const auto geometry = std::make_shared<const reconstruction::WellGeometry>(
-            loaded[w]->restyled(options.radialExaggeration, colourings[w]));
+            loaded[w]->restyled(exaggeration, colourings[w]));
         auto scene = std::make_shared<scenegraph::WellScene>();
         scene->buildAll(*geometry);
         out.geometries.push_back(geometry);

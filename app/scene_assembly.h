@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -43,6 +44,17 @@ std::vector<std::shared_ptr<const reconstruction::WallColouring>> wallColourings
 // given, replaces its log's DEVI/HAZI for the path.
 AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOptions& options);
 AssembledScene assembleScene(const std::vector<std::string>& files, const LoadOptions& options);
+
+// What of the wells a scene draws, decided once every readable well is loaded and before it
+// is coloured or any node is built: it may replace a well's geometry with an interval of it
+// (reconstruction::intervalGeometry) and change the radial exaggeration the wells are drawn
+// with (options.radialExaggeration on entry): render_command.cpp. An exception it throws
+// leaves assembleScene.
+using ScenePlan =
+    std::function<void(std::vector<std::shared_ptr<const reconstruction::WellGeometry>>& wells,
+                       double& radialExaggeration)>;
+AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOptions& options,
+                             const ScenePlan& plan);
 
 // Sets every well's level switches for `view`, then builds and attaches, on the calling
 // (main) thread with a helper thread for the meshes, the finer levels each segment should

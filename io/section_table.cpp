@@ -66,6 +66,7 @@ void SectionTable::appendRows(const SectionTable& other, std::size_t first, std:
 SectionTable SectionTable::rows(std::size_t first, std::size_t last) const {
     SectionTable out;
     out.source = source;
+    out.wellName = wellName;
     out.armCount = armCount;
     out.holeAzimuth = holeAzimuth;
     for (const ExtraCurve& e : extraCurves)

@@ -28,8 +28,9 @@ struct ExtraCurve {
 // vector has one value per row. Optional curves are empty when the log lacks
 // them; a missing value inside a present curve is NaN.
 struct SectionTable {
-    std::string source;  // file the table came from (for messages)
-    int armCount = 0;    // radii per row
+    std::string source;    // file the table came from (for messages)
+    std::string wellName;  // the log's well name (LAS ~Well WELL), empty when it gives none
+    int armCount = 0;      // radii per row
 
     std::vector<double> depth_m;
     std::vector<double> radius_mm;   // row-major: armCount values per row

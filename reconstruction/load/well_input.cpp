@@ -25,6 +25,7 @@ io::SectionTable loadWellTable(const std::string& path, const io::ReadOptions& o
                                  std::to_string(loaded.info.curves.size()) +
                                  " curves; name them with --radii or --diameters");
     if (diagnostics) diagnostics->merge(loaded.info.diagnostics);
+    loaded.table.wellName = loaded.info.wellName;
     resolveHoleAzimuth(loaded.table, io::holeAzimuthPlan(loaded.info, surveyGiven), diagnostics);
     return std::move(loaded.table);
 }

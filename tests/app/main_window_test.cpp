@@ -1,5 +1,6 @@
 #include "app/main_window.h"
 
+#include <cstdlib>
 #include <fstream>
 #include <memory>
 
@@ -14,6 +15,7 @@
 #include "app/gui_session.h"
 #include "io/column_text_writer.h"
 #include "reconstruction/synthetic/synthetic_well.h"
+#include "scenegraph/label_style.h"
 #include "test_support.h"
 
 using namespace caliper3d;
@@ -77,6 +79,49 @@ TEST_F(MainWindowTest, OpensTheExampleAndRendersTheWell) {
         for (int x = 0; x < frame.width(); ++x) drawn += frame.pixel(x, y) != background ? 1 : 0;
     // A 60 m well framed whole is a thin line of a few hundred pixels.
     EXPECT_GT(drawn, 200u);
+}
+
+namespace {
+// Pixels of `frame` within 8 (of 255) of `colour` (0-1) in each channel.
+std::size_t pixelsOfColour(const QImage& frame, const float colour[3]) {
+    std::size_t count = 0;
+    for (int y = 0; y < frame.height(); ++y)
+        for (int x = 0; x < frame.width(); ++x) {
+            const QRgb p = frame.pixel(x, y);
+            const int rgb[3] = {qRed(p), qGreen(p), qBlue(p)};
+            bool close = true;
+            for (int c = 0; c < 3; ++c)
+                close = close && std::abs(rgb[c] - int(colour[c] * 255.0f + 0.5f)) <= 8;
+            count += close ? 1 : 0;
+        }
+    return count;
+}
+}  // namespace
+
+TEST_F(MainWindowTest, ShowsDepthLabelsTheWellsNameAndTheNorthArrow) {
+    const auto log = test::scratch("window_labels.txt");
+    io::writeColumnTextFile(
+        log.string(),
+        reconstruction::makeSyntheticWell(reconstruction::syntheticProfile("example", 60.0, 0.1)));
+    app::MainWindow window;
+    window.resize(640, 480);
+    window.show();
+    app::LoadOptions options;
+    options.radialExaggeration = 10.0;
+    window.openWell(QString::fromStdString(log.string()), options);
+    ASSERT_TRUE(waitFor(window, &app::MainWindow::allWellsLoaded, 60000))
+        << "the well did not load";
+    auto* gl = qobject_cast<QGLWidget*>(window.viewer()->getGLWidget());
+    ASSERT_NE(gl, nullptr);
+    window.viewer()->render();
+    const QImage frame = gl->grabFrameBuffer();
+    frame.save(QString::fromStdString(test::scratch("window_labels.png").string()));
+    // Labels of the ticks every 5 m and the caption; the file's name at the wellhead (a
+    // column-text log has no WELL field); the arrow's north in red.
+    EXPECT_GT(pixelsOfColour(frame, scenegraph::kLabelColour), 300u);
+    EXPECT_GT(pixelsOfColour(frame, scenegraph::kNameColour), 40u);
+    const float north[3] = {0.95f, 0.30f, 0.25f};
+    EXPECT_GT(pixelsOfColour(frame, north), 20u);
 }
 
 TEST_F(MainWindowTest, BadFileReportsFailureWithFileAndLine) {

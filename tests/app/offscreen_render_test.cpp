@@ -1,3 +1,5 @@
+#include <algorithm>
+#include <cstdlib>
 #include <memory>
 
 #include <gtest/gtest.h>
@@ -6,7 +8,12 @@
 #include "app/png_output.h"
 #include "reconstruction/synthetic/synthetic_well.h"
 #include "reconstruction/well_geometry.h"
+#include "scenegraph/label_style.h"
 #include "scenegraph/main_thread.h"
+#include "scenegraph/node_ref.h"
+#include "scenegraph/render_stats.h"
+#include "scenegraph/view_overlay.h"
+#include "scenegraph/well_annotations.h"
 #include "scenegraph/well_scene.h"
 #include "test_support.h"
 
@@ -41,4 +48,68 @@ TEST(OffscreenRenderTest, WellRendersToAPngWithoutAWindow) {
         EXPECT_EQ(png.pixel(x, 0), corner) << "top edge, x " << x;
         EXPECT_EQ(png.pixel(x, png.height() - 1), corner) << "bottom edge, x " << x;
     }
+}
+
+namespace {
+// Pixels of `image` within `tolerance` (0-255) of `colour` (0-1), in the rectangle
+// [x0, x1) x [y0, y1) (rows from the top).
+std::size_t pixelsOfColour(const scenegraph::RenderedImage& image, const float colour[3],
+                           int x0 = 0, int y0 = 0, int x1 = 1 << 20, int y1 = 1 << 20) {
+    std::size_t count = 0;
+    for (int y = std::max(y0, 0); y < std::min(y1, image.height); ++y)
+        for (int x = std::max(x0, 0); x < std::min(x1, image.width); ++x) {
+            const std::uint8_t* p =
+                &image.rgba[(static_cast<std::size_t>(y) * image.width + x) * 4];
+            bool close = true;
+            for (int c = 0; c < 3; ++c)
+                close = close && std::abs(int(p[c]) - int(colour[c] * 255.0f + 0.5f)) <= 8;
+            count += close ? 1 : 0;
+        }
+    return count;
+}
+}  // namespace
+
+TEST(OffscreenRenderTest, LabelsNameAndNorthArrowDrawIntoThePicture) {
+    scenegraph::initCoin();
+    auto table = std::make_shared<io::SectionTable>(
+        reconstruction::makeSyntheticWell(reconstruction::syntheticProfile("circle", 100.0, 0.1)));
+    table->wellName = "LABEL-1";
+    reconstruction::GeometryOptions options;
+    options.radialExaggeration = 20.0;
+    const reconstruction::WellGeometry geometry(table, options);
+    scenegraph::WellScene scene;
+    scene.buildAll(geometry);
+    auto root = scenegraph::makeRef(
+        scenegraph::makeRenderRoot(scene.root(), scenegraph::ViewDirection::Iso, 640, 480));
+    scenegraph::OffscreenRenderer renderer;
+    scenegraph::RenderedImage bare, annotated;
+    try {
+        bare = renderer.render(root.get(), 640, 480, scenegraph::kBackgroundColour);
+        const SoCamera* camera = scenegraph::findCamera(root.get());
+        ASSERT_NE(camera, nullptr);
+        scenegraph::AnnotationView view =
+            scenegraph::pictureAnnotationView(*camera, 640, 480, 0.0, 1.0e300);
+        view.radialExaggeration = 20.0;
+        root->addChild(scenegraph::makeWellAnnotations(geometry, view));
+        scenegraph::ViewOverlay overlay;
+        overlay.setCaption({"radii x 20"});
+        root->addChild(overlay.root());
+        annotated = renderer.render(root.get(), 640, 480, scenegraph::kBackgroundColour);
+        root->removeChild(overlay.root());
+    } catch (const std::runtime_error& e) {
+        FAIL() << e.what();
+    }
+    // The depth labels (10 m ... 100 m) and the caption, in the label colour; the well's name
+    // in its own; none of either without the annotations.
+    EXPECT_EQ(pixelsOfColour(bare, scenegraph::kLabelColour), 0u);
+    EXPECT_GT(pixelsOfColour(annotated, scenegraph::kLabelColour), 400u);
+    EXPECT_EQ(pixelsOfColour(bare, scenegraph::kNameColour), 0u);
+    EXPECT_GT(pixelsOfColour(annotated, scenegraph::kNameColour), 40u);
+    // Labels lie right of the well, the name at its top (the top fifth of the picture).
+    EXPECT_GT(pixelsOfColour(annotated, scenegraph::kLabelColour, 330, 0, 640, 480), 300u);
+    EXPECT_GT(pixelsOfColour(annotated, scenegraph::kNameColour, 0, 0, 640, 96), 40u);
+    // The north arrow's red in the bottom-left corner.
+    const float north[3] = {0.95f, 0.30f, 0.25f};
+    EXPECT_GT(pixelsOfColour(annotated, north, 0, 480 - 120, 120, 480), 20u);
+    EXPECT_EQ(pixelsOfColour(bare, north, 0, 480 - 120, 120, 480), 0u);
 }

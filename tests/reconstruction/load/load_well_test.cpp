@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "io/column_text_writer.h"
+#include "io/las_writer.h"
 #include "io/parse_error.h"
 #include "reconstruction/synthetic/synthetic_well.h"
 #include "test_support.h"
@@ -86,6 +87,18 @@ TEST(LoadWellTest, WithoutSurveyOrWellheadTheWellStandsAtTheOrigin) {
         EXPECT_NEAR(p.y, 0.0, 1e-9);
         EXPECT_NEAR(p.z, well.table->depth_m[row], 1e-9);
     }
+}
+
+TEST(LoadWellTest, TheTableCarriesTheLogsWellName) {
+    const auto las = test::scratch("load_well_named.las");
+    io::LasWriteOptions named;
+    named.wellName = "SUNCOR LEWIS 7-22-92-8";
+    io::writeLasFile(las.string(), makeSyntheticWell(syntheticProfile("circle", 10.0, 0.5)), named);
+    EXPECT_EQ(loadWell({las.string(), {}, {}}, LoadOptions{}).table->wellName,
+              "SUNCOR LEWIS 7-22-92-8");
+    // Column text has no header to name it.
+    EXPECT_EQ(loadWell({writeLog("load_well_unnamed.txt"), {}, {}}, LoadOptions{}).table->wellName,
+              "");
 }
 
 TEST(LoadWellTest, DiagnosticsHoldTheSurveysWarningThenTheReaders) {

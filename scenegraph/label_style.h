@@ -1,0 +1,33 @@
+#pragma once
+
+#include <cstddef>
+
+class SoFont;
+
+namespace caliper3d::scenegraph {
+
+// How text drawn into the scene looks: labels of depth ticks and wells, and the overlay's
+// caption. SoText2 draws at a fixed size in pixels, on screen and in pictures alike.
+constexpr float kLabelSize_px = 14.0f;
+constexpr float kNameSize_px = 16.0f;
+// Light text on the dark background (camera_setup.h, kBackgroundColour).
+constexpr float kLabelColour[3] = {0.92f, 0.92f, 0.86f};
+constexpr float kNameColour[3] = {1.0f, 0.82f, 0.35f};
+constexpr float kTickColour[3] = {0.78f, 0.80f, 0.84f};
+
+// A bold sans-serif label font. Coin draws SoFont's default font from a thin built-in
+// bitmap; a named font goes through FreeType and fontconfig, which Coin loads at run time
+// (docs/architecture.md, "Annotations"), and falls back to the built-in one without them.
+SoFont* makeLabelFont(float size_px = kLabelSize_px);
+
+// Coin opens FreeType and fontconfig by the development symlinks' names (libfreetype.so,
+// libfontconfig.so), which a machine without their -dev packages lacks: it is pointed at
+// the run-time libraries instead, unless the user named others
+// (COIN_FREETYPE2_LIBNAME, COIN_FONTCONFIG_LIBNAME). Coin reads these when it draws its first
+// text; makeLabelFont calls this. Main thread only.
+void useRunTimeFontLibraries();
+
+// Pixels a label of `characters` characters takes across, at most (for keeping labels apart).
+float labelWidth_px(std::size_t characters, float size_px = kLabelSize_px);
+
+}  // namespace caliper3d::scenegraph

@@ -1,0 +1,359 @@
+#include "scenegraph/well_annotations.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include <Inventor/SbViewVolume.h>
+#include <Inventor/SbViewportRegion.h>
+#include <Inventor/nodes/SoAnnotation.h>
+#include <Inventor/nodes/SoBaseColor.h>
+#include <Inventor/nodes/SoCamera.h>
+#include <Inventor/nodes/SoCoordinate3.h>
+#include <Inventor/nodes/SoDrawStyle.h>
+#include <Inventor/nodes/SoFont.h>
+#include <Inventor/nodes/SoLightModel.h>
+#include <Inventor/nodes/SoLineSet.h>
+#include <Inventor/nodes/SoMarkerSet.h>
+#include <Inventor/nodes/SoPerspectiveCamera.h>
+#include <Inventor/nodes/SoSeparator.h>
+#include <Inventor/nodes/SoText2.h>
+#include <Inventor/nodes/SoTranslation.h>
+
+#include <glm/geometric.hpp>
+
+#include "reconstruction/section/section_frame.h"
+#include "reconstruction/well_path.h"
+#include "scenegraph/camera_setup.h"
+#include "scenegraph/drawn_only.h"
+#include "scenegraph/label_style.h"
+#include "scenegraph/main_thread.h"
+#include "scenegraph/picture_scale.h"
+
+namespace caliper3d::scenegraph {
+
+namespace {
+
+// A tick mark stands this much of the annotated length clear of the drawn wall.
+constexpr double kTickLength = 0.025;
+// DejaVu Sans's digits and capitals, in em.
+constexpr float kCapHeight = 0.73f;
+
+struct Span {
+    double top = 0.0;
+    double bottom = 0.0;
+    double spacing = 1.0;
+};
+
+Span annotatedSpan(const reconstruction::WellGeometry& geometry, const AnnotationView& view) {
+    Span s;
+    const double last = geometry.table().depth_m.back();
+    s.top = std::clamp(view.top_m, 0.0, last);
+    s.bottom = std::clamp(view.bottom_m, s.top, last);
+    s.spacing = view.tickSpacing_m > 0.0 ? view.tickSpacing_m : tickSpacing_m(s.bottom - s.top);
+    return s;
+}
+
+glm::vec3 toScene(const reconstruction::Ned& v) {
+    return glm::vec3(reconstruction::toScene(v));
+}
+
+// Across the path and the view, on the picture's right (or its top, for a path that runs
+// left-right); the picture's right where the path runs along the view.
+glm::vec3 sideOf(const reconstruction::PathSample& at, const AnnotationView& view) {
+    const glm::vec3 tangent = toScene(reconstruction::holeTangent(at.inc_deg, at.azi_deg));
+    glm::vec3 side = glm::cross(tangent, view.look);
+    if (glm::length(side) < 0.05f) return view.right;
+    side = glm::normalize(side);
+    const float along = glm::dot(side, view.right);
+    const glm::vec3 up = glm::cross(view.right, view.look);
+    if (along < 0.0f || (std::abs(along) < 1e-3f && glm::dot(side, up) < 0.0f)) side = -side;
+    return side;
+}
+
+// Pixel boxes of the labels placed so far.
+class LabelSpace {
+public:
+    explicit LabelSpace(const AnnotationView& view) : m_view(view) {}
+    // Places a label anchored (left end of its baseline) at `at`; false when it would
+    // overlap one placed before.
+    bool place(const glm::vec3& at, std::size_t characters, float size_px) {
+        if (!m_view.toPixels) return true;
+        const std::optional<glm::vec2> p = m_view.toPixels(at);
+        if (!p) return false;
+        // A label's text is centred on its anchor's height (labelNode), or in a window
+        // without a pixel size stands on it: the box covers both.
+        const Box box{p->x, p->y - size_px, p->x + labelWidth_px(characters, size_px),
+                      p->y + 0.5f * size_px};
+        for (const Box& other : m_boxes)
+            if (box.x0 < other.x1 + kGap_px && other.x0 < box.x1 + kGap_px &&
+                box.y0 < other.y1 + kGap_px && other.y0 < box.y1 + kGap_px)
+                return false;
+        m_boxes.push_back(box);
+        return true;
+    }
+
+private:
+    static constexpr float kGap_px = 3.0f;
+    struct Box {
+        float x0, y0, x1, y1;
+    };
+    const AnnotationView& m_view;
+    std::vector<Box> m_boxes;
+};
+
+// Where the name goes: the top of what is annotated, off the path like a tick's label.
+struct NamePlace {
+    glm::vec3 position{0.0f};
+    glm::vec3 anchor{0.0f};
+    bool wellhead = false;
+};
+
+NamePlace namePlace(const reconstruction::WellGeometry& geometry, const AnnotationView& view,
+                    const Span& span, double standOff) {
+    const reconstruction::PathSample top = reconstruction::pathAt(geometry, span.top);
+    NamePlace place;
+    place.position = toScene(top.position);
+    place.anchor = place.position + sideOf(top, view) * static_cast<float>(standOff);
+    place.wellhead = span.top <= 0.0;
+    return place;
+}
+
+double standOffOf(const reconstruction::WellGeometry& geometry, const AnnotationView& view,
+                  const Span& span) {
+    if (!view.tickMarks) return 0.0;
+    double radius = typicalRadius_m(geometry, span.top, span.bottom);
+    if (!std::isfinite(radius)) radius = 0.0;
+    return radius * view.radialExaggeration + kTickLength * (span.bottom - span.top);
+}
+
+// A label whose text starts at `at`; when the view says how large a pixel is there, centred
+// on the height of `at` and outlined in the background colour.
+SoSeparator* labelNode(const glm::vec3& at, const std::string& text, const AnnotationView& view,
+                       const float colour[3], float size_px) {
+    auto* group = new SoSeparator;
+    const glm::vec3 up = glm::cross(view.right, view.look);
+    const float pixel = view.pixelSize ? view.pixelSize(at) : 0.0f;
+    // SoText2 stands on its point: down by half the height of digits and capitals.
+    const glm::vec3 anchor = at - up * (pixel * kCapHeight * size_px / 2.0f);
+    auto* move = new SoTranslation;
+    move->translation.setValue(anchor.x, anchor.y, anchor.z);
+    group->addChild(move);
+    auto* label = new SoText2;
+    // A space keeps the text clear of the tick mark's end.
+    label->string.setValue((" " + text).c_str());
+    if (view.pixelSize) {
+        auto* dark = new SoBaseColor;
+        dark->rgb.setValue(kBackgroundColour);
+        group->addChild(dark);
+        for (const glm::vec2 d :
+             {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(-1, 1), glm::vec2(1, 1)}) {
+            auto* halo = new SoSeparator;
+            auto* shift = new SoTranslation;
+            const glm::vec3 offset = (view.right * d.x + up * d.y) * pixel;
+            shift->translation.setValue(offset.x, offset.y, offset.z);
+            auto* copy = new SoText2;
+            copy->string = label->string;
+            halo->addChild(shift);
+            halo->addChild(copy);
+            group->addChild(halo);
+        }
+    }
+    auto* rgb = new SoBaseColor;
+    rgb->rgb.setValue(colour);
+    group->addChild(rgb);
+    group->addChild(label);
+    return group;
+}
+
+}  // namespace
+
+AnnotationView pictureAnnotationView(const SoCamera& camera, int width, int height, double top_m,
+                                     double bottom_m) {
+    AnnotationView view;
+    view.top_m = top_m;
+    view.bottom_m = bottom_m;
+    const SbRotation orientation = camera.orientation.getValue();
+    SbVec3f look, right;
+    orientation.multVec(SbVec3f(0.0f, 0.0f, -1.0f), look);
+    orientation.multVec(SbVec3f(1.0f, 0.0f, 0.0f), right);
+    view.look = glm::vec3(look[0], look[1], look[2]);
+    view.right = glm::vec3(right[0], right[1], right[2]);
+    const float aspect = static_cast<float>(width) / static_cast<float>(height);
+    SbViewVolume volume = camera.getViewVolume(aspect);
+    // SoCamera's ADJUST_CAMERA mapping: a tall picture widens the volume to keep its width.
+    if (aspect < 1.0f) volume.scale(1.0f / aspect);
+    const SbVec3f eye = camera.position.getValue();
+    const float nearest = camera.nearDistance.getValue();
+    const glm::vec3 eyeAt(eye[0], eye[1], eye[2]), lookAlong = view.look;
+    const float heightAngle =
+        camera.isOfType(SoPerspectiveCamera::getClassTypeId())
+            ? static_cast<const SoPerspectiveCamera&>(camera).heightAngle.getValue()
+            : 0.0f;
+    if (heightAngle > 0.0f)
+        view.pixelSize = [eyeAt, lookAlong, heightAngle, aspect, height](const glm::vec3& p) {
+            // A tall picture's volume is widened (above): its height spans more.
+            const float spanned = 2.0f * std::max(glm::dot(p - eyeAt, lookAlong), 0.0f) *
+                                  std::tan(heightAngle / 2.0f) / std::min(aspect, 1.0f);
+            return spanned / static_cast<float>(height);
+        };
+    view.toPixels = [volume, eyeAt, lookAlong, nearest, width,
+                     height](const glm::vec3& p) -> std::optional<glm::vec2> {
+        if (glm::dot(p - eyeAt, lookAlong) <= nearest) return std::nullopt;
+        SbVec3f screen;
+        volume.projectToScreen(SbVec3f(p.x, p.y, p.z), screen);
+        return glm::vec2(screen[0] * static_cast<float>(width),
+                         (1.0f - screen[1]) * static_cast<float>(height));
+    };
+    return view;
+}
+
+std::string depthLabel(double md_m, double spacing_m) {
+    int decimals = 0;
+    while (decimals < 3 && std::abs(spacing_m * std::pow(10.0, decimals) -
+                                    std::round(spacing_m * std::pow(10.0, decimals))) > 1e-6)
+        ++decimals;
+    char text[48];
+    std::snprintf(text, sizeof text, "%.*f m", decimals, md_m);
+    return text;
+}
+
+std::string wellLabel(const io::SectionTable& table) {
+    const std::string& name = table.wellName;
+    const auto first = name.find_first_not_of(" \t");
+    if (first != std::string::npos)
+        return name.substr(first, name.find_last_not_of(" \t") - first + 1);
+    return std::filesystem::path(table.source).filename().string();
+}
+
+std::vector<DepthTick> depthTicks(const reconstruction::WellGeometry& geometry,
+                                  const AnnotationView& view) {
+    std::vector<DepthTick> ticks;
+    if (geometry.table().rowCount() == 0) return ticks;
+    const Span span = annotatedSpan(geometry, view);
+    const double standOff = standOffOf(geometry, view, span);
+    LabelSpace space(view);
+    if (view.tickMarks) {
+        const NamePlace name = namePlace(geometry, view, span, standOff);
+        space.place(name.anchor, wellLabel(geometry.table()).size() + 1, kNameSize_px);
+    }
+    const auto firstTick = static_cast<long long>(std::ceil(span.top / span.spacing - 1e-9));
+    const auto lastTick = static_cast<long long>(std::floor(span.bottom / span.spacing + 1e-9));
+    for (long long k = std::max(firstTick, 1LL); k <= lastTick; ++k) {
+        DepthTick tick;
+        tick.md_m = static_cast<double>(k) * span.spacing;
+        const reconstruction::PathSample at = reconstruction::pathAt(geometry, tick.md_m);
+        tick.position = toScene(at.position);
+        tick.end = tick.position + sideOf(at, view) * static_cast<float>(standOff);
+        const std::string label = depthLabel(tick.md_m, span.spacing);
+        if (space.place(tick.end, label.size() + 1, kLabelSize_px)) tick.label = label;
+        ticks.push_back(std::move(tick));
+    }
+    return ticks;
+}
+
+SoSeparator* makeWellAnnotations(const reconstruction::WellGeometry& geometry,
+                                 const AnnotationView& view) {
+    assertMainThread("makeWellAnnotations");
+    auto* content = new SoSeparator;
+    auto* unlit = new SoLightModel;
+    unlit->model = SoLightModel::BASE_COLOR;
+    content->addChild(unlit);
+    if (geometry.table().rowCount() == 0) return makeDrawnOnly(content);
+    const Span span = annotatedSpan(geometry, view);
+    const std::vector<DepthTick> ticks = depthTicks(geometry, view);
+
+    if (view.tickMarks && !ticks.empty()) {
+        auto* marks = new SoSeparator;
+        marks->setName("tick_marks");
+        auto* style = new SoDrawStyle;
+        style->lineWidth = 1.5f;
+        auto* colour = new SoBaseColor;
+        colour->rgb.setValue(kTickColour);
+        auto* points = new SoCoordinate3;
+        auto* lines = new SoLineSet;
+        lines->numVertices.setNum(0);  // its default, -1, joins every point into one line
+        int n = 0;
+        for (const DepthTick& tick : ticks) {
+            points->point.set1Value(n++, tick.position.x, tick.position.y, tick.position.z);
+            points->point.set1Value(n++, tick.end.x, tick.end.y, tick.end.z);
+            lines->numVertices.set1Value(lines->numVertices.getNum(), 2);
+        }
+        marks->addChild(style);
+        marks->addChild(colour);
+        marks->addChild(points);
+        marks->addChild(lines);
+        content->addChild(marks);
+    }
+
+    // Labels over everything, so a wall never hides them.
+    auto* labels = new SoAnnotation;
+    labels->setName("labels");
+    labels->addChild(makeLabelFont(kLabelSize_px));
+    for (const DepthTick& tick : ticks)
+        if (!tick.label.empty())
+            labels->addChild(labelNode(tick.end, tick.label, view, kLabelColour, kLabelSize_px));
+    if (view.tickMarks) {
+        const NamePlace name = namePlace(geometry, view, span, standOffOf(geometry, view, span));
+        auto* nameColour = new SoBaseColor;
+        nameColour->rgb.setValue(kNameColour);
+        labels->addChild(nameColour);
+        if (name.wellhead) {
+            auto* at = new SoCoordinate3;
+            at->point.setValue(name.position.x, name.position.y, name.position.z);
+            auto* marker = new SoMarkerSet;
+            marker->markerIndex = SoMarkerSet::CIRCLE_FILLED_9_9;
+            labels->addChild(at);
+            labels->addChild(marker);
+        }
+        labels->addChild(makeLabelFont(kNameSize_px));
+        SoSeparator* nameLabel =
+            labelNode(name.anchor, wellLabel(geometry.table()), view, kNameColour, kNameSize_px);
+        nameLabel->setName("well_name");
+        labels->addChild(nameLabel);
+    }
+    content->addChild(labels);
+    SoSeparator* root = makeDrawnOnly(content);
+    root->setName("annotations");
+    return root;
+}
+
+SoSeparator* makeWholeWellAnnotations(const reconstruction::WellGeometry& geometry,
+                                      double radialExaggeration) {
+    auto* group = new SoSeparator;
+    group->setName("well_annotations");
+    if (SoSeparator* above = makeUnloggedPath(geometry)) group->addChild(above);
+    AnnotationView view;
+    view.radialExaggeration = radialExaggeration;
+    group->addChild(makeWellAnnotations(geometry, view));
+    return group;
+}
+
+SoSeparator* makeUnloggedPath(const reconstruction::WellGeometry& geometry, double spacing_m) {
+    assertMainThread("makeUnloggedPath");
+    const std::vector<glm::vec3> line = reconstruction::unloggedPathLine(geometry, spacing_m);
+    if (line.size() < 2) return nullptr;
+    auto* root = new SoSeparator;
+    root->setName("unlogged_path");
+    auto* style = new SoDrawStyle;
+    style->lineWidth = 1.5f;
+    style->linePattern = 0xF0F0;  // dashed: drawn from the tie-in, not from the log
+    auto* unlit = new SoLightModel;
+    unlit->model = SoLightModel::BASE_COLOR;
+    auto* colour = new SoBaseColor;
+    colour->rgb.setValue(0.2f, 0.55f, 0.9f);  // the logged path's (well_scene.cpp)
+    auto* points = new SoCoordinate3;
+    for (std::size_t i = 0; i < line.size(); ++i)
+        points->point.set1Value(static_cast<int>(i), line[i].x, line[i].y, line[i].z);
+    auto* strip = new SoLineSet;
+    strip->numVertices.setValue(static_cast<int>(line.size()));
+    root->addChild(style);
+    root->addChild(unlit);
+    root->addChild(colour);
+    root->addChild(points);
+    root->addChild(strip);
+    return root;
+}
+
+}  // namespace caliper3d::scenegraph
