@@ -157,7 +157,7 @@ std::shared_ptr<const reconstruction::WellGeometry> MainWindow::geometry(std::si
 }
 
 const reconstruction::ColourLegend* MainWindow::legend() const {
-    return m_legendSource ? &m_legendSource->legend() : nullptr;
+    return m_legend ? &*m_legend : nullptr;
 }
 
 bool MainWindow::restyle(double radialExaggeration, const reconstruction::ColourRequest& colour) {
@@ -209,7 +209,8 @@ bool MainWindow::restyle(double radialExaggeration, const reconstruction::Colour
     m_overlay->setCaption({scenegraph::exaggerationCaption(radialExaggeration)});
     m_lastOptions.radialExaggeration = radialExaggeration;
     m_lastOptions.colour = colour;
-    m_legendSource = colourings.empty() ? nullptr : colourings.front();
+    m_legend.reset();
+    if (!colourings.empty()) m_legend = colourings.front()->legend();
     m_viewer->setLegend(legend());
     fillColourBox();
     QApplication::restoreOverrideCursor();
@@ -240,10 +241,10 @@ void MainWindow::applyStyleAfterLoad() {
     }
     // The streamed segments are coloured as asked already: only the legend is new.
     try {
-        m_legendSource = wallColourings({geometries.front()}, colour).front();
+        m_legend = wallColourings({geometries.front()}, colour).front()->legend();
     } catch (const std::exception& e) {
         m_status->setText(QString::fromStdString(e.what()));
-        m_legendSource = nullptr;
+        m_legend.reset();
     }
     m_viewer->setLegend(legend());
     fillColourBox();

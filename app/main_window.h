@@ -1,6 +1,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -119,7 +120,8 @@ private:
     void annotate(Well& well);
     std::vector<std::unique_ptr<Well>> m_wells;
     bool m_viewedAll = false;
-    std::shared_ptr<const reconstruction::WallColouring> m_legendSource;  // what the legend shows
+    // What the legend shows (a copy: the colouring's per-row values stay with the geometry).
+    std::optional<reconstruction::ColourLegend> m_legend;
 };
 
 }  // namespace caliper3d::app
