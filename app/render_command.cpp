@@ -139,6 +139,17 @@ void annotate(const AssembledScene& scene, SoSeparator* root, int width, int hei
     }
 }
 
+// The --stats line: what the picture drew and what it cost, after 5 more frames.
+void printStats(scenegraph::OffscreenRenderer& renderer, SoNode* root, int width, int height,
+                double firstPictureMs, double loadMs) {
+    const double frameMs =
+        renderer.timeFrames(root, width, height, scenegraph::kBackgroundColour, 5);
+    std::printf(
+        "triangles_drawn=%zu frame_ms=%.1f rss_mb=%.0f first_picture_ms=%.0f load_ms=%.0f\n",
+        scenegraph::trianglesDrawn(root, width, height), frameMs, scenegraph::peakRss_mb(),
+        firstPictureMs, loadMs);
+}
+
 }  // namespace
 
 int runRender(const QStringList& args) {
@@ -228,16 +239,10 @@ int runRender(const QStringList& args) {
             renderer.render(root.get(), width, height, scenegraph::kBackgroundColour);
         const auto firstPicture = std::chrono::steady_clock::now();
         savePng(image, out);
-        if (verb.isSet("stats")) {
-            const double frameMs =
-                renderer.timeFrames(root.get(), width, height, scenegraph::kBackgroundColour, 5);
-            using Ms = std::chrono::duration<double, std::milli>;
-            std::printf(
-                "triangles_drawn=%zu frame_ms=%.1f rss_mb=%.0f first_picture_ms=%.0f "
-                "load_ms=%.0f\n",
-                scenegraph::trianglesDrawn(root.get(), width, height), frameMs,
-                scenegraph::peakRss_mb(), Ms(firstPicture - start).count(), scene.load_ms);
-        }
+        if (verb.isSet("stats"))
+            printStats(renderer, root.get(), width, height,
+                       std::chrono::duration<double, std::milli>(firstPicture - start).count(),
+                       scene.load_ms);
         std::printf("wrote %s (%dx%d)\n", out.c_str(), width, height);
         if (pick) std::fputs(describePick(scene, root.get(), width, height, *pick).c_str(), stdout);
         return scene.failures > 0 ? kExitBadInput : kExitOk;
