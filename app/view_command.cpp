@@ -16,6 +16,7 @@
 #include "scenegraph/iv_export.h"
 #include "scenegraph/main_thread.h"
 #include "scenegraph/node_ref.h"
+#include "scenegraph/well_scene.h"
 
 namespace caliper3d::app {
 
@@ -92,14 +93,16 @@ int runDefault(int argc, char** argv) {
         refineForCamera(scene, hole.get(), 768);  // full detail near the eye
         addColourLegend(hole.get(), scene);
         detail::renderRootToPng(hole.get(), "out/example.png", 1024, 768);
-        // And the whole well, radii drawn 50 times larger so it is more than a line.
-        LoadOptions overview = exampleOptions();
-        overview.radialExaggeration = 50.0;
-        AssembledScene whole = assembleScene({example}, overview);
-        if (whole.wells == 0) return kExitBadInput;
+        // And the whole well, sections drawn 50 times larger so it is more than a line: the
+        // same geometry restyled, not the file read again.
+        const reconstruction::WellGeometry& loaded = *scene.geometries.front();
+        const reconstruction::WellGeometry whole =
+            loaded.restyled(50.0, loaded.options().colouring);
+        scenegraph::WellScene overview;
+        overview.buildAll(whole);
         auto overviewRoot = scenegraph::makeRef(
-            scenegraph::makeRenderRoot(whole.root.get(), scenegraph::ViewDirection::Iso, 600, 900));
-        addColourLegend(overviewRoot.get(), whole);
+            scenegraph::makeRenderRoot(overview.root(), scenegraph::ViewDirection::Iso, 600, 900));
+        addColourLegend(overviewRoot.get(), scene);  // the same colouring
         detail::renderRootToPng(overviewRoot.get(), "out/example-overview.png", 600, 900);
         const auto here = std::filesystem::current_path();
         std::printf(
