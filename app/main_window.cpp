@@ -29,6 +29,8 @@
 #include <Inventor/nodes/SoPerspectiveCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
 
+#include "app/desktop/analysis_job.h"
+#include "app/desktop/desk_model.h"
 #include "app/scene_assembly.h"
 #include "app/well_viewer.h"
 #include "reconstruction/load/well_load_pipeline.h"
@@ -45,6 +47,7 @@ namespace caliper3d::app {
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setWindowTitle("caliper3d");
     resize(1200, 800);
+    m_model = new DeskModel(this);
     auto* centre = new QWidget(this);
     setCentralWidget(centre);
     m_viewer = new WellViewer(centre);
@@ -80,6 +83,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(m_warningsButton, &QPushButton::clicked, this, &MainWindow::showWarnings);
     statusBar()->addPermanentWidget(m_warningsButton);
     buildMenus();
+    buildDocks();
 }
 
 MainWindow::~MainWindow() {
@@ -178,7 +182,8 @@ bool MainWindow::restyle(double radialExaggeration, const reconstruction::Colour
         if (!well->geometry) continue;
         if (needsValues && !well->values)
             well->values = std::make_shared<const reconstruction::SectionValues>(
-                reconstruction::sectionValues(*well->geometry));
+                well->analysis ? reconstruction::sectionValues(*well->analysis)
+                               : reconstruction::sectionValues(*well->geometry));
         geometries.push_back(well->geometry);
         values.push_back(well->values.get());
     }
@@ -205,6 +210,7 @@ bool MainWindow::restyle(double radialExaggeration, const reconstruction::Colour
         well->options.colour = colour;
         annotate(*well);  // the tick marks stand off the wall as now drawn
         m_detail->addWell(*well->scene, well->geometry);
+        publish(*well);
     }
     m_overlay->setCaption({scenegraph::exaggerationCaption(radialExaggeration)});
     m_lastOptions.radialExaggeration = radialExaggeration;
@@ -303,6 +309,7 @@ void MainWindow::openWell(const QString& path, const LoadOptions& options) {
 void MainWindow::openWell(const WellSource& source, const LoadOptions& options) {
     m_detail->removeAll();
     m_wells.clear();
+    m_model->clearWells();
     m_sceneRoot->removeAllChildren();
     updateWarningsButton();
     m_viewedAll = false;
@@ -323,6 +330,13 @@ void MainWindow::addWell(const WellSource& source, const LoadOptions& options) {
     m_sceneRoot->addChild(w.scene->root());
     m_wells.push_back(std::move(well));
     m_lastOptions = options;
+    {
+        DeskWell record;
+        record.name = QFileInfo(QString::fromStdString(source.path)).fileName();
+        record.path = QString::fromStdString(source.path);
+        record.options = options;
+        w.modelIndex = m_model->addWell(std::move(record));
+    }
     m_overlay->setCaption({scenegraph::exaggerationCaption(options.radialExaggeration)});
 
     const std::string file = source.path;
@@ -337,10 +351,12 @@ void MainWindow::addWell(const WellSource& source, const LoadOptions& options) {
         w.geometry = g;
         annotate(w);
         m_detail->addWell(*w.scene, std::move(g));
+        publish(w);
     };
     callbacks.warnings = [this, &w](const io::Diagnostics& diagnostics) {
         w.diagnostics = diagnostics;
         updateWarningsButton();
+        publish(w);
     };
     callbacks.progress = [this, name](std::size_t attached) {
         if (!m_viewedAll) {
@@ -359,6 +375,7 @@ void MainWindow::addWell(const WellSource& source, const LoadOptions& options) {
                 .arg(w.diagnostics.warningCount)
                 .arg(w.diagnostics.warningCount == 1 ? "" : "s"));
         w.done = true;
+        analyse(w);
         // Signalled from the event loop, not from inside the feeder's tick, so a
         // slot may open other wells (destroying this feeder) safely.
         QMetaObject::invokeMethod(
@@ -372,6 +389,8 @@ void MainWindow::addWell(const WellSource& source, const LoadOptions& options) {
     callbacks.failed = [this, name, &w](const std::string& message) {
         m_status->setText(name + ": failed: " + QString::fromStdString(message));
         w.done = true;
+        w.error = QString::fromStdString(message);
+        publish(w);
         QMetaObject::invokeMethod(
             this,
             [this, message] {
@@ -382,6 +401,36 @@ void MainWindow::addWell(const WellSource& source, const LoadOptions& options) {
     };
     w.feeder = std::make_unique<scenegraph::SegmentFeeder>(*w.pipeline, *w.scene, callbacks);
     w.pipeline->start();
+}
+
+void MainWindow::publish(Well& well) {
+    DeskWell record = m_model->well(well.modelIndex);
+    if (well.geometry && !well.geometry->table().wellName.empty())
+        record.name = QString::fromStdString(well.geometry->table().wellName);
+    record.options = well.options;
+    record.geometry = well.geometry;
+    record.analysis = well.analysis;
+    record.diagnostics = well.diagnostics;
+    record.error = well.error;
+    m_model->updateWell(well.modelIndex, std::move(record));
+}
+
+void MainWindow::analyse(Well& well) {
+    if (!well.geometry) return;
+    reconstruction::AnalysisOptions options;
+    options.rules.minValidArmFraction = well.options.minValidArmFraction;
+    options.threads = 2;
+    well.analysisJob = std::make_unique<AnalysisJob>(
+        this, well.geometry, options,
+        [this, &well](std::shared_ptr<const reconstruction::WellAnalysis> analysis) {
+            well.analysis = std::move(analysis);
+            publish(well);
+            emit wellAnalysed(well.modelIndex);
+        });
+}
+
+void MainWindow::buildDocks() {
+    // The docks are views of m_model; each is a class of its own (app/desktop).
 }
 
 void MainWindow::wellDone() {

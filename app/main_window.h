@@ -27,6 +27,8 @@ class WellScene;
 
 namespace caliper3d::app {
 
+class AnalysisJob;
+class DeskModel;
 class WellViewer;
 
 // The desktop window: an SoQtExaminerViewer in the centre, a status bar that
@@ -66,14 +68,19 @@ public:
     std::shared_ptr<const reconstruction::WellGeometry> geometry(std::size_t i) const;
     // The legend shown over the scene (null before a well is loaded).
     const reconstruction::ColourLegend* legend() const;
+    // The wells and the current depth every view follows.
+    DeskModel& model() const { return *m_model; }
 
 signals:
     void wellLoaded(int segments);  // once per well
     void allWellsLoaded();
     void wellFailed(const QString& message);
+    // Once per well, when the report's analysis of it is in the model.
+    void wellAnalysed(int well);
 
 private:
     void buildMenus();
+    void buildDocks();
     void openDialog(bool add);
     void exportDialog();
     void setView(int direction);
@@ -89,6 +96,7 @@ private:
     void showWarnings();
     void updateWarningsButton();
 
+    DeskModel* m_model = nullptr;
     WellViewer* m_viewer = nullptr;
     QComboBox* m_colourBox = nullptr;
     std::unique_ptr<scenegraph::DetailLoader> m_detail;
@@ -108,13 +116,21 @@ private:
         std::shared_ptr<const reconstruction::WellGeometry> geometry;  // once placed
         // The report's section values, computed the first time a colouring needs them.
         std::shared_ptr<const reconstruction::SectionValues> values;
+        // The report's analysis (what the docks show), made on a worker once the well loads.
+        std::shared_ptr<const reconstruction::WellAnalysis> analysis;
+        QString error;  // why the load failed
         std::unique_ptr<scenegraph::WellScene> scene;
         // Its depth ticks, labels, name and path above the log, beside the scene's root.
         SoSeparator* annotations = nullptr;
         std::unique_ptr<reconstruction::WellLoadPipeline> pipeline;
         std::unique_ptr<scenegraph::SegmentFeeder> feeder;
+        std::unique_ptr<AnalysisJob> analysisJob;  // after the load, until the analysis is in
+        int modelIndex = -1;                       // its record in m_model
         bool done = false;
     };
+    // The model's record of `well` as it is now.
+    void publish(Well& well);
+    void analyse(Well& well);
     void wellDone();
     // Adds (or replaces) the well's annotations in the scene, for its geometry as drawn.
     void annotate(Well& well);

@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build ccache pkg-config
-  libcoin-dev libsoqt520-dev qtbase5-dev libboost-dev libglm-dev
+  libcoin-dev libsoqt520-dev qtbase5-dev libqt5charts5-dev libboost-dev libglm-dev
   libgtest-dev libbenchmark-dev libfast-float-dev libassimp-dev libtinygltf-dev
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   xvfb xauth clang libclang-rt-14-dev clang-format clang-tidy locales

@@ -94,8 +94,11 @@ std::uint32_t classColour(BoreholeClass c) {
 }
 
 SectionValues sectionValues(const WellGeometry& g, const AnalysisOptions& analysis) {
-    const WellAnalysis a = analyseWell(g, analysis);
-    const std::size_t rows = g.table().rowCount();
+    return sectionValues(analyseWell(g, analysis));
+}
+
+SectionValues sectionValues(const WellAnalysis& a) {
+    const std::size_t rows = a.sections.size();
     SectionValues out;
     out.equivalentDiameter_mm.resize(rows);
     out.ellipticity.resize(rows);

@@ -29,6 +29,8 @@ struct SectionValues {
     bool gaugeFromSections = false;  // no bit size: the median equivalent diameter
 };
 SectionValues sectionValues(const WellGeometry& geometry, const AnalysisOptions& analysis = {});
+// The same from a well's analysis already made (the window analyses each well once).
+SectionValues sectionValues(const WellAnalysis& analysis);
 
 // The quantities a well can be coloured by: departure, diameter, ellipticity, class, dls,
 // then every extra curve of its log (gamma ray, resistivity...) by its mnemonic.

@@ -1,0 +1,82 @@
+#include "app/desktop/desk_model.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace caliper3d::app {
+
+const DeskWell* DeskModel::current() const {
+    return m_well >= 0 && m_well < wellCount() ? &m_wells[static_cast<std::size_t>(m_well)]
+                                               : nullptr;
+}
+
+int DeskModel::addWell(DeskWell well) {
+    m_wells.push_back(std::move(well));
+    const int index = wellCount() - 1;
+    emit wellsChanged();
+    if (m_well < 0 && m_wells.back().geometry) setCurrentRow(index, 0);
+    return index;
+}
+
+void DeskModel::updateWell(int i, DeskWell well) {
+    m_wells.at(static_cast<std::size_t>(i)) = std::move(well);
+    emit wellChanged(i);
+    if (m_well < 0 && m_wells[static_cast<std::size_t>(i)].geometry) setCurrentRow(i, 0);
+}
+
+void DeskModel::clearWells() {
+    m_wells.clear();
+    m_well = -1;
+    m_row = 0;
+    m_depth_m = io::kNaN;
+    m_azimuth_deg = io::kNaN;
+    emit wellsChanged();
+    emit currentChanged(m_well, m_depth_m);
+}
+
+void DeskModel::setVisible(int i, bool visible) {
+    DeskWell& w = m_wells.at(static_cast<std::size_t>(i));
+    if (w.visible == visible) return;
+    w.visible = visible;
+    emit wellChanged(i);
+}
+
+std::size_t DeskModel::nearestRow(const reconstruction::WellGeometry& geometry, double md_m) {
+    const std::vector<double>& depth = geometry.table().depth_m;
+    if (depth.empty() || !std::isfinite(md_m)) return 0;
+    const auto above = std::lower_bound(depth.begin(), depth.end(), md_m);
+    if (above == depth.begin()) return 0;
+    if (above == depth.end()) return depth.size() - 1;
+    const auto below = above - 1;
+    return static_cast<std::size_t>((md_m - *below <= *above - md_m ? below : above) -
+                                    depth.begin());
+}
+
+void DeskModel::setCurrent(int well, double md_m) {
+    if (well < 0 || well >= wellCount()) return;
+    const DeskWell& w = m_wells[static_cast<std::size_t>(well)];
+    if (!w.geometry || w.geometry->table().rowCount() == 0) return;
+    setCurrentRow(well, nearestRow(*w.geometry, md_m));
+}
+
+void DeskModel::setCurrentRow(int well, std::size_t row) {
+    if (well < 0 || well >= wellCount()) return;
+    const DeskWell& w = m_wells[static_cast<std::size_t>(well)];
+    if (!w.geometry || row >= w.geometry->table().rowCount()) return;
+    if (well == m_well && row == m_row && std::isfinite(m_depth_m)) return;
+    m_well = well;
+    m_row = row;
+    m_depth_m = w.geometry->table().depth_m[row];
+    emit currentChanged(m_well, m_depth_m);
+}
+
+void DeskModel::setCurrentAzimuth(double azimuth_deg) {
+    const double a = std::isfinite(azimuth_deg)
+                         ? std::fmod(std::fmod(azimuth_deg, 360.0) + 360.0, 360.0)
+                         : io::kNaN;
+    if (a == m_azimuth_deg || (std::isnan(a) && std::isnan(m_azimuth_deg))) return;
+    m_azimuth_deg = a;
+    emit azimuthChanged(m_azimuth_deg);
+}
+
+}  // namespace caliper3d::app

@@ -1,0 +1,87 @@
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+#include <QObject>
+#include <QString>
+
+#include "io/diagnostics.h"
+#include "reconstruction/analysis/well_analysis.h"
+#include "reconstruction/load/load_well.h"
+#include "reconstruction/well_geometry.h"
+
+namespace caliper3d::app {
+
+// One well as the window's views see it. Everything here is immutable once
+// shared (the geometry and the analysis are const); the window replaces a
+// well's record when something about it changes.
+struct DeskWell {
+    QString name;                         // the log's WELL field, else the file's name
+    QString path;                         // the file it was read from
+    reconstruction::LoadOptions options;  // as it was loaded (bit size, roles, units given)
+    std::shared_ptr<const reconstruction::WellGeometry> geometry;  // null until placed
+    // The report's analysis of the geometry (reconstruction::analyseWell): null until it is
+    // made, on a worker, once the well has loaded.
+    std::shared_ptr<const reconstruction::WellAnalysis> analysis;
+    io::Diagnostics diagnostics;  // reader, survey and geometry warnings
+    QString error;                // why the load failed (empty when it did not)
+    bool visible = true;
+};
+
+// The window's shared state: the wells, and the one current well, depth and angle that
+// every view follows (the 3D camera, the section inspector, the log track, the unrolled
+// image, the breakouts). Views change it through the setters and follow it through the
+// signals; a view that sets the depth gets the signal too, and must not echo it back
+// (the setters ignore a value equal to the current one). Main thread only.
+class DeskModel : public QObject {
+    Q_OBJECT
+
+public:
+    explicit DeskModel(QObject* parent = nullptr) : QObject(parent) {}
+
+    int wellCount() const { return static_cast<int>(m_wells.size()); }
+    const DeskWell& well(int i) const { return m_wells.at(static_cast<std::size_t>(i)); }
+    // The current well's record; null when there is none.
+    const DeskWell* current() const;
+
+    // Called by the window as wells load.
+    int addWell(DeskWell well);             // emits wellsChanged; the first becomes current
+    void updateWell(int i, DeskWell well);  // emits wellChanged(i)
+    void clearWells();                      // emits wellsChanged and currentChanged
+    void setVisible(int i, bool visible);   // emits wellChanged(i)
+
+    int currentWell() const { return m_well; }  // -1 when no well is loaded
+    // The current measured depth, metres, always a row's depth (NaN when no well).
+    double currentDepth_m() const { return m_depth_m; }
+    // The current section: the row of the current well's table at currentDepth_m.
+    std::size_t currentRow() const { return m_row; }
+    // The current direction around the section, degrees clockwise from north (NaN: none).
+    double currentAzimuth_deg() const { return m_azimuth_deg; }
+
+    // Moves to the row of `well` nearest `md_m` (clamped to the log); emits currentChanged
+    // when the well or the row changes. Ignored for a well without geometry.
+    void setCurrent(int well, double md_m);
+    void setCurrentDepth(double md_m) { setCurrent(m_well, md_m); }
+    void setCurrentRow(int well, std::size_t row);
+    void setCurrentAzimuth(double azimuth_deg);  // emits azimuthChanged
+
+    // The row of `geometry`'s table nearest `md_m` (the log's first or last beyond its ends).
+    static std::size_t nearestRow(const reconstruction::WellGeometry& geometry, double md_m);
+
+signals:
+    void wellsChanged();
+    void wellChanged(int well);
+    void currentChanged(int well, double md_m);
+    void azimuthChanged(double azimuth_deg);
+
+private:
+    std::vector<DeskWell> m_wells;
+    int m_well = -1;
+    std::size_t m_row = 0;
+    double m_depth_m = io::kNaN;
+    double m_azimuth_deg = io::kNaN;
+};
+
+}  // namespace caliper3d::app
