@@ -3,21 +3,19 @@
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
-#include <QDialog>
-#include <QDialogButtonBox>
 #include <QElapsedTimer>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QFontDatabase>
+#include <QInputDialog>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
-#include <QPlainTextEdit>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QStatusBar>
 #include <QTimer>
 #include <QToolBar>
-#include <QVBoxLayout>
+#include <QToolButton>
 
 #include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
 #include <Inventor/actions/SoGetBoundingBoxAction.h>
@@ -25,18 +23,25 @@
 
 #include <glm/vec3.hpp>
 
+#include <Inventor/SoSceneManager.h>
 #include <Inventor/nodes/SoCamera.h>
 #include <Inventor/nodes/SoPerspectiveCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
+#include <Inventor/nodes/SoSwitch.h>
 
 #include "app/desktop/analysis_job.h"
 #include "app/desktop/desk_model.h"
+#include "app/desktop/retired_loads.h"
+#include "app/desktop/warnings_dock.h"
+#include "app/desktop/well_navigator.h"
+#include "app/desktop/wells_dock.h"
 #include "app/scene_assembly.h"
 #include "app/well_viewer.h"
 #include "reconstruction/load/well_load_pipeline.h"
 #include "scenegraph/camera_setup.h"
 #include "scenegraph/detail_loader.h"
 #include "scenegraph/iv_export.h"
+#include "scenegraph/section_pick.h"
 #include "scenegraph/segment_feeder.h"
 #include "scenegraph/view_overlay.h"
 #include "scenegraph/well_annotations.h"
@@ -48,6 +53,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setWindowTitle("caliper3d");
     resize(1200, 800);
     m_model = new DeskModel(this);
+    m_retired = std::make_unique<RetiredLoads>();
     auto* centre = new QWidget(this);
     setCentralWidget(centre);
     m_viewer = new WellViewer(centre);
@@ -61,6 +67,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_viewRoot->addChild(m_sceneRoot);
     m_viewRoot->addChild(m_overlay->root());
     m_viewer->setSceneGraph(m_viewRoot);
+    m_navigator = new WellNavigator(*m_model, *m_viewer, m_viewRoot, this);
+    m_viewer->onClick([this](const SbVec2s& pixel) { pickAt(pixel); });
     // Full detail near the camera, built on a worker as the camera moves.
     m_detail = std::make_unique<scenegraph::DetailLoader>(
         [this]() -> std::optional<scenegraph::DetailView> {
@@ -82,7 +90,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_warningsButton->hide();
     connect(m_warningsButton, &QPushButton::clicked, this, &MainWindow::showWarnings);
     statusBar()->addPermanentWidget(m_warningsButton);
+    buildProgress();
     buildMenus();
+    buildViewMenu();
     buildDocks();
 }
 
@@ -104,21 +114,6 @@ void MainWindow::buildMenus() {
     file->addAction("&Export scene (.iv)...", this, &MainWindow::exportDialog);
     file->addSeparator();
     file->addAction("&Quit", this, &QWidget::close, QKeySequence::Quit);
-    QMenu* view = menuBar()->addMenu("&View");
-    view->addAction("Well &warnings...", this, &MainWindow::showWarnings);
-    view->addSeparator();
-    view->addAction("View &all", this, [this] { viewAll(); });
-    view->addAction("&Iso", this, [this] { setView(int(scenegraph::ViewDirection::Iso)); });
-    view->addAction("Looking &north", this,
-                    [this] { setView(int(scenegraph::ViewDirection::North)); });
-    view->addAction("Looking &east", this,
-                    [this] { setView(int(scenegraph::ViewDirection::East)); });
-    view->addAction("From &top", this, [this] { setView(int(scenegraph::ViewDirection::Top)); });
-    view->addSeparator();
-    QMenu* exaggeration = view->addMenu("Radial e&xaggeration");
-    for (double factor : {1.0, 10.0, 50.0, 200.0})
-        exaggeration->addAction(QString("x%1").arg(factor), this,
-                                [this, factor] { setExaggeration(factor); });
     QToolBar* style = addToolBar("Style");
     style->setObjectName("style");
     style->addWidget(new QLabel(" Colour by ", style));
@@ -129,6 +124,71 @@ void MainWindow::buildMenus() {
     fillColourBox();
     connect(m_colourBox, QOverload<int>::of(&QComboBox::activated), this,
             &MainWindow::colourByChosen);
+}
+
+void MainWindow::buildViewMenu() {
+    QMenu* view = menuBar()->addMenu("&View");
+    view->addAction("Well &warnings...", this, &MainWindow::showWarnings);
+    view->addSeparator();
+    view->addAction(
+        "View &all", this, [this] { viewAll(); }, QKeySequence(Qt::CTRL | Qt::Key_R));
+    view->addAction("&Iso", this, [this] { setView(int(scenegraph::ViewDirection::Iso)); });
+    view->addAction("Looking &north", this,
+                    [this] { setView(int(scenegraph::ViewDirection::North)); });
+    view->addAction("Looking &east", this,
+                    [this] { setView(int(scenegraph::ViewDirection::East)); });
+    view->addAction("From &top", this, [this] { setView(int(scenegraph::ViewDirection::Top)); });
+    view->addSeparator();
+    view->addAction("&Go to depth...", this, &MainWindow::goToDepthDialog,
+                    QKeySequence(Qt::CTRL | Qt::Key_G));
+    view->addAction(
+        "Ne&xt zone", this,
+        [this] {
+            if (!m_navigator->nextZone()) m_status->setText("No zone below the current depth");
+        },
+        QKeySequence(Qt::CTRL | Qt::Key_Down));
+    view->addAction(
+        "&Previous zone", this,
+        [this] {
+            if (!m_navigator->previousZone()) m_status->setText("No zone above the current depth");
+        },
+        QKeySequence(Qt::CTRL | Qt::Key_Up));
+    QAction* inside = view->addAction("Inside the &hole");
+    inside->setCheckable(true);
+    inside->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_I));
+    connect(inside, &QAction::toggled, this, [this](bool on) { m_navigator->setInside(on); });
+    QAction* fly = view->addAction("&Fly along the well");
+    fly->setCheckable(true);
+    fly->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F));
+    connect(fly, &QAction::toggled, this, [this, inside](bool on) {
+        if (on) {
+            inside->setChecked(true);
+            m_navigator->startFlight(kFlightSpeed_m_s);
+        } else {
+            m_navigator->stopFlight();
+        }
+    });
+    connect(m_navigator, &WellNavigator::flightStopped, fly, [fly] { fly->setChecked(false); });
+    view->addSeparator();
+    QMenu* exaggeration = view->addMenu("Radial e&xaggeration");
+    for (double factor : {1.0, 10.0, 50.0, 200.0})
+        exaggeration->addAction(QString("x%1").arg(factor), this,
+                                [this, factor] { setExaggeration(factor); });
+    m_docksMenu = view->addMenu("&Docks");
+}
+
+void MainWindow::goToDepthDialog() {
+    const DeskWell* well = m_model->current();
+    if (!well || !well->geometry) {
+        m_status->setText("No well loaded");
+        return;
+    }
+    const auto& depth = well->geometry->table().depth_m;
+    bool ok = false;
+    const double md = QInputDialog::getDouble(
+        this, "Go to depth", QString("Measured depth of %1 (m):").arg(well->name),
+        m_model->currentDepth_m(), depth.front(), depth.back(), 2, &ok);
+    if (ok) m_model->setCurrentDepth(md);
 }
 
 void MainWindow::fillColourBox() {
@@ -165,6 +225,21 @@ const reconstruction::ColourLegend* MainWindow::legend() const {
 }
 
 bool MainWindow::restyle(double radialExaggeration, const reconstruction::ColourRequest& colour) {
+    if (!restyleWells(radialExaggeration, colour, -1)) return false;
+    m_lastOptions.radialExaggeration = radialExaggeration;
+    m_lastOptions.colour = colour;
+    fillColourBox();
+    return true;
+}
+
+bool MainWindow::restyleWell(int well, const reconstruction::ColourRequest& colour) {
+    const auto it = wellOf(well);
+    if (it == m_wells.end()) return false;
+    return restyleWells((*it)->options.radialExaggeration, colour, well);
+}
+
+bool MainWindow::restyleWells(double radialExaggeration,
+                              const reconstruction::ColourRequest& colour, int only) {
     if (m_wells.empty()) return false;
     if (loading()) {
         m_status->setText("Wait for the wells to load before changing how they are drawn");
@@ -175,11 +250,14 @@ bool MainWindow::restyle(double radialExaggeration, const reconstruction::Colour
     static const std::vector<std::string> analysed{"diameter", "ellipticity", "class"};
     const bool needsValues =
         std::find(analysed.begin(), analysed.end(), colour.quantity) != analysed.end();
+    const auto chosen = [only](const Well& well) {
+        return well.geometry && (only < 0 || well.modelIndex == only);
+    };
     std::vector<std::shared_ptr<const reconstruction::WellGeometry>> geometries;
     std::vector<const reconstruction::SectionValues*> values;
     QApplication::setOverrideCursor(Qt::WaitCursor);
     for (const auto& well : m_wells) {
-        if (!well->geometry) continue;
+        if (!chosen(*well)) continue;
         if (needsValues && !well->values)
             well->values = std::make_shared<const reconstruction::SectionValues>(
                 well->analysis ? reconstruction::sectionValues(*well->analysis)
@@ -198,13 +276,16 @@ bool MainWindow::restyle(double radialExaggeration, const reconstruction::Colour
     m_detail->removeAll();
     std::size_t next = 0;
     for (auto& well : m_wells) {
-        if (!well->geometry) continue;
+        if (!chosen(*well)) {
+            if (well->geometry) m_detail->addWell(*well->scene, well->geometry);
+            continue;
+        }
         const std::size_t i = next++;
         well->geometry = std::make_shared<const reconstruction::WellGeometry>(
             well->geometry->restyled(radialExaggeration, colourings[i]));
         auto scene = std::make_unique<scenegraph::WellScene>();
         scene->buildAll(*well->geometry);
-        m_sceneRoot->replaceChild(well->scene->root(), scene->root());
+        well->shown->replaceChild(well->scene->root(), scene->root());
         well->scene = std::move(scene);
         well->options.radialExaggeration = radialExaggeration;
         well->options.colour = colour;
@@ -213,18 +294,27 @@ bool MainWindow::restyle(double radialExaggeration, const reconstruction::Colour
         publish(*well);
     }
     m_overlay->setCaption({scenegraph::exaggerationCaption(radialExaggeration)});
-    m_lastOptions.radialExaggeration = radialExaggeration;
-    m_lastOptions.colour = colour;
     m_legend.reset();
     if (!colourings.empty()) m_legend = colourings.front()->legend();
     m_viewer->setLegend(legend());
-    fillColourBox();
     QApplication::restoreOverrideCursor();
     m_status->setText(QString("Coloured by %1, radii x%2 (%3 ms, nothing read again)")
                           .arg(QString::fromStdString(colour.quantity))
                           .arg(radialExaggeration)
                           .arg(clock.elapsed()));
     return true;
+}
+
+std::vector<std::unique_ptr<MainWindow::Well>>::iterator MainWindow::wellOf(int modelIndex) {
+    return std::find_if(m_wells.begin(), m_wells.end(),
+                        [modelIndex](const auto& w) { return w->modelIndex == modelIndex; });
+}
+
+void MainWindow::setWellVisible(int well, bool visible) {
+    const auto it = wellOf(well);
+    if (it == m_wells.end()) return;
+    (*it)->shown->whichChild = visible ? SO_SWITCH_ALL : SO_SWITCH_NONE;
+    m_model->setVisible(well, visible);
 }
 
 void MainWindow::applyStyleAfterLoad() {
@@ -285,21 +375,9 @@ void MainWindow::updateWarningsButton() {
     m_warningsButton->setVisible(count > 0);
 }
 
-// A plain list for now: file, line and message of every warning kept.
 void MainWindow::showWarnings() {
-    QDialog dialog(this);
-    dialog.setWindowTitle("Well warnings");
-    dialog.resize(800, 400);
-    auto* list = new QPlainTextEdit(&dialog);
-    list->setReadOnly(true);
-    list->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
-    list->setPlainText(warningCount() > 0 ? warningsText() : QString("No warnings."));
-    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, &dialog);
-    connect(buttons, &QDialogButtonBox::rejected, &dialog, &QDialog::reject);
-    auto* layout = new QVBoxLayout(&dialog);
-    layout->addWidget(list);
-    layout->addWidget(buttons);
-    dialog.exec();
+    m_warningsDock->show();
+    m_warningsDock->raise();
 }
 
 void MainWindow::openWell(const QString& path, const LoadOptions& options) {
@@ -327,16 +405,13 @@ void MainWindow::addWell(const WellSource& source, const LoadOptions& options) {
     w.source = source;
     w.options = options;
     w.scene = std::make_unique<scenegraph::WellScene>();
-    m_sceneRoot->addChild(w.scene->root());
+    w.shown = new SoSwitch;
+    w.shown->whichChild = SO_SWITCH_ALL;
+    w.shown->addChild(w.scene->root());
+    m_sceneRoot->addChild(w.shown);
     m_wells.push_back(std::move(well));
     m_lastOptions = options;
-    {
-        DeskWell record;
-        record.name = QFileInfo(QString::fromStdString(source.path)).fileName();
-        record.path = QString::fromStdString(source.path);
-        record.options = options;
-        w.modelIndex = m_model->addWell(std::move(record));
-    }
+    w.modelIndex = m_model->addWell(record(w));
     m_overlay->setCaption({scenegraph::exaggerationCaption(options.radialExaggeration)});
 
     const std::string file = source.path;
@@ -391,6 +466,7 @@ void MainWindow::addWell(const WellSource& source, const LoadOptions& options) {
         w.done = true;
         w.error = QString::fromStdString(message);
         publish(w);
+        showLoadError(name, w.error);
         QMetaObject::invokeMethod(
             this,
             [this, message] {
@@ -401,10 +477,14 @@ void MainWindow::addWell(const WellSource& source, const LoadOptions& options) {
     };
     w.feeder = std::make_unique<scenegraph::SegmentFeeder>(*w.pipeline, *w.scene, callbacks);
     w.pipeline->start();
+    m_progressTimer->start();
+    updateProgress();
 }
 
-void MainWindow::publish(Well& well) {
-    DeskWell record = m_model->well(well.modelIndex);
+DeskWell MainWindow::record(const Well& well) const {
+    DeskWell record;
+    record.path = QString::fromStdString(well.source.path);
+    record.name = QFileInfo(record.path).fileName();
     if (well.geometry && !well.geometry->table().wellName.empty())
         record.name = QString::fromStdString(well.geometry->table().wellName);
     record.options = well.options;
@@ -412,7 +492,136 @@ void MainWindow::publish(Well& well) {
     record.analysis = well.analysis;
     record.diagnostics = well.diagnostics;
     record.error = well.error;
-    m_model->updateWell(well.modelIndex, std::move(record));
+    record.visible = well.shown->whichChild.getValue() != SO_SWITCH_NONE;
+    return record;
+}
+
+void MainWindow::publish(Well& well) {
+    m_model->updateWell(well.modelIndex, record(well));
+}
+
+void MainWindow::buildProgress() {
+    m_progress = new QProgressBar(this);
+    m_progress->setRange(0, kProgressSteps);
+    m_progress->setMaximumWidth(260);
+    m_progress->setTextVisible(true);
+    m_progress->hide();
+    m_cancelButton = new QToolButton(this);
+    m_cancelButton->setText("Cancel");
+    m_cancelButton->setToolTip("Stop loading (Esc); the wells not loaded yet are removed");
+    m_cancelButton->setShortcut(QKeySequence(Qt::Key_Escape));
+    m_cancelButton->hide();
+    connect(m_cancelButton, &QToolButton::clicked, this, &MainWindow::cancelLoading);
+    statusBar()->addPermanentWidget(m_progress);
+    statusBar()->addPermanentWidget(m_cancelButton);
+    m_progressTimer = new QTimer(this);
+    m_progressTimer->setInterval(kProgressInterval_ms);
+    connect(m_progressTimer, &QTimer::timeout, this, &MainWindow::updateProgress);
+}
+
+// Reading is the first 70 % of a well's bar (the fraction of the log read), drawing the rest
+// (the segments attached over the well's segments); the bar is the mean over loading wells.
+void MainWindow::updateProgress() {
+    double sum = 0.0;
+    int count = 0;
+    QString what;
+    for (const auto& well : m_wells) {
+        if (well->done || !well->pipeline) continue;
+        ++count;
+        const QString name = QFileInfo(QString::fromStdString(well->source.path)).fileName();
+        if (!well->geometry) {
+            sum += kReadShare * well->pipeline->readFraction();
+            what = "Reading " + name;
+        } else {
+            const double segments = std::max<double>(1.0, double(well->geometry->segmentCount()));
+            sum += kReadShare +
+                   (1.0 - kReadShare) * std::min(1.0, double(well->feeder->attached()) / segments);
+            what = "Drawing " + name;
+        }
+    }
+    const bool busy = count > 0;
+    m_progress->setVisible(busy);
+    m_cancelButton->setVisible(busy);
+    if (!busy) {
+        m_progressTimer->stop();
+        return;
+    }
+    if (count > 1) what = QString("Loading %1 wells").arg(count);
+    m_progress->setValue(static_cast<int>(kProgressSteps * sum / count));
+    m_progress->setFormat(what + " %p%");
+}
+
+void MainWindow::cancelLoading() {
+    std::size_t stopped = 0;
+    for (auto& well : m_wells)
+        if (!well->done && well->pipeline) {
+            well->pipeline->cancel();
+            ++stopped;
+        }
+    if (stopped == 0) return;
+    m_detail->removeAll();
+    std::vector<std::unique_ptr<Well>> kept;
+    for (auto& well : m_wells) {
+        if (well->done) {
+            kept.push_back(std::move(well));
+            continue;
+        }
+        m_sceneRoot->removeChild(well->shown);
+        well->feeder.reset();                          // its sensor, on this thread
+        m_retired->retire(std::move(well->pipeline));  // joined off this thread
+        well.reset();
+    }
+    m_wells = std::move(kept);
+    m_model->clearWells();
+    for (auto& well : m_wells) {
+        well->modelIndex = m_model->addWell(record(*well));
+        if (well->geometry) m_detail->addWell(*well->scene, well->geometry);
+    }
+    updateProgress();
+    updateWarningsButton();
+    m_status->setText(QString("Loading cancelled: %1 well%2 not loaded")
+                          .arg(stopped)
+                          .arg(stopped == 1 ? "" : "s"));
+    emit loadCancelled();
+}
+
+int MainWindow::retiredLoadsRunning() const {
+    return m_retired->running();
+}
+
+void MainWindow::showLoadError(const QString& name, const QString& message) {
+    auto* box = new QMessageBox(QMessageBox::Critical, "Could not load " + name, message,
+                                QMessageBox::Ok, this);
+    box->setObjectName("loadError");
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();  // not modal to the loads still under way
+}
+
+bool MainWindow::pickAt(const SbVec2s& pixel) {
+    std::vector<scenegraph::PickableWell> wells;
+    std::vector<int> index;
+    for (const auto& well : m_wells)
+        if (well->geometry && well->analysis &&
+            well->shown->whichChild.getValue() != SO_SWITCH_NONE) {
+            wells.push_back({well->scene.get(), well->geometry.get(), well->analysis.get(),
+                             record(*well).name.toStdString()});
+            index.push_back(well->modelIndex);
+        }
+    if (wells.empty()) return false;
+    const std::optional<scenegraph::SectionPick> pick = scenegraph::pickSection(
+        m_viewer->getSceneManager()->getSceneGraph(), m_viewer->getViewportRegion(), pixel, wells);
+    if (!pick) return false;
+    const int well = index[pick->well];
+    if (well != m_model->currentWell() || pick->wall.row != m_model->currentRow())
+        m_navigator->holdCameraOnce();  // the user looks where they clicked: stay
+    m_model->setCurrentRow(well, pick->wall.row);
+    m_model->setCurrentAzimuth(pick->wall.azimuth_deg);
+    m_status->setText(QString("%1 at %2 m MD: radius %3 mm at azimuth %4")
+                          .arg(QString::fromStdString(pick->wellName))
+                          .arg(pick->section.md_m, 0, 'f', 2)
+                          .arg(pick->wall.radius_mm, 0, 'f', 1)
+                          .arg(pick->wall.azimuth_deg, 0, 'f', 0));
+    return true;
 }
 
 void MainWindow::analyse(Well& well) {
@@ -431,6 +640,18 @@ void MainWindow::analyse(Well& well) {
 
 void MainWindow::buildDocks() {
     // The docks are views of m_model; each is a class of its own (app/desktop).
+    auto* wells = new WellsDock(*m_model, this);
+    addDockWidget(Qt::LeftDockWidgetArea, wells);
+    connect(wells, &WellsDock::visibilityToggled, this, &MainWindow::setWellVisible);
+    connect(wells, &WellsDock::colourChosen, this, [this](int well, const QString& quantity) {
+        reconstruction::ColourRequest colour;
+        colour.quantity = quantity.toStdString();
+        restyleWell(well, colour);
+    });
+    m_warningsDock = new WarningsDock(*m_model, this);
+    addDockWidget(Qt::BottomDockWidgetArea, m_warningsDock);
+    for (QDockWidget* dock : std::initializer_list<QDockWidget*>{wells, m_warningsDock})
+        m_docksMenu->addAction(dock->toggleViewAction());
 }
 
 void MainWindow::wellDone() {
@@ -471,9 +692,9 @@ void MainWindow::annotate(Well& well) {
     SoSeparator* annotations =
         scenegraph::makeWholeWellAnnotations(*well.geometry, well.options.radialExaggeration);
     if (well.annotations)
-        m_sceneRoot->replaceChild(well.annotations, annotations);
+        well.shown->replaceChild(well.annotations, annotations);
     else
-        m_sceneRoot->addChild(annotations);
+        well.shown->addChild(annotations);
     well.annotations = annotations;
 }
 

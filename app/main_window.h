@@ -7,13 +7,20 @@
 
 #include <QMainWindow>
 
+#include "app/desktop/desk_model.h"
 #include "app/input_options.h"
 
 class QComboBox;
 class QLabel;
+class QMenu;
+class QProgressBar;
 class QPushButton;
+class QTimer;
+class QToolButton;
+class SbVec2s;
 class SoQtExaminerViewer;
 class SoSeparator;
+class SoSwitch;
 
 namespace caliper3d::reconstruction {
 class WellLoadPipeline;
@@ -29,6 +36,9 @@ namespace caliper3d::app {
 
 class AnalysisJob;
 class DeskModel;
+class RetiredLoads;
+class WarningsDock;
+class WellNavigator;
 class WellViewer;
 
 // The desktop window: an SoQtExaminerViewer in the centre, a status bar that
@@ -64,6 +74,22 @@ public:
     // the reason in the status bar, while a well still loads or when a well cannot be
     // coloured so (an unknown curve). The colour range is shared by every well.
     bool restyle(double radialExaggeration, const reconstruction::ColourRequest& colour);
+    // The same for one well (its record in the model) only, its colour range its own.
+    bool restyleWell(int well, const reconstruction::ColourRequest& colour);
+    // Shows or hides a well (its record in the model) in the 3D view.
+    void setWellVisible(int well, bool visible);
+    // Stops every load under way within a block of the log; the wells not yet loaded are
+    // removed (a part of a well is never left drawn as if it were the whole).
+    void cancelLoading();
+    // Picks the wall at `pixel` of the 3D view (Coin's pixels, origin at the bottom left), as a
+    // click does: the section hit becomes the current depth and the direction the current
+    // azimuth; the camera stays. False when nothing analysed is there.
+    bool pickAt(const SbVec2s& pixel);
+    // The camera's side of the current depth (follow, inside the hole, flight, zones).
+    WellNavigator& navigator() const { return *m_navigator; }
+    QProgressBar* loadProgress() const { return m_progress; }
+    // Cancelled loads whose workers have not stopped yet (they stop within a block).
+    int retiredLoadsRunning() const;
     // The geometry well `i` is drawn from (null until its load has placed it).
     std::shared_ptr<const reconstruction::WellGeometry> geometry(std::size_t i) const;
     // The legend shown over the scene (null before a well is loaded).
@@ -77,15 +103,26 @@ signals:
     void wellFailed(const QString& message);
     // Once per well, when the report's analysis of it is in the model.
     void wellAnalysed(int well);
+    // A load was stopped by cancelLoading (the cancel button).
+    void loadCancelled();
 
 private:
     void buildMenus();
+    void buildViewMenu();
     void buildDocks();
+    void buildProgress();
+    void updateProgress();
+    void goToDepthDialog();
+    void showLoadError(const QString& name, const QString& message);
     void openDialog(bool add);
     void exportDialog();
     void setView(int direction);
     void viewAll();  // the scene with room around it for the labels at its ends
     static constexpr float kViewAllRoom = 1.12f;  // distance, over SoCamera::viewAll's
+    static constexpr int kProgressSteps = 1000;
+    static constexpr int kProgressInterval_ms = 100;
+    static constexpr double kReadShare = 0.7;        // of a well's progress bar: reading the log
+    static constexpr double kFlightSpeed_m_s = 5.0;  // fly along: the current depth per second
     void setExaggeration(double factor);
     void colourByChosen(int index);
     // The names of the "Colour by" box: the built-in quantities and the first well's curves.
@@ -97,7 +134,14 @@ private:
     void updateWarningsButton();
 
     DeskModel* m_model = nullptr;
+    std::unique_ptr<RetiredLoads> m_retired;  // declared first: destroyed after the wells
     WellViewer* m_viewer = nullptr;
+    WellNavigator* m_navigator = nullptr;
+    WarningsDock* m_warningsDock = nullptr;
+    QMenu* m_docksMenu = nullptr;  // View > Docks: a toggle per dock
+    QProgressBar* m_progress = nullptr;
+    QToolButton* m_cancelButton = nullptr;
+    QTimer* m_progressTimer = nullptr;
     QComboBox* m_colourBox = nullptr;
     std::unique_ptr<scenegraph::DetailLoader> m_detail;
     SoSeparator* m_sceneRoot = nullptr;  // the wells, their annotations; what is exported
@@ -118,7 +162,8 @@ private:
         std::shared_ptr<const reconstruction::SectionValues> values;
         // The report's analysis (what the docks show), made on a worker once the well loads.
         std::shared_ptr<const reconstruction::WellAnalysis> analysis;
-        QString error;  // why the load failed
+        QString error;              // why the load failed
+        SoSwitch* shown = nullptr;  // under the scene's root: the well's scene and annotations
         std::unique_ptr<scenegraph::WellScene> scene;
         // Its depth ticks, labels, name and path above the log, beside the scene's root.
         SoSeparator* annotations = nullptr;
@@ -128,10 +173,14 @@ private:
         int modelIndex = -1;                       // its record in m_model
         bool done = false;
     };
-    // The model's record of `well` as it is now.
+    // The model's record of `well` as it is now, and publishing it there.
+    DeskWell record(const Well& well) const;
     void publish(Well& well);
     void analyse(Well& well);
     void wellDone();
+    bool restyleWells(double radialExaggeration, const reconstruction::ColourRequest& colour,
+                      int only);  // only: a model index, or -1 for every well
+    std::vector<std::unique_ptr<Well>>::iterator wellOf(int modelIndex);
     // Adds (or replaces) the well's annotations in the scene, for its geometry as drawn.
     void annotate(Well& well);
     std::vector<std::unique_ptr<Well>> m_wells;

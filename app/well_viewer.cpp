@@ -1,5 +1,8 @@
 #include "app/well_viewer.h"
 
+#include <cstdlib>
+
+#include <Inventor/events/SoMouseButtonEvent.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 #include "scenegraph/colour_legend.h"
@@ -24,6 +27,25 @@ void WellViewer::setLegend(const reconstruction::ColourLegend* legend) {
         addSuperimposition(m_legend);
     }
     scheduleRedraw();
+}
+
+SbBool WellViewer::processSoEvent(const SoEvent* event) {
+    if (m_onClick && event->isOfType(SoMouseButtonEvent::getClassTypeId())) {
+        const auto* button = static_cast<const SoMouseButtonEvent*>(event);
+        if (button->getButton() == SoMouseButtonEvent::BUTTON1) {
+            const SbVec2s at = event->getPosition();
+            if (button->getState() == SoButtonEvent::DOWN) {
+                m_pressedAt = at;
+            } else if (std::abs(at[0] - m_pressedAt[0]) <= kClickSlop_px &&
+                       std::abs(at[1] - m_pressedAt[1]) <= kClickSlop_px) {
+                m_pressedAt = SbVec2s(-1000, -1000);
+                const SbBool handled = SoQtExaminerViewer::processSoEvent(event);
+                m_onClick(at);
+                return handled;
+            }
+        }
+    }
+    return SoQtExaminerViewer::processSoEvent(event);
 }
 
 }  // namespace caliper3d::app

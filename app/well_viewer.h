@@ -1,6 +1,9 @@
 #pragma once
 
+#include <functional>
+
 #include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
+#include <Inventor/SbVec2s.h>
 
 #include "reconstruction/mesh/wall_colouring.h"
 
@@ -22,9 +25,20 @@ public:
     void setLegend(const reconstruction::ColourLegend* legend);
     // The legend's overlay, null when none is shown (tests).
     SoSeparator* legendNode() const { return m_legend; }
+    // Called with the pixel (Coin's: origin at the bottom left) of a left click that did not
+    // drag: a drag turns the camera, a click picks.
+    void onClick(std::function<void(const SbVec2s& pixel)> callback) {
+        m_onClick = std::move(callback);
+    }
+
+protected:
+    SbBool processSoEvent(const SoEvent* event) override;
 
 private:
-    SoSeparator* m_legend = nullptr;  // referenced while shown
+    static constexpr int kClickSlop_px = 3;  // a press and release this close is a click
+    SoSeparator* m_legend = nullptr;         // referenced while shown
+    std::function<void(const SbVec2s&)> m_onClick;
+    SbVec2s m_pressedAt{-1000, -1000};
 };
 
 }  // namespace caliper3d::app

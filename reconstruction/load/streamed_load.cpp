@@ -113,10 +113,15 @@ LoadedWell loadWellStreamed(const WellSource& source, const LoadOptions& options
             // block parsed while the meshing thread shares the cores.
             stream.blockBytes = 2u << 20;
             io::HoleAzimuthPlan plan;
-            stream.onStart = [&](const io::LogInfo& info, std::size_t) {
+            std::size_t estimatedRows = 0, rowsRead = 0;
+            stream.onStart = [&](const io::LogInfo& info, std::size_t estimate) {
                 plan = io::holeAzimuthPlan(info, surveyGiven);
+                estimatedRows = estimate;
             };
             stream.onChunk = [&](const io::SectionTable& chunk) {
+                rowsRead += chunk.rowCount();
+                if (sink.read && estimatedRows > 0)
+                    sink.read(std::min(1.0, double(rowsRead) / double(estimatedRows)));
                 if (!handover.feeding.load()) return;
                 io::SectionTable rows = chunk;
                 resolveHoleAzimuth(rows, plan, nullptr);  // row by row: as the whole log's

@@ -17,6 +17,9 @@ struct StreamedLoadSink {
     // The next coarse segment (buildCoarseSegment), numbered and with rows as in the whole
     // well's geometry, identical to it bit for bit.
     std::function<void(SegmentMesh&& segment)> segment;
+    // How much of the log is read, 0 to 1 (rows read over the reader's estimate of the
+    // rows to come), after each block; called on the reading thread.
+    std::function<void(double fraction)> read;
 };
 
 // loadWell, streamed: the log is read on a reading thread while this thread, the meshing

@@ -50,6 +50,7 @@ void WellLoadPipeline::run() {
                 drawnTo = event.bottom_m;
                 m_events.push(std::move(event));
             };
+            sink.read = [this](double fraction) { m_readFraction.store(fraction); };
             sink.segment = [this, &built](SegmentMesh&& segment) {
                 if (m_cancelled.load()) return;
                 m_events.push(std::move(segment));
@@ -59,6 +60,7 @@ void WellLoadPipeline::run() {
         } else {
             well = m_loader();
         }
+        m_readFraction.store(1.0);
         const std::shared_ptr<const WellGeometry> geometry = well.geometry;
         m_events.push(LoadStarted{geometry, std::move(well.diagnostics)});
         for (std::size_t s = built; s < geometry->segmentCount(); ++s) {

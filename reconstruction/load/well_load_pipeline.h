@@ -66,6 +66,9 @@ public:
     void start();
     void cancel() { m_cancelled.store(true); }
     bool cancelled() const { return m_cancelled.load(); }
+    // How much of the log a streamed load has read, 0 to 1 (any thread; 0 for other loaders
+    // until their geometry comes).
+    double readFraction() const { return m_readFraction.load(); }
     HandOffQueue<LoadEvent>& events() { return m_events; }
 
 private:
@@ -77,6 +80,7 @@ private:
     StreamedLoader m_streamed;  // when set, used instead of m_loader
     HandOffQueue<LoadEvent> m_events;
     std::atomic<bool> m_cancelled{false};
+    std::atomic<double> m_readFraction{0.0};
     std::thread m_worker;
 };
 

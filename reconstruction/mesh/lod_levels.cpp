@@ -349,4 +349,9 @@ SegmentMesh buildCoarseSegment(const WellGeometry& geometry, std::size_t segment
                               std::numeric_limits<int>::max());
 }
 
+std::vector<glm::vec3> sectionRing(const WellGeometry& geometry, std::size_t row) {
+    if (row >= geometry.table().rowCount() || !geometry.measured(row)) return {};
+    return buildLevel(geometry, {row}, geometry.sampler().samples()).positions;
+}
+
 }  // namespace caliper3d::reconstruction

@@ -46,4 +46,9 @@ SegmentMesh buildSegmentMesh(const WellGeometry& geometry, std::size_t segment);
 // The levels built up front, kFirstCoarseLevel on.
 SegmentMesh buildCoarseSegment(const WellGeometry& geometry, std::size_t segment);
 
+// The wall of one section as the finest level draws it: its closed spline's points in the
+// scene frame, radial exaggeration included (what the window outlines at the current depth).
+// Empty for a row without data.
+std::vector<glm::vec3> sectionRing(const WellGeometry& geometry, std::size_t row);
+
 }  // namespace caliper3d::reconstruction

@@ -51,8 +51,10 @@ std::vector<LoadEvent> drainAll(WellLoadPipeline& pipeline) {
 
 TEST(WellLoadPipelineTest, StreamsStretchesAndTheirSegmentsWhileReadingThenTheWholeWell) {
     WellLoadPipeline pipeline(WellSource{wellFile(), {}, {}}, LoadOptions{}, Wellhead{});
+    EXPECT_EQ(pipeline.readFraction(), 0.0);
     pipeline.start();
     const std::vector<LoadEvent> events = drainAll(pipeline);
+    EXPECT_EQ(pipeline.readFraction(), 1.0);  // the whole log read
     // A stretch of the rows read so far comes first, its segments after it; the whole
     // geometry once the log is read, then the segments not streamed.
     ASSERT_TRUE(std::holds_alternative<LoadStretch>(events.front()));

@@ -203,3 +203,21 @@ TEST(LodLevelsTest, FullDetailPartsTileLevelZeroAndEndOnItsRings) {
     }
     EXPECT_NEAR(widest, (8.5 * 25.4 / 2.0 + 25.0) / 1000.0, 0.002);
 }
+
+TEST(LodLevelsTest, SectionRingIsTheDrawnCircleAboutTheToolAxisAndScalesWithTheExaggeration) {
+    const auto table = breakoutWell();
+    const WellGeometry g(table, GeometryOptions{});
+    const std::size_t row = 100;  // 0.25 m: gauge, every arm the same
+    const double radius_m = table->radii(row)[0] / 1000.0;
+    const glm::dvec3 axis = toScene(g.centre(row));
+    const std::vector<glm::vec3> ring = sectionRing(g, row);
+    ASSERT_EQ(ring.size(), static_cast<std::size_t>(g.sampler().samples()));
+    for (const glm::vec3& p : ring) EXPECT_NEAR(glm::distance(glm::dvec3(p), axis), radius_m, 1e-5);
+
+    GeometryOptions wide;
+    wide.radialExaggeration = 10.0;
+    const WellGeometry drawn(table, wide);
+    for (const glm::vec3& p : sectionRing(drawn, row))
+        EXPECT_NEAR(glm::distance(glm::dvec3(p), axis), 10.0 * radius_m, 1e-4);
+    EXPECT_TRUE(sectionRing(g, table->rowCount()).empty());  // past the log: nothing
+}

@@ -1,0 +1,79 @@
+#pragma once
+
+#include <QObject>
+#include <QTimer>
+
+#include <Inventor/SbVec3f.h>
+
+class SoCamera;
+class SoCoordinate3;
+class SoLineSet;
+class SoQtExaminerViewer;
+class SoSeparator;
+class SoSwitch;
+
+namespace caliper3d::app {
+
+class DeskModel;
+
+// The 3D camera's side of the current depth: it follows the depth the other views set,
+// outlines the current section in the scene, goes inside the hole, flies along the well
+// and steps from zone to zone. Coin calls on the main thread only, like every view.
+class WellNavigator : public QObject {
+    Q_OBJECT
+
+public:
+    // Adds its nodes (the marker, the inside-the-hole look) under `viewRoot`.
+    WellNavigator(DeskModel& model, SoQtExaminerViewer& viewer, SoSeparator* viewRoot,
+                  QObject* parent = nullptr);
+    ~WellNavigator() override;
+    WellNavigator(const WellNavigator&) = delete;
+    WellNavigator& operator=(const WellNavigator&) = delete;
+
+    // The next change of the current depth came from the 3D view itself (a pick): the
+    // marker moves, the camera stays where the user put it.
+    void holdCameraOnce() { m_holdCamera = true; }
+    // Looks at the current depth: from inside the hole down it, or from outside, from the
+    // side the camera looks from now, close enough to see the section.
+    void follow();
+    // Inside the hole (looking down it from the current depth, lit by the wall's own colours
+    // and fog) or outside (the viewer's usual light).
+    void setInside(bool inside);
+    bool inside() const { return m_inside; }
+    // Moves the current depth down the well at `speed_m_s`, the camera inside, until the
+    // end of the log or stopFlight().
+    void startFlight(double speed_m_s);
+    void stopFlight();
+    bool flying() const { return m_flight.isActive(); }
+    // The current depth to the top of the next (previous) zone of the current well's
+    // analysis; false when there is none that way (or no analysis yet).
+    bool nextZone();
+    bool previousZone();
+    // What the camera looks at (scene frame): the point at its focal distance.
+    SbVec3f focus() const;
+    // The outline of the current section (for tests): its points, scene frame.
+    int markerPoints() const;
+
+signals:
+    void flightStopped();
+
+private:
+    void onCurrentChanged();
+    void updateMarker();
+    void flightStep();
+
+    DeskModel& m_model;
+    SoQtExaminerViewer& m_viewer;
+    SoSeparator* m_viewRoot = nullptr;
+    SoSwitch* m_insideLook = nullptr;  // BASE_COLOR light model and fog, on inside the hole
+    SoSeparator* m_marker = nullptr;
+    SoCoordinate3* m_markerPoints = nullptr;
+    SoLineSet* m_markerLine = nullptr;
+    bool m_inside = false;
+    bool m_holdCamera = false;
+    QTimer m_flight;
+    double m_speed_m_s = 5.0;
+    static constexpr int kFlightTick_ms = 40;
+};
+
+}  // namespace caliper3d::app

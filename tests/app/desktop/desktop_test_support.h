@@ -1,0 +1,90 @@
+#pragma once
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include <QApplication>
+#include <QColor>
+#include <QEventLoop>
+#include <QImage>
+#include <QTimer>
+#include <QWidget>
+
+#include "app/gui_session.h"
+#include "io/column_text_writer.h"
+#include "reconstruction/synthetic/synthetic_well.h"
+#include "test_support.h"
+
+namespace caliper3d::test {
+
+// The one QApplication of the desktop tests (made by the first suite that needs it, with
+// SoQt); false when there is no display (the caller skips).
+inline bool ensureGuiApplication() {
+    if (!app::haveDisplay()) return false;
+    if (!QApplication::instance()) {
+        static int argc = 1;
+        static char name[] = "desktop_tests";
+        static char* argv[] = {name, nullptr};
+        new QApplication(argc, argv);  // lives as long as the test binary
+        app::initGui();
+    }
+    return true;
+}
+
+// Runs the event loop until `done()` holds or `ms` milliseconds pass; returns done().
+template <typename Predicate>
+bool waitUntil(Predicate done, int ms) {
+    QEventLoop loop;
+    QTimer poll;
+    QObject::connect(&poll, &QTimer::timeout, &loop, [&] {
+        if (done()) loop.quit();
+    });
+    poll.start(10);
+    QTimer::singleShot(ms, &loop, &QEventLoop::quit);
+    if (!done()) loop.exec();
+    return done();
+}
+
+// A synthetic well written as column text into the scratch folder (kept between runs when
+// it is there already: the 4 km one takes seconds to write).
+inline std::filesystem::path syntheticLog(const std::string& profile, double length_m,
+                                          double step_m) {
+    const auto path = scratch("desktop_" + profile + "_" + std::to_string(int(length_m)) + "m_" +
+                              std::to_string(int(step_m * 1000)) + "mm.txt");
+    if (!std::filesystem::exists(path)) {
+        const auto partial = path.string() + ".part";
+        io::writeColumnTextFile(partial,
+                                reconstruction::makeSyntheticWell(
+                                    reconstruction::syntheticProfile(profile, length_m, step_m)));
+        std::filesystem::rename(partial, path);
+    }
+    return path;
+}
+
+// Pixels of `image` more than `tolerance` (0-255, any channel) from `background`.
+inline std::size_t pixelsUnlike(const QImage& image, const QColor& background, int tolerance = 24) {
+    std::size_t count = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+            const QColor c = image.pixelColor(x, y);
+            count += std::abs(c.red() - background.red()) > tolerance ||
+                             std::abs(c.green() - background.green()) > tolerance ||
+                             std::abs(c.blue() - background.blue()) > tolerance
+                         ? 1
+                         : 0;
+        }
+    return count;
+}
+
+// Pixels of `image` that differ from its top-left pixel (the background).
+inline std::size_t drawnPixels(const QImage& image) {
+    if (image.isNull()) return 0;
+    const QRgb background = image.pixel(0, 0);
+    std::size_t drawn = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) drawn += image.pixel(x, y) != background ? 1 : 0;
+    return drawn;
+}
+
+}  // namespace caliper3d::test

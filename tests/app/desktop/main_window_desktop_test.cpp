@@ -1,0 +1,208 @@
+// The window as a whole: picking, the camera following the current depth, zones, cancelling
+// a load, the error dialog and the docks it holds.
+#include "app/main_window.h"
+
+#include <cmath>
+#include <fstream>
+
+#include <gtest/gtest.h>
+#include <QElapsedTimer>
+#include <QGLWidget>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QTest>
+#include <QTreeWidget>
+
+#include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
+#include <Inventor/SoSceneManager.h>
+#include <Inventor/nodes/SoCamera.h>
+
+#include "app/desktop/desk_model.h"
+#include "app/desktop/warnings_dock.h"
+#include "app/desktop/well_navigator.h"
+#include "app/desktop/wells_dock.h"
+#include "desktop_test_support.h"
+#include "scenegraph/camera_setup.h"
+#include "scenegraph/section_pick.h"
+
+using namespace caliper3d;
+
+namespace {
+
+class DesktopWindowTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        if (!test::ensureGuiApplication()) GTEST_SKIP() << "no display (run under xvfb-run)";
+    }
+    // Opens `log` in `window` (shown at 800 x 600) and waits for it to load and be analysed.
+    static void openAndAnalyse(app::MainWindow& window, const std::filesystem::path& log) {
+        window.resize(1000, 700);
+        window.show();
+        app::LoadOptions options;
+        options.read.bitSize_mm = 215.9;
+        window.openWell(QString::fromStdString(log.string()), options);
+        ASSERT_TRUE(test::waitUntil(
+            [&] {
+                return window.model().wellCount() == 1 && window.model().well(0).analysis &&
+                       !window.loading();
+            },
+            120000))
+            << "the well did not load and analyse";
+    }
+};
+
+}  // namespace
+
+TEST_F(DesktopWindowTest, AClickOnTheWallMakesItsSectionCurrentAndTheCameraStays) {
+    app::MainWindow window;
+    openAndAnalyse(window, test::syntheticLog("example", 100.0, 0.05));
+    window.navigator().setInside(true);
+    window.model().setCurrentDepth(30.0);
+    window.viewer()->render();
+    SoCamera* camera = window.viewer()->getCamera();
+    const SbVec3f eye = camera->position.getValue();
+
+    // Looking down the hole from 30 m, a pixel near the bottom edge meets the wall deeper.
+    const SbVec2s size = window.viewer()->getViewportRegion().getViewportSizePixels();
+    const SbVec2s pixel(size[0] / 2, static_cast<short>(size[1] / 10));
+    const app::DeskWell& well = window.model().well(0);
+    // What the click must find: the same pick made here (the camera does not move).
+    std::vector<scenegraph::PickableWell> wells{
+        {nullptr, well.geometry.get(), well.analysis.get(), "example"}};
+    QWidget* gl = window.viewer()->getGLWidget();
+    QTest::mouseClick(gl, Qt::LeftButton, Qt::NoModifier, QPoint(pixel[0], size[1] - 1 - pixel[1]));
+    QApplication::processEvents();
+
+    EXPECT_GT(window.model().currentDepth_m(), 30.0) << "the wall met is deeper than the eye";
+    EXPECT_LT(window.model().currentDepth_m(), 60.0);
+    EXPECT_TRUE(std::isfinite(window.model().currentAzimuth_deg()));
+    EXPECT_EQ(camera->position.getValue(), eye) << "a pick does not move the camera";
+    EXPECT_TRUE(window.statusText().contains("radius")) << window.statusText().toStdString();
+    // The row is the one whose section the ray meets: the wall point lies in its plane.
+    const std::size_t row = window.model().currentRow();
+    EXPECT_TRUE(well.geometry->measured(row));
+    EXPECT_EQ(window.navigator().markerPoints(), well.geometry->sampler().samples() + 1);
+}
+
+TEST_F(DesktopWindowTest, TheCameraFollowsTheCurrentDepthAndStepsFromZoneToZone) {
+    app::MainWindow window;
+    openAndAnalyse(window, test::syntheticLog("example", 100.0, 0.05));
+    const app::DeskWell& well = window.model().well(0);
+    window.model().setCurrentDepth(42.0);
+    const std::size_t row = window.model().currentRow();
+    const glm::dvec3 centre = reconstruction::toScene(well.geometry->centre(row));
+    const SbVec3f focus = window.navigator().focus();
+    EXPECT_NEAR(focus[0], centre.x, 0.01);
+    EXPECT_NEAR(focus[1], centre.y, 0.01);
+    EXPECT_NEAR(focus[2], centre.z, 0.01);
+
+    // The example's breakout (60-80 m) is a zone of the analysis: the next zone from 42 m.
+    const auto& zones = well.analysis->zones;
+    ASSERT_FALSE(zones.empty());
+    ASSERT_TRUE(window.navigator().nextZone());
+    const reconstruction::Zone* expected = nullptr;
+    for (const auto& zone : zones)
+        if (zone.firstSection > row) {
+            expected = &zone;
+            break;
+        }
+    ASSERT_NE(expected, nullptr);
+    EXPECT_EQ(window.model().currentRow(), expected->firstSection);
+    EXPECT_DOUBLE_EQ(window.model().currentDepth_m(),
+                     well.geometry->table().depth_m[expected->firstSection]);
+    ASSERT_TRUE(window.navigator().previousZone() || expected == &zones.front());
+}
+
+TEST_F(DesktopWindowTest, CancelsAFourKilometreLoadWithinATenthOfASecond) {
+    const auto log = test::syntheticLog("example", 4000.0, 0.01);
+    app::MainWindow window;
+    window.resize(800, 600);
+    window.show();
+    window.openWell(QString::fromStdString(log.string()), app::LoadOptions{});
+    // While the log is being read: the bar shows the fraction read.
+    ASSERT_TRUE(test::waitUntil([&] { return window.loadProgress()->value() > 0; }, 20000))
+        << "progress " << window.loadProgress()->value() << ", loading " << window.loading();
+    EXPECT_TRUE(window.loadProgress()->isVisible());
+    EXPECT_TRUE(window.loading());
+    const int progress = window.loadProgress()->value();
+    EXPECT_LT(progress, window.loadProgress()->maximum());
+    QElapsedTimer clock;
+    clock.start();
+    window.cancelLoading();
+    const qint64 took = clock.elapsed();
+    EXPECT_LT(took, 100) << "cancelling took " << took << " ms";
+    EXPECT_FALSE(window.loading());
+    EXPECT_EQ(window.wellCount(), 0u);
+    EXPECT_EQ(window.model().wellCount(), 0);
+    EXPECT_FALSE(window.loadProgress()->isVisible());
+    EXPECT_TRUE(window.statusText().contains("cancelled")) << window.statusText().toStdString();
+    // Its worker stops at the end of the block it was reading, off the window's thread.
+    EXPECT_TRUE(test::waitUntil([&] { return window.retiredLoadsRunning() == 0; }, 5000));
+}
+
+TEST_F(DesktopWindowTest, ABadFileOpensAnErrorDialogNamingTheFileAndLine) {
+    const auto bad = test::scratch("desktop_bad.txt");
+    { std::ofstream(bad) << "1 2 3 4 5 6 7 8 9 10\n2 2 3\n3 2 3 4 5 6 7 8 9 10\n"; }
+    app::MainWindow window;
+    window.show();
+    window.openWell(QString::fromStdString(bad.string()), app::LoadOptions{});
+    QMessageBox* dialog = nullptr;
+    ASSERT_TRUE(test::waitUntil(
+        [&] {
+            dialog = window.findChild<QMessageBox*>("loadError");
+            return dialog != nullptr && dialog->isVisible();
+        },
+        30000))
+        << "no error dialog";
+    EXPECT_TRUE(dialog->text().contains(QString::fromStdString(bad.string() + ":2")))
+        << dialog->text().toStdString();
+    EXPECT_TRUE(dialog->windowTitle().contains("desktop_bad.txt"));
+    // The wells dock says it failed; the warnings pane shows the reason.
+    auto* wells = window.findChild<app::WellsDock*>("wells");
+    ASSERT_NE(wells, nullptr);
+    EXPECT_EQ(wells->tree()->topLevelItem(0)->text(app::WellsDock::State), "failed");
+    auto* warnings = window.findChild<app::WarningsDock*>("warnings");
+    ASSERT_NE(warnings, nullptr);
+    EXPECT_TRUE(warnings->text().contains(QString::fromStdString(bad.string() + ":2")));
+    dialog->accept();
+}
+
+TEST_F(DesktopWindowTest, TheWellsAndWarningsDocksDrawTheWellAndHideIt) {
+    app::MainWindow window;
+    openAndAnalyse(window, test::syntheticLog("example", 100.0, 0.05));
+    auto* wells = window.findChild<app::WellsDock*>("wells");
+    ASSERT_NE(wells, nullptr);
+    QTreeWidgetItem* item = wells->tree()->topLevelItem(0);
+    ASSERT_NE(item, nullptr);
+    EXPECT_EQ(item->text(app::WellsDock::State), "loaded");
+    EXPECT_EQ(item->text(app::WellsDock::Rows),
+              QString::number(window.model().well(0).geometry->table().rowCount()));
+    EXPECT_TRUE(item->text(app::WellsDock::BitSize).startsWith("215.9 mm"));
+    const QImage shown = wells->grab().toImage();
+    shown.save(QString::fromStdString(test::scratch("desktop_wells_dock.png").string()));
+    EXPECT_GT(test::drawnPixels(shown), 500u);
+
+    // Unticking the well hides it in 3D (the tube, its ticks and labels go; the legend and
+    // the caption stay) and in the model.
+    auto* gl = qobject_cast<QGLWidget*>(window.viewer()->getGLWidget());
+    ASSERT_NE(gl, nullptr);
+    window.viewer()->render();
+    const QImage beforeImage = gl->grabFrameBuffer();
+    const QColor background =
+        QColor::fromRgbF(scenegraph::kBackgroundColour[0], scenegraph::kBackgroundColour[1],
+                         scenegraph::kBackgroundColour[2]);
+    const std::size_t before = test::pixelsUnlike(beforeImage, background);
+    item->setCheckState(app::WellsDock::Name, Qt::Unchecked);
+    EXPECT_FALSE(window.model().well(0).visible);
+    window.viewer()->render();
+    const QImage afterImage = gl->grabFrameBuffer();
+    const std::size_t after = test::pixelsUnlike(afterImage, background);
+    beforeImage.save(QString::fromStdString(test::scratch("desktop_shown.png").string()));
+    afterImage.save(QString::fromStdString(test::scratch("desktop_hidden.png").string()));
+    EXPECT_LT(after * 10, before * 6) << before << " pixels drawn before, " << after << " after";
+
+    auto* warnings = window.findChild<app::WarningsDock*>("warnings");
+    ASSERT_NE(warnings, nullptr);
+    EXPECT_EQ(warnings->text(), "No warnings.");
+    EXPECT_GT(test::drawnPixels(warnings->grab().toImage()), 100u);
+}
