@@ -10,6 +10,7 @@
 #include <QFileInfo>
 #include <QFontDatabase>
 #include <QLabel>
+#include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPlainTextEdit>
@@ -31,6 +32,8 @@
 
 #include "app/desktop/analysis_job.h"
 #include "app/desktop/desk_model.h"
+#include "app/desktop/section_inspector_dock.h"
+#include "app/desktop/unrolled_image_dock.h"
 #include "app/scene_assembly.h"
 #include "app/well_viewer.h"
 #include "reconstruction/load/well_load_pipeline.h"
@@ -105,6 +108,7 @@ void MainWindow::buildMenus() {
     file->addSeparator();
     file->addAction("&Quit", this, &QWidget::close, QKeySequence::Quit);
     QMenu* view = menuBar()->addMenu("&View");
+    view->setObjectName("viewMenu");
     view->addAction("Well &warnings...", this, &MainWindow::showWarnings);
     view->addSeparator();
     view->addAction("View &all", this, [this] { viewAll(); });
@@ -430,7 +434,19 @@ void MainWindow::analyse(Well& well) {
 }
 
 void MainWindow::buildDocks() {
-    // The docks are views of m_model; each is a class of its own (app/desktop).
+    // The docks are views of m_model; each is a class of its own (app/desktop). Each dock's
+    // show/hide action goes in View > Docks.
+    QMenu* docks = menuBar()->findChild<QMenu*>("docksMenu");
+    if (!docks) {
+        docks = menuBar()->findChild<QMenu*>("viewMenu")->addMenu("&Docks");
+        docks->setObjectName("docksMenu");
+    }
+    auto* inspector = new SectionInspectorDock(m_model, this);
+    addDockWidget(Qt::RightDockWidgetArea, inspector);
+    docks->addAction(inspector->toggleViewAction());
+    auto* unrolled = new UnrolledImageDock(m_model, this);
+    addDockWidget(Qt::RightDockWidgetArea, unrolled);
+    docks->addAction(unrolled->toggleViewAction());
 }
 
 void MainWindow::wellDone() {
