@@ -74,13 +74,14 @@ QList<QPointF> spoke(double angle_deg, double radius_mm) {
     return {QPointF(angle_deg, 0.0), QPointF(angle_deg, radius_mm)};
 }
 
-// The radial axis's end: the farthest thing drawn, with room, to a round 10 mm.
+// The radial axis's end: the farthest thing drawn, with room, to a round 40 mm (four rings of a
+// multiple of 10 mm).
 double radialRange(const reconstruction::SectionOutline& o,
                    const std::vector<PolarPoint>& ellipse) {
     double r = std::isfinite(o.bitRadius_mm) ? o.bitRadius_mm : 0.0;
     for (const auto* points : {&o.spline, &o.pads, &ellipse})
         for (const PolarPoint& p : *points) r = std::max(r, p.radius_mm);
-    return r > 0.0 ? 10.0 * std::ceil(r * 1.08 / 10.0) : 150.0;
+    return r > 0.0 ? 40.0 * std::ceil(r * 1.05 / 40.0) : 160.0;
 }
 
 }  // namespace
@@ -136,7 +137,7 @@ void SectionInspectorDock::buildChart() {
     m_chart->addAxis(m_angle, QPolarChart::PolarOrientationAngular);
     m_radius = new QValueAxis;
     m_radius->setLabelFormat("%.0f");
-    m_radius->setTickCount(4);
+    m_radius->setTickCount(5);
     m_chart->addAxis(m_radius, QPolarChart::PolarOrientationRadial);
     addSeries(new QLineSeries, "bit size", QColor(150, 150, 150), 1.5)
         ->setPen(QPen(QColor(150, 150, 150), 1.5, Qt::DashLine));
@@ -184,11 +185,14 @@ void SectionInspectorDock::refresh() {
     const DeskWell* well = m_model->current();
     m_outline = reconstruction::SectionOutline{};
     if (well && well->geometry) {
-        const auto reference = well->geometry->holeAzimuthKnown()
+        // North where it is known, else the high side (an inclined hole without azimuth whose
+        // arm 1 came from RB).
+        const std::size_t row = m_model->currentRow();
+        const auto reference = reconstruction::referenceKnown(*well->geometry, row,
+                                                              reconstruction::AngleReference::North)
                                    ? reconstruction::AngleReference::North
                                    : reconstruction::AngleReference::HighSide;
-        m_outline = reconstruction::sectionOutline(*well->geometry, m_model->currentRow(),
-                                                   reference, kSplineSamples);
+        m_outline = reconstruction::sectionOutline(*well->geometry, row, reference, kSplineSamples);
     }
     showOutline();
     showNumbers();
@@ -227,7 +231,7 @@ void SectionInspectorDock::showOutline() {
     if (well && well->geometry) {
         title = o.reference == reconstruction::AngleReference::North
                     ? "clockwise from north"
-                    : "clockwise from the high side (hole azimuth unknown)";
+                    : "clockwise from the high side (no north here)";
         if (!o.measured) title += ": no data";
     }
     m_chart->setTitle(title);
@@ -276,9 +280,12 @@ void SectionInspectorDock::showNumbers() {
         QString shown = QString::fromStdString(text);
         // An empty field: a section without data, an angle that depends on an unknown hole
         // azimuth, or a round section's axis and a centred tool's offset direction.
+        const bool axisAngle = name == "major_azimuth_deg" || name == "major_from_high_side_deg";
+        const bool elongatedAxis =
+            std::isfinite(r.majorAzimuth_deg) || std::isfinite(r.majorFromHighSide_deg);
         if (shown.isEmpty())
             shown = noData ? "no data"
-                           : (azimuthUnknown && name == "major_azimuth_deg" ? "unknown" : "none");
+                           : (azimuthUnknown && axisAngle && elongatedAxis ? "unknown" : "none");
         it->second->setText(shown);
     }
 }

@@ -9,6 +9,7 @@
 #include <QLabel>
 #include <QMouseEvent>
 #include <QPixmap>
+#include <QSignalBlocker>
 #include <QVBoxLayout>
 #include <QWheelEvent>
 #include <QtCharts/QChart>
@@ -148,11 +149,16 @@ void UnrolledImageDock::setWindowLength(double length_m) {
 
 void UnrolledImageDock::refresh() {
     const DeskWell* well = m_model->current();
-    if (well && well->geometry) {
-        // Without a hole azimuth there is no north to count from.
-        const bool azimuthKnown = well->geometry->holeAzimuthKnown();
-        if (!azimuthKnown) m_reference->setCurrentIndex(1);
-        m_reference->setEnabled(azimuthKnown);
+    if (well && well->geometry && well->geometry.get() != m_shown) {
+        // A new well starts from north where its current section has one, else from the high
+        // side (an inclined hole without azimuth, arm 1 from RB).
+        m_shown = well->geometry.get();
+        const QSignalBlocker block(m_reference);
+        m_reference->setCurrentIndex(
+            reconstruction::referenceKnown(*well->geometry, m_model->currentRow(),
+                                           reconstruction::AngleReference::North)
+                ? 0
+                : 1);
     }
     placeWindow();
     showCurrentDepth();
@@ -218,7 +224,15 @@ void UnrolledImageDock::drawImage() {
     QBrush brush(m_picture);
     brush.setTransform(QTransform::fromTranslate(plot.left(), plot.top()));
     m_chart->setPlotAreaBackgroundBrush(brush);
-    m_chart->setTitle(QString("%1: radius - %2").arg(well->name, gaugeText));
+    QString title = QString("%1: radius - %2").arg(well->name, gaugeText);
+    QString tip;
+    if (!well->geometry->holeAzimuthKnown()) {
+        title += " (no hole azimuth)";
+        tip = QString("The hole azimuth is unknown: rows without a %1 are left blank")
+                  .arg(north ? "north (arm 1 from RB)" : "high side (arm 1 from P1AZ)");
+    }
+    m_chart->setTitle(title);
+    m_view->setToolTip(tip);
     m_drawing = false;
 }
 
@@ -230,7 +244,9 @@ void UnrolledImageDock::clicked(const QPointF& position) {
     m_model->setCurrentDepth(value.y());
     double angle = value.x();
     if (reference() == reconstruction::AngleReference::HighSide) {
-        if (!well->geometry->holeAzimuthKnown()) return;
+        if (!reconstruction::referenceKnown(*well->geometry, m_model->currentRow(),
+                                            reconstruction::AngleReference::North))
+            return;
         // From the high side to north at the section clicked.
         const reconstruction::SectionFrame& frame = well->geometry->frame(m_model->currentRow());
         angle -= reconstruction::angleFromReference_deg(

@@ -70,7 +70,8 @@ private:
     QImage m_picture;
     double m_window_m = kDefaultWindow_m;
     double m_top_m = 0.0, m_bottom_m = 0.0;
-    bool m_drawing = false;  // re-entry guard: a new background can move the plot area
+    const void* m_shown = nullptr;  // the geometry shown, to tell a new well
+    bool m_drawing = false;         // re-entry guard: a new background can move the plot area
 };
 
 }  // namespace caliper3d::app

@@ -42,4 +42,11 @@ double arm1Angle_deg(const SectionFrame& frame, AngleReference reference) {
     return angleFromReference_deg(frame, frame.arm1, reference);
 }
 
+bool referenceKnown(const WellGeometry& g, std::size_t row, AngleReference reference) {
+    if (g.holeAzimuthKnown() || !(g.path()[row].inc_deg > 0.0)) return true;
+    const bool fromRelativeBearing =
+        g.orientation(row) == WellGeometry::Orientation::RelativeBearing;
+    return (reference == AngleReference::HighSide) == fromRelativeBearing;
+}
+
 }  // namespace caliper3d::reconstruction

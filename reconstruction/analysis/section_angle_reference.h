@@ -1,6 +1,9 @@
 #pragma once
 
+#include <cstddef>
+
 #include "reconstruction/section/section_frame.h"
+#include "reconstruction/well_geometry.h"
 
 namespace caliper3d::reconstruction {
 
@@ -25,5 +28,11 @@ double arm1Angle_deg(const SectionFrame& frame, AngleReference reference);
 // Clockwise angle (degrees, [0, 360)) of the in-plane direction `d` from `reference`; NaN when
 // `d` has (almost) no component in the plane.
 double angleFromReference_deg(const SectionFrame& frame, const Ned& d, AngleReference reference);
+
+// Whether `reference` is known on `row`: always, unless the hole is inclined and its azimuth
+// unknown (docs/conventions.md, "Hole azimuth"); then arm 1 placed from RB has a high side but
+// no north, and arm 1 placed from P1AZ (or taken as north) a north but no high side, as the
+// report leaves the major axis's azimuth or its angle from the high side empty.
+bool referenceKnown(const WellGeometry& geometry, std::size_t row, AngleReference reference);
 
 }  // namespace caliper3d::reconstruction

@@ -65,12 +65,12 @@ SectionOutline sectionOutline(const WellGeometry& g, std::size_t row, AngleRefer
     const SectionFrame& frame = g.frame(row);
     out.arm1Angle_deg = arm1Angle_deg(frame, reference);
     out.bitRadius_mm = g.bitRadius_mm(row);
-    if (g.holeAzimuthKnown())
+    if (referenceKnown(g, row, AngleReference::North))
         out.northAngle_deg = angleFromReference_deg(
             frame, referenceDirection(frame.tangent, AngleReference::North), reference);
     const Ned& t = frame.tangent;
     // Within 0.06 degrees of vertical the high side is rounding noise (as for an azimuth).
-    if (std::hypot(t.x, t.y) >= 1e-3)
+    if (std::hypot(t.x, t.y) >= 1e-3 && referenceKnown(g, row, AngleReference::HighSide))
         out.highSideAngle_deg = angleFromReference_deg(
             frame, referenceDirection(t, AngleReference::HighSide), reference);
     out.measured = g.measured(row);

@@ -34,9 +34,11 @@ struct SectionOutline {
     std::vector<PolarPoint> pads;    // the arm tips, arm 1 first, missing arms repaired
     std::vector<PolarPoint> spline;  // the closed spline through the pads, at equal angles
     OutlineEllipse ellipse;
-    double northAngle_deg = io::kNaN;     // where north lies; NaN: hole azimuth unknown
-    double highSideAngle_deg = io::kNaN;  // where the high side lies; NaN: vertical hole
-    double bitRadius_mm = io::kNaN;       // the log's bit size at the row, halved
+    // Where north and the high side lie; NaN where not known (referenceKnown) and for the high
+    // side of a vertical hole.
+    double northAngle_deg = io::kNaN;
+    double highSideAngle_deg = io::kNaN;
+    double bitRadius_mm = io::kNaN;  // the log's bit size at the row, halved
 };
 
 // The outline of `row`'s section from the geometry's own knots, spline and frame (the shape the

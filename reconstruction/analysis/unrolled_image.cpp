@@ -29,7 +29,8 @@ std::optional<std::size_t> nearestRow(const std::vector<double>& depth_m, double
 void fillRow(const WellGeometry& g, std::size_t row, double gauge_mm,
              const UnrolledImageRequest& request, float* out) {
     const auto columns = static_cast<std::size_t>(request.columns);
-    if (!g.measured(row) || !std::isfinite(gauge_mm)) {
+    if (!g.measured(row) || !std::isfinite(gauge_mm) ||
+        !referenceKnown(g, row, request.reference)) {
         std::fill(out, out + columns, kNoData);
         return;
     }

@@ -21,7 +21,8 @@ struct UnrolledImageRequest {
 // The departure of the wall's radius from a gauge radius (the bit's), millimetres, at
 // `rows` x `columns` cells: row r is the depth band r of (top_m, bottom_m), top first; column c
 // the angle band c of [0, 360) clockwise from the reference. NaN where there is no data: beyond
-// the log, a section without data, no gauge.
+// the log, a section without data, no gauge, a row whose reference is not known
+// (referenceKnown: an inclined hole without an azimuth).
 struct UnrolledImage {
     double top_m = 0.0, bottom_m = 0.0;
     int rows = 0, columns = 0;

@@ -131,8 +131,12 @@ TEST(SectionOutlineTest, InclinedHoleMarksTheHighSideAndCanBeSeenFromIt) {
 }
 
 TEST(SectionOutlineTest, UnknownHoleAzimuthHasNoNorthAndNoDataHasNoShape) {
+    // Inclined 20 degrees, no hole azimuth, arm 1 placed from RB: a high side but no north.
     io::SectionTable t = ellipseTable(8, 240.0, 240.0, 0.0, 10.0, 20.0, 0.0);
     t.holeAzimuth = io::SectionTable::HoleAzimuth::Unknown;
+    t.p1az_deg.clear();
+    t.hazi_deg.clear();
+    t.rb_deg.assign(t.rowCount(), 30.0);
     for (int k = 0; k < 6; ++k) t.radii(7)[k] = io::kNaN;  // 2 of 8 arms: no data
     const WellGeometry g = geometryOf(std::move(t));
     const SectionOutline o = sectionOutline(g, 7, AngleReference::HighSide);
@@ -142,4 +146,21 @@ TEST(SectionOutlineTest, UnknownHoleAzimuthHasNoNorthAndNoDataHasNoShape) {
     EXPECT_TRUE(o.pads.empty());
     EXPECT_TRUE(o.spline.empty());
     EXPECT_TRUE(sectionOutline(g, 6, AngleReference::HighSide).measured);
+    EXPECT_NEAR(sectionOutline(g, 6, AngleReference::HighSide).arm1Angle_deg, 30.0, 1e-9);
+}
+
+TEST(SectionOutlineTest, UnknownHoleAzimuthWithPadAzimuthHasANorthButNoHighSide) {
+    io::SectionTable t = ellipseTable(8, 240.0, 240.0, 0.0, 25.0, 5.0, 0.0);
+    t.holeAzimuth = io::SectionTable::HoleAzimuth::Unknown;
+    t.hazi_deg.clear();
+    const WellGeometry g = geometryOf(std::move(t));
+    const SectionOutline o = sectionOutline(g, 3, AngleReference::North);
+    EXPECT_NEAR(o.northAngle_deg, 0.0, 1e-9);
+    EXPECT_TRUE(std::isnan(o.highSideAngle_deg));
+    // Arm 1's horizontal projection points at 25; in the plane tilted 5 degrees about east its
+    // angle from the plane's north is atan(tan 25 cos 5) = 24.9164.
+    const double inPlane =
+        glm::degrees(std::atan(std::tan(glm::radians(25.0)) * std::cos(glm::radians(5.0))));
+    EXPECT_NEAR(o.arm1Angle_deg, inPlane, 1e-9);
+    EXPECT_NEAR(o.arm1Angle_deg, 24.9164, 1e-4);
 }

@@ -121,3 +121,15 @@ TEST(UnrolledImageTest, RowsWithoutDataBeyondTheLogOrWithoutGaugeAreNaN) {
         unrolledImage(gauge, window(101.0, 102.0, 2, 4), [](std::size_t) { return 110.0; });
     EXPECT_NEAR(withGauge.at(1, 2), 5.0, 1e-4);
 }
+
+TEST(UnrolledImageTest, RowsWithoutTheReferenceAreNaNWhenTheHoleAzimuthIsUnknown) {
+    // Inclined 5 degrees without a hole azimuth, arm 1 placed from P1AZ: north but no high side.
+    io::SectionTable t = ellipseTable(8, 230.0, 230.0, 0.0, 5.0, 0.0);
+    t.holeAzimuth = io::SectionTable::HoleAzimuth::Unknown;
+    t.hazi_deg.clear();
+    const WellGeometry g = geometryOf(std::move(t));
+    UnrolledImageRequest request = window(101.0, 102.0, 2, 8);
+    EXPECT_NEAR(unrolledImage(g, request).at(1, 3), 115.0 - 107.95, 1e-4);
+    request.reference = AngleReference::HighSide;
+    EXPECT_TRUE(std::isnan(unrolledImage(g, request).at(1, 3)));
+}
