@@ -29,7 +29,8 @@ namespace {
 
 constexpr double kMinWindow_m = 1.0;
 constexpr double kZoomStep = 1.25;
-constexpr int kMaxColumns = 720;  // half a degree: finer than any caliper's arms
+constexpr int kMaxColumns = 720;
+constexpr double kTickSpacing_px = 30.0;  // half a degree: finer than any caliper's arms
 // The window follows the current depth once it comes this close to either end (a fraction of
 // the window), so that a click inside the window does not move the picture under the pointer.
 constexpr double kFollowMargin = 0.1;
@@ -129,7 +130,10 @@ void UnrolledImageDock::buildChart() {
     m_view = new QChartView(m_chart);
     m_view->setMinimumSize(220, 240);
     m_view->viewport()->installEventFilter(this);
-    connect(m_chart, &QChart::plotAreaChanged, this, [this](const QRectF&) { drawImage(); });
+    connect(m_chart, &QChart::plotAreaChanged, this, [this](const QRectF&) {
+        placeWindow();
+        drawImage();
+    });
 }
 
 reconstruction::AngleReference UnrolledImageDock::reference() const {
@@ -180,6 +184,17 @@ void UnrolledImageDock::placeWindow() {
         m_bottom_m = m_top_m + length;
     }
     m_depth->setRange(m_top_m, m_bottom_m);
+    // Ticks at round depths: the smallest 1-2-5 step that leaves a label room (kTickSpacing_px)
+    // and gives at most ten.
+    const double height = m_chart->plotArea().height();
+    const double ticks = std::clamp(height > 0.0 ? height / kTickSpacing_px : 5.0, 2.0, 10.0);
+    double step = std::pow(10.0, std::floor(std::log10(std::max(length, 1e-3) / ticks)));
+    for (double factor : {2.0, 2.5, 2.0, 2.0, 2.5, 2.0})
+        if (length / step > ticks) step *= factor;
+    m_depth->setTickType(QValueAxis::TicksDynamic);
+    m_depth->setTickAnchor(0.0);
+    m_depth->setTickInterval(step);
+    m_depth->setLabelFormat(step < 1.0 ? "%.1f" : "%.0f");
 }
 
 void UnrolledImageDock::showCurrentDepth() {
@@ -224,12 +239,12 @@ void UnrolledImageDock::drawImage() {
     QBrush brush(m_picture);
     brush.setTransform(QTransform::fromTranslate(plot.left(), plot.top()));
     m_chart->setPlotAreaBackgroundBrush(brush);
-    QString title = QString("%1: radius - %2").arg(well->name, gaugeText);
-    QString tip;
+    QString title = QString("radius - %1").arg(gaugeText);
+    QString tip = well->name;
     if (!well->geometry->holeAzimuthKnown()) {
         title += " (no hole azimuth)";
-        tip = QString("The hole azimuth is unknown: rows without a %1 are left blank")
-                  .arg(north ? "north (arm 1 from RB)" : "high side (arm 1 from P1AZ)");
+        tip += QString(": the hole azimuth is unknown, rows without a %1 are left blank")
+                   .arg(north ? "north (arm 1 from RB)" : "high side (arm 1 from P1AZ)");
     }
     m_chart->setTitle(title);
     m_view->setToolTip(tip);
