@@ -8,6 +8,7 @@
 #include <QFileInfo>
 #include <QInputDialog>
 #include <QLabel>
+#include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressBar>
@@ -32,6 +33,8 @@
 #include "app/desktop/analysis_job.h"
 #include "app/desktop/desk_model.h"
 #include "app/desktop/retired_loads.h"
+#include "app/desktop/section_inspector_dock.h"
+#include "app/desktop/unrolled_image_dock.h"
 #include "app/desktop/warnings_dock.h"
 #include "app/desktop/well_navigator.h"
 #include "app/desktop/wells_dock.h"
@@ -128,6 +131,7 @@ void MainWindow::buildMenus() {
 
 void MainWindow::buildViewMenu() {
     QMenu* view = menuBar()->addMenu("&View");
+    view->setObjectName("viewMenu");
     view->addAction("Well &warnings...", this, &MainWindow::showWarnings);
     view->addSeparator();
     view->addAction(
@@ -175,6 +179,7 @@ void MainWindow::buildViewMenu() {
         exaggeration->addAction(QString("x%1").arg(factor), this,
                                 [this, factor] { setExaggeration(factor); });
     m_docksMenu = view->addMenu("&Docks");
+    m_docksMenu->setObjectName("docksMenu");
 }
 
 void MainWindow::goToDepthDialog() {
@@ -639,7 +644,9 @@ void MainWindow::analyse(Well& well) {
 }
 
 void MainWindow::buildDocks() {
-    // The docks are views of m_model; each is a class of its own (app/desktop).
+    // The docks are views of m_model; each is a class of its own (app/desktop). Left: the
+    // wells and the log track; right: the section and the breakouts; below: the unrolled
+    // image, with the warnings in a tab beside it.
     auto* wells = new WellsDock(*m_model, this);
     addDockWidget(Qt::LeftDockWidgetArea, wells);
     connect(wells, &WellsDock::visibilityToggled, this, &MainWindow::setWellVisible);
@@ -648,9 +655,15 @@ void MainWindow::buildDocks() {
         colour.quantity = quantity.toStdString();
         restyleWell(well, colour);
     });
+    auto* inspector = new SectionInspectorDock(m_model, this);
+    addDockWidget(Qt::RightDockWidgetArea, inspector);
+    auto* unrolled = new UnrolledImageDock(m_model, this);
+    addDockWidget(Qt::BottomDockWidgetArea, unrolled);
     m_warningsDock = new WarningsDock(*m_model, this);
-    addDockWidget(Qt::BottomDockWidgetArea, m_warningsDock);
-    for (QDockWidget* dock : std::initializer_list<QDockWidget*>{wells, m_warningsDock})
+    tabifyDockWidget(unrolled, m_warningsDock);
+    unrolled->raise();
+    for (QDockWidget* dock :
+         std::initializer_list<QDockWidget*>{wells, inspector, unrolled, m_warningsDock})
         m_docksMenu->addAction(dock->toggleViewAction());
 }
 

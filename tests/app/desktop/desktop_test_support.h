@@ -22,12 +22,14 @@ namespace caliper3d::test {
 // SoQt); false when there is no display (the caller skips).
 inline bool ensureGuiApplication() {
     if (!app::haveDisplay()) return false;
-    if (!QApplication::instance()) {
+    static bool made = false;
+    if (!made) {
         static int argc = 1;
         static char name[] = "desktop_tests";
         static char* argv[] = {name, nullptr};
-        new QApplication(argc, argv);  // lives as long as the test binary
+        if (!QApplication::instance()) new QApplication(argc, argv);  // lives as long as the tests
         app::initGui();
+        made = true;
     }
     return true;
 }
