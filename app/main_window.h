@@ -29,6 +29,7 @@ namespace caliper3d::app {
 
 class AnalysisJob;
 class DeskModel;
+class FileMenu;
 class WellViewer;
 
 // The desktop window: an SoQtExaminerViewer in the centre, a status bar that
@@ -70,6 +71,16 @@ public:
     const reconstruction::ColourLegend* legend() const;
     // The wells and the current depth every view follows.
     DeskModel& model() const { return *m_model; }
+    // The files of the wells shown, with their surveys and wellheads.
+    std::vector<WellSource> wellSources() const;
+    // What every well is drawn with (radial exaggeration, colouring): all a newly opened well
+    // takes from those shown.
+    const LoadOptions& look() const { return m_lastOptions; }
+    // File menu, recent files, drops, exports, pictures, reports (app/desktop/file_menu.h).
+    FileMenu& files() const { return *m_files; }
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
 
 signals:
     void wellLoaded(int segments);  // once per well
@@ -97,6 +108,7 @@ private:
     void updateWarningsButton();
 
     DeskModel* m_model = nullptr;
+    FileMenu* m_files = nullptr;
     WellViewer* m_viewer = nullptr;
     QComboBox* m_colourBox = nullptr;
     std::unique_ptr<scenegraph::DetailLoader> m_detail;
