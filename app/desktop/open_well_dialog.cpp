@@ -89,12 +89,14 @@ void OpenWellDialog::buildDetected() {
     m_summary = new QLabel(this);
     m_summary->setObjectName("summary");
     m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_summary->setWordWrap(true);
     layout->addWidget(m_summary);
     m_curves = new QTableWidget(0, 4, this);
     m_curves->setObjectName("curves");
     m_curves->setHorizontalHeaderLabels({"Curve", "Unit", "Role", "Nulls"});
     m_curves->horizontalHeader()->setStretchLastSection(true);
     m_curves->verticalHeader()->hide();
+    m_curves->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 6);
     m_curves->setEditTriggers(QAbstractItemView::NoEditTriggers);
     layout->addWidget(m_curves, 1);
     m_error = new QLabel(this);
@@ -220,7 +222,19 @@ void OpenWellDialog::showInfo() {
     if (!info.holeAzimuth.empty())
         summary += "Hole azimuth: " + text(info.holeAzimuth).toHtmlEscaped() + "<br>";
     summary += QString("Warnings: %1").arg(info.diagnostics.warningCount);
+    constexpr std::size_t kWarningsShown = 4;
+    for (std::size_t i = 0; i < info.diagnostics.warnings.size() && i < kWarningsShown; ++i) {
+        const io::Warning& w = info.diagnostics.warnings[i];
+        summary += "<br>&nbsp;&nbsp;" + (w.line ? QString("line %1: ").arg(w.line) : QString()) +
+                   text(w.message).toHtmlEscaped();
+    }
+    if (info.diagnostics.warningCount > kWarningsShown)
+        summary += QString("<br>&nbsp;&nbsp;... and %1 more")
+                       .arg(info.diagnostics.warningCount - kWarningsShown);
     m_summary->setText(summary);
+    m_radii->setPlaceholderText("detected: " + text(info.armSource));
+    // The arm count is read from column text only; a LAS names its curves.
+    m_arms->setEnabled(info.format.rfind("LAS", 0) != 0);
     m_bitSize->setPlaceholderText(std::isfinite(info.bitSize_mm)
                                       ? "the log's: " + bitSizeText(info)
                                       : "none in the log: e.g. 8.5in or 215.9mm");
