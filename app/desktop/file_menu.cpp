@@ -7,6 +7,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
+#include <QGLWidget>
 #include <QMenu>
 #include <QMessageBox>
 #include <QProgressDialog>
@@ -248,6 +249,9 @@ void FileMenu::savePicture() {
     const std::optional<QSize> size = askPictureSize(&m_window, viewer->getGLWidget()->size());
     if (!size) return;
     try {
+        // The offscreen renderer's EGL context cannot be made current on this thread while the
+        // viewer's GLX context is: release it (the viewer makes it current again to draw).
+        if (auto* gl = qobject_cast<QGLWidget*>(viewer->getGLWidget())) gl->doneCurrent();
         const QImage image =
             renderPicture(viewer->getSceneGraph(), *viewer->getCamera(), m_window.legend(), *size);
         if (!image.save(path, "PNG")) throw std::runtime_error("cannot write the file");
