@@ -23,6 +23,22 @@ constexpr const char* kAcceptedExtensions = ".iv, .iv.gz, .glb, .ply, .stl or .o
 
 using Seconds = std::chrono::duration<double>;
 
+// --progress: "progress DONE/TOTAL steps" lines on stderr as the export goes, for the window's
+// progress bar (a step: a well read, a well built, the file written). Off: prints nothing.
+class ProgressLines {
+public:
+    ProgressLines(bool on, int total) : m_on(on), m_total(total) { step(0); }
+    void step(int done) const {
+        if (!m_on) return;
+        std::fprintf(stderr, "progress %d/%d steps\n", done, m_total);
+        std::fflush(stderr);
+    }
+
+private:
+    bool m_on;
+    int m_total;
+};
+
 bool endsWith(const std::string& text, const std::string& tail) {
     return text.size() > tail.size() &&
            text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
@@ -30,11 +46,18 @@ bool endsWith(const std::string& text, const std::string& tail) {
 
 // The Open Inventor export: the scene the window builds, or every level streamed.
 int exportIv(const std::vector<WellSource>& sources, const LoadOptions& options,
-             const std::string& out, bool full, const scenegraph::IvExportOptions& ivOptions) {
+             const std::string& out, bool full, const scenegraph::IvExportOptions& ivOptions,
+             bool progress) {
     scenegraph::initCoin();
     const auto start = std::chrono::steady_clock::now();
-    AssembledScene scene = assembleScene(sources, options);
+    // Steps: the wells read, the scene built, the file written.
+    const ProgressLines steps(progress, 3);
+    AssembledScene scene =
+        assembleScene(sources, options,
+                      [&steps](std::vector<std::shared_ptr<const reconstruction::WellGeometry>>&,
+                               double&) { steps.step(1); });
     if (scene.wells == 0) return kExitBadInput;
+    steps.step(2);
     const auto built = std::chrono::steady_clock::now();
     if (full) {
         std::vector<const reconstruction::WellGeometry*> wells;
@@ -43,6 +66,7 @@ int exportIv(const std::vector<WellSource>& sources, const LoadOptions& options,
     } else {
         scenegraph::writeIv(scene.root.get(), out, ivOptions);
     }
+    steps.step(3);
     const auto written = std::chrono::steady_clock::now();
     std::printf("wrote %s (%d well%s): read and built in %.2f s, written in %.2f s\n", out.c_str(),
                 scene.wells, scene.wells == 1 ? "" : "s", Seconds(built - start).count(),
@@ -53,8 +77,13 @@ int exportIv(const std::vector<WellSource>& sources, const LoadOptions& options,
 // A mesh export: no Coin nodes, each well read, its segments meshed at one level into the
 // writer, and the well freed before the next is read.
 int exportMesh(const std::vector<WellSource>& sources, const LoadOptions& options,
-               const std::string& out, scenegraph::MeshFormat format, bool full, bool binary) {
+               const std::string& out, scenegraph::MeshFormat format, bool full, bool binary,
+               bool progress) {
     const auto start = std::chrono::steady_clock::now();
+    // Steps: each well read, each well meshed, the file written.
+    const int total = 2 * static_cast<int>(sources.size()) + 1;
+    const ProgressLines steps(progress, total);
+    int done = 0;
     const reconstruction::Wellhead origin = reconstruction::sceneOrigin(sources);
     scenegraph::MeshFileWriter writer(format, binary);
     const scenegraph::MeshDetail detail =
@@ -64,12 +93,14 @@ int exportMesh(const std::vector<WellSource>& sources, const LoadOptions& option
         try {
             const reconstruction::LoadedWell loaded =
                 reconstruction::loadWell(source, options, origin);
+            steps.step(++done);
             // Drawn as asked (--colour-by, --exaggerate); each well over its own colour range,
             // as it is freed before the next is read.
             const reconstruction::WellGeometry styled = loaded.geometry->restyled(
                 options.radialExaggeration,
                 reconstruction::makeWallColouring(*loaded.geometry, options.colour));
             writer.addWell(styled, std::filesystem::path(source.path).stem().string(), detail);
+            steps.step(++done);
             ++wells;
             std::printf("%s: %zu sections, %zu segments, %zu warnings\n", source.path.c_str(),
                         loaded.table->rowCount(), loaded.geometry->segmentCount(),
@@ -81,6 +112,7 @@ int exportMesh(const std::vector<WellSource>& sources, const LoadOptions& option
                                      "segment by segment), need far less");
         } catch (const std::exception& e) {
             ++failures;
+            done = 2 * (wells + failures);
             std::fprintf(stderr, "caliper3d: %s\n", e.what());
         }
     }
@@ -88,6 +120,7 @@ int exportMesh(const std::vector<WellSource>& sources, const LoadOptions& option
     const scenegraph::MeshExportCounts counts = writer.counts();
     const auto built = std::chrono::steady_clock::now();
     writer.write(out);
+    steps.step(total);
     const auto written = std::chrono::steady_clock::now();
     std::printf(
         "wrote %s (%d well%s, %zu meshes, %zu vertices, %zu triangles): read and built in "
@@ -140,6 +173,10 @@ int runExport(const QStringList& args) {
                      "full detail (.iv: every level, streamed segment by segment; mesh formats: "
                      "the full level only, the whole file held in memory).",
                      "LEVELS", "shown"});
+        p.addOption({"progress",
+                     "Print 'progress DONE/TOTAL steps' lines on stderr as the export goes (a "
+                     "step: a well read, a well built, the file written): the window's progress "
+                     "bar reads them."});
         addInputOptions(p);
         addColourOptions(p);
         addWellSourceOptions(p);
@@ -169,12 +206,14 @@ int runExport(const QStringList& args) {
         options.colour = colourRequestFrom(p);
         const std::vector<WellSource> sources = wellSourcesFrom(p, verb.positional());
         const bool full = detail == "full";
-        if (mesh) return exportMesh(sources, options, out, *mesh, full, !verb.isSet("ascii"));
+        const bool progress = verb.isSet("progress");
+        if (mesh)
+            return exportMesh(sources, options, out, *mesh, full, !verb.isSet("ascii"), progress);
 
         scenegraph::IvExportOptions ivOptions;
         ivOptions.binary = !verb.isSet("ascii");
         ivOptions.gzip = verb.isSet("gzip") || gzipName;
-        return exportIv(sources, options, out, full, ivOptions);
+        return exportIv(sources, options, out, full, ivOptions, progress);
     });
 }
 

@@ -4,7 +4,6 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QElapsedTimer>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QInputDialog>
 #include <QLabel>
@@ -12,6 +11,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressBar>
+#include <QPlainTextEdit>
 #include <QPushButton>
 #include <QStatusBar>
 #include <QTimer>
@@ -32,6 +32,7 @@
 
 #include "app/desktop/analysis_job.h"
 #include "app/desktop/desk_model.h"
+#include "app/desktop/file_menu.h"
 #include "app/desktop/retired_loads.h"
 #include "app/desktop/section_inspector_dock.h"
 #include "app/desktop/unrolled_image_dock.h"
@@ -43,7 +44,6 @@
 #include "reconstruction/load/well_load_pipeline.h"
 #include "scenegraph/camera_setup.h"
 #include "scenegraph/detail_loader.h"
-#include "scenegraph/iv_export.h"
 #include "scenegraph/section_pick.h"
 #include "scenegraph/segment_feeder.h"
 #include "scenegraph/view_overlay.h"
@@ -97,6 +97,18 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     buildMenus();
     buildViewMenu();
     buildDocks();
+    m_files->restoreLayout();  // after the docks: they are found by their objectName
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    m_files->saveLayout();
+    QMainWindow::closeEvent(event);
+}
+
+std::vector<WellSource> MainWindow::wellSources() const {
+    std::vector<WellSource> out;
+    for (const auto& well : m_wells) out.push_back(well->source);
+    return out;
 }
 
 MainWindow::~MainWindow() {
@@ -110,13 +122,7 @@ MainWindow::~MainWindow() {
 }
 
 void MainWindow::buildMenus() {
-    QMenu* file = menuBar()->addMenu("&File");
-    file->addAction(
-        "&Open well...", this, [this] { openDialog(false); }, QKeySequence::Open);
-    file->addAction("&Add well...", this, [this] { openDialog(true); });
-    file->addAction("&Export scene (.iv)...", this, &MainWindow::exportDialog);
-    file->addSeparator();
-    file->addAction("&Quit", this, &QWidget::close, QKeySequence::Quit);
+    m_files = new FileMenu(*this, menuBar()->addMenu("&File"));
     QToolBar* style = addToolBar("Style");
     style->setObjectName("style");
     style->addWidget(new QLabel(" Colour by ", style));
@@ -674,27 +680,14 @@ void MainWindow::wellDone() {
     emit allWellsLoaded();
 }
 
+// Through the Open dialog: the file's own options, only the look taken from the wells shown.
 void MainWindow::openDialog(bool add) {
-    const QString path =
-        QFileDialog::getOpenFileName(this, "Open caliper log", QString(),
-                                     "Caliper logs (*.txt *.las *.LAS *.csv);;All files (*)");
-    if (path.isEmpty()) return;
-    if (add)
-        addWell(path, m_lastOptions);
-    else
-        openWell(path, m_lastOptions);
+    m_files->openDialog(add);
 }
 
+// On a child process (ExportJob): the window stays responsive, the graph is not touched.
 void MainWindow::exportDialog() {
-    const QString path =
-        QFileDialog::getSaveFileName(this, "Export scene", "scene.iv", "Open Inventor (*.iv)");
-    if (path.isEmpty()) return;
-    try {
-        scenegraph::writeIv(m_sceneRoot, path.toStdString());
-        m_status->setText("Wrote " + path);
-    } catch (const std::exception& e) {
-        QMessageBox::warning(this, "Export failed", e.what());
-    }
+    m_files->exportDialog();
 }
 
 void MainWindow::setExaggeration(double factor) {

@@ -39,6 +39,7 @@ class DeskModel;
 class RetiredLoads;
 class WarningsDock;
 class WellNavigator;
+class FileMenu;
 class WellViewer;
 
 // The desktop window: an SoQtExaminerViewer in the centre, a status bar that
@@ -96,6 +97,16 @@ public:
     const reconstruction::ColourLegend* legend() const;
     // The wells and the current depth every view follows.
     DeskModel& model() const { return *m_model; }
+    // The files of the wells shown, with their surveys and wellheads.
+    std::vector<WellSource> wellSources() const;
+    // What every well is drawn with (radial exaggeration, colouring): all a newly opened well
+    // takes from those shown.
+    const LoadOptions& look() const { return m_lastOptions; }
+    // File menu, recent files, drops, exports, pictures, reports (app/desktop/file_menu.h).
+    FileMenu& files() const { return *m_files; }
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
 
 signals:
     void wellLoaded(int segments);  // once per well
@@ -135,6 +146,7 @@ private:
 
     DeskModel* m_model = nullptr;
     std::unique_ptr<RetiredLoads> m_retired;  // declared first: destroyed after the wells
+    FileMenu* m_files = nullptr;
     WellViewer* m_viewer = nullptr;
     WellNavigator* m_navigator = nullptr;
     WarningsDock* m_warningsDock = nullptr;

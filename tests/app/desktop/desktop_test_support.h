@@ -8,6 +8,8 @@
 #include <QColor>
 #include <QEventLoop>
 #include <QImage>
+#include <QSettings>
+#include <QString>
 #include <QTimer>
 #include <QWidget>
 
@@ -17,6 +19,18 @@
 #include "test_support.h"
 
 namespace caliper3d::test {
+
+// QSettings of every test here goes to a scratch folder, never the user's.
+inline QString scratchSettingsFolder() {
+    const std::filesystem::path folder = scratch("settings");
+    std::filesystem::create_directories(folder);
+    return QString::fromStdString(folder.string());
+}
+inline void useScratchSettings() {
+    const QString folder = scratchSettingsFolder();
+    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, folder);
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, folder);
+}
 
 // The one QApplication of the desktop tests (made by the first suite that needs it, with
 // SoQt); false when there is no display (the caller skips).
@@ -31,6 +45,7 @@ inline bool ensureGuiApplication() {
         app::initGui();
         made = true;
     }
+    useScratchSettings();
     return true;
 }
 

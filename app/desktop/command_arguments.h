@@ -1,0 +1,36 @@
+#pragma once
+
+#include <vector>
+
+#include <QStringList>
+
+#include "app/input_options.h"
+
+namespace caliper3d::app {
+
+// The window's wells turned back into the command line that loads them the same way, so a
+// child `caliper3d export` (or a recent file) reads them as the window did. Pure functions:
+// parseWellArguments(wellArguments(w, o)) gives back w and o.
+
+// The load options (addInputOptions, addColourOptions) as arguments: every option the
+// command line has, defaults included, numbers to full precision.
+QStringList loadOptionArguments(const LoadOptions& options);
+
+// loadOptionArguments, --survey and --wellhead once per file, then "--" and the files. Throws
+// std::invalid_argument when only some of the wells have a survey (or a wellhead): the
+// command line takes them for every file or for none.
+QStringList wellArguments(const std::vector<WellSource>& wells, const LoadOptions& options);
+
+// `caliper3d export` writing `wells` to `out`, with --progress.
+QStringList exportArguments(const std::vector<WellSource>& wells, const LoadOptions& options,
+                            const QString& out);
+
+// Files and options as the command line reads them (inputOptionsFrom, colourRequestFrom,
+// wellSourcesFrom). Throws UsageError for an unknown option or a malformed value.
+struct ParsedWells {
+    std::vector<WellSource> wells;
+    LoadOptions options;
+};
+ParsedWells parseWellArguments(const QStringList& arguments);
+
+}  // namespace caliper3d::app
