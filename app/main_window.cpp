@@ -30,7 +30,9 @@
 #include <Inventor/nodes/SoSeparator.h>
 
 #include "app/desktop/analysis_job.h"
+#include "app/desktop/breakouts_dock.h"
 #include "app/desktop/desk_model.h"
+#include "app/desktop/log_track_dock.h"
 #include "app/scene_assembly.h"
 #include "app/well_viewer.h"
 #include "reconstruction/load/well_load_pipeline.h"
@@ -431,6 +433,20 @@ void MainWindow::analyse(Well& well) {
 
 void MainWindow::buildDocks() {
     // The docks are views of m_model; each is a class of its own (app/desktop).
+    QMenu* view = nullptr;
+    for (QAction* menu : menuBar()->actions())
+        if (menu->text() == "&View") view = menu->menu();
+    auto* docks = view->findChild<QMenu*>("docksMenu");
+    if (!docks) {
+        docks = view->addMenu("&Docks");
+        docks->setObjectName("docksMenu");
+    }
+    auto* logTrack = new LogTrackDock(*m_model, this);
+    addDockWidget(Qt::LeftDockWidgetArea, logTrack);
+    docks->addAction(logTrack->toggleViewAction());
+    auto* breakouts = new BreakoutsDock(*m_model, this);
+    addDockWidget(Qt::RightDockWidgetArea, breakouts);
+    docks->addAction(breakouts->toggleViewAction());
 }
 
 void MainWindow::wellDone() {
