@@ -45,7 +45,9 @@ BreakoutsDock::BreakoutsDock(DeskModel& model, QWidget* parent)
     m_chart = new QPolarChart;
     m_chart->setAnimationOptions(QChart::NoAnimation);
     m_chart->setMargins(QMargins(2, 2, 2, 2));
-    m_chart->legend()->setAlignment(Qt::AlignBottom);
+    // The summary under the rose says what its lines are: the chart's own legend would
+    // cut their names short in a narrow dock.
+    m_chart->legend()->hide();
     // Azimuths clockwise from north at the top: the polar chart's own convention.
     auto* angular = new QValueAxis(m_chart);
     angular->setRange(0.0, 360.0);
@@ -64,7 +66,7 @@ BreakoutsDock::BreakoutsDock(DeskModel& model, QWidget* parent)
     m_summary->setObjectName("breakoutSummary");
     m_table = new QTableWidget(0, kColumns);
     m_table->setHorizontalHeaderLabels(
-        {"class", "top (m)", "bottom (m)", "length (m)", "azimuth", "SD", "dmax / dmin (mm)"});
+        {"class", "top m", "bottom m", "length m", "azimuth", "SD", "dmax / dmin mm"});
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
@@ -133,6 +135,7 @@ void BreakoutsDock::fillRose(const reconstruction::WellAnalysis& analysis) {
     const double largest_m = rose.largest_m();
     m_radial->setRange(0.0, largest_m > 0.0 ? largest_m * 1.1 : 1.0);
     m_radial->setLabelFormat(largest_m >= 5.0 ? "%.0f m" : "%.1f m");
+    m_radial->setLabelsVisible(largest_m > 0.0);  // no scale to read on an empty rose
     if (largest_m > 0.0) {
         // Each bin a wedge: its arc traced a degree at a time (a polar chart joins points
         // with straight lines), the next bin's radius reached along the shared edge.
@@ -146,8 +149,7 @@ void BreakoutsDock::fillRose(const reconstruction::WellAnalysis& analysis) {
         auto* area = new QAreaSeries(outline, centre);
         outline->setParent(area);
         centre->setParent(area);
-        area->setName(
-            QString("breakouts, metres a %1%2 bin").arg(rose.binWidth_deg).arg(QChar(0x00B0)));
+        area->setName(QString("m a %1%2").arg(rose.binWidth_deg).arg(QChar(0x00B0)));
         area->setBrush(classQColour(reconstruction::BoreholeClass::Breakout, 200));
         area->setPen(QPen(classQColour(reconstruction::BoreholeClass::Breakout).darker(150), 1));
         m_chart->addSeries(area);
@@ -156,8 +158,8 @@ void BreakoutsDock::fillRose(const reconstruction::WellAnalysis& analysis) {
     const reconstruction::BreakoutSummary& s = analysis.breakouts;
     if (s.zoneCount > 0 && std::isfinite(s.meanAzimuth_deg)) {
         const double reach = m_radial->max();
-        addAxisLine(s.meanAzimuth_deg, reach, "breakout mean " + degrees(s.meanAzimuth_deg),
-                    QPen(classQColour(reconstruction::BoreholeClass::Washout), 2, Qt::DashLine));
+        addAxisLine(s.meanAzimuth_deg, reach, "mean " + degrees(s.meanAzimuth_deg),
+                    QPen(QColor(0x00, 0x72, 0xB2), 2, Qt::DashLine));
         addAxisLine(s.shmaxAzimuth_deg, reach, "SHmax " + degrees(s.shmaxAzimuth_deg),
                     QPen(Qt::black, 2.5));
     }

@@ -7,11 +7,11 @@
 #include <QLabel>
 #include <QMouseEvent>
 #include <QStackedWidget>
+#include <QVBoxLayout>
 #include <QWheelEvent>
 #include <QtCharts/QAreaSeries>
 #include <QtCharts/QChart>
 #include <QtCharts/QChartView>
-#include <QtCharts/QLegendMarker>
 #include <QtCharts/QLineSeries>
 #include <QtCharts/QValueAxis>
 
@@ -34,6 +34,39 @@ double percentile(std::vector<double> values, double p) {
     const auto k = static_cast<std::ptrdiff_t>(p * double(values.size() - 1));
     std::nth_element(values.begin(), values.begin() + k, values.end());
     return values[std::size_t(k)];
+}
+
+// A round tick interval (1, 2, 2.5 or 5 times a power of ten) giving at most `ticks`
+// intervals over `span`.
+double niceStep(double span, int ticks) {
+    const double raw = span / ticks;
+    const double power = std::pow(10.0, std::floor(std::log10(raw)));
+    for (double m : {1.0, 2.0, 2.5, 5.0})
+        if (m * power >= raw) return m * power;
+    return 10.0 * power;
+}
+
+// A legend entry: a square of the colour as drawn over the white plot, then the name.
+// Sets a dynamic-tick axis to [min, max] with ticks every `step`. The axis lays its ticks
+// out as soon as either changes: a small step over the old, wide range (or the reverse)
+// would make thousands of ticks on the way, so the order depends on which shrinks.
+void setAxis(QValueAxis* axis, double min, double max, double step) {
+    if (step < axis->tickInterval()) {
+        axis->setRange(min, max);
+        axis->setTickInterval(step);
+    } else {
+        axis->setTickInterval(step);
+        axis->setRange(min, max);
+    }
+}
+
+QString swatch(const QColor& colour, const QString& name) {
+    const double a = colour.alphaF();
+    const QString label = name.toHtmlEscaped().replace(' ', "&nbsp;");
+    const QColor onWhite(int(std::lround(a * colour.red() + (1.0 - a) * 255.0)),
+                         int(std::lround(a * colour.green() + (1.0 - a) * 255.0)),
+                         int(std::lround(a * colour.blue() + (1.0 - a) * 255.0)));
+    return QString("<span style=\"color:%1\">&#9632;</span>&nbsp;%2").arg(onWhite.name(), label);
 }
 
 QColor bandColour(reconstruction::BoreholeClass cls) {
@@ -60,16 +93,22 @@ LogTrackDock::LogTrackDock(DeskModel& model, QWidget* parent)
     m_chart = new QChart;
     m_chart->setAnimationOptions(QChart::NoAnimation);
     m_chart->setMargins(QMargins(4, 4, 4, 4));
-    m_chart->legend()->setAlignment(Qt::AlignBottom);
+    // The legend is a label under the chart: it wraps in a narrow dock, where the chart's
+    // own legend (one row) would cut every name short.
+    m_chart->legend()->hide();
     m_depthAxis = new QValueAxis(m_chart);
     m_depthAxis->setReverse(true);  // depth down the page
     m_depthAxis->setTitleText("MD (m)");
-    m_depthAxis->setLabelFormat("%.1f");
+    m_depthAxis->setTickInterval(1.0);  // over the default range 0-1, until a well comes
+    m_depthAxis->setTickType(QValueAxis::TicksDynamic);
+    m_depthAxis->setTickAnchor(0.0);
     m_chart->addAxis(m_depthAxis, Qt::AlignLeft);
     m_valueAxis = new QValueAxis(m_chart);
     m_valueAxis->setTitleText("diameter (mm)");
     m_valueAxis->setLabelFormat("%.0f");
-    m_valueAxis->setTickCount(4);
+    m_valueAxis->setTickInterval(1.0);
+    m_valueAxis->setTickType(QValueAxis::TicksDynamic);
+    m_valueAxis->setTickAnchor(0.0);
     m_chart->addAxis(m_valueAxis, Qt::AlignTop);
     m_cursor = new QLineSeries(m_chart);
     m_cursor->setName("current depth");
@@ -78,8 +117,17 @@ LogTrackDock::LogTrackDock(DeskModel& model, QWidget* parent)
     m_view->setRenderHint(QPainter::Antialiasing);
     m_view->viewport()->installEventFilter(this);
     m_view->setMinimumWidth(220);
+    m_legend = new QLabel(m_stack);
+    m_legend->setWordWrap(true);
+    m_legend->setObjectName("logTrackLegend");
+    auto* track = new QWidget(m_stack);
+    auto* layout = new QVBoxLayout(track);
+    layout->setContentsMargins(0, 0, 0, 2);
+    layout->addWidget(m_view, 1);
+    layout->addWidget(m_legend);
+    m_track = track;
     m_stack->addWidget(m_message);
-    m_stack->addWidget(m_view);
+    m_stack->addWidget(track);
     setWidget(m_stack);
 
     connect(&m_model, &DeskModel::wellsChanged, this, &LogTrackDock::sync);
@@ -103,11 +151,15 @@ LogTrackDock::LogTrackDock(DeskModel& model, QWidget* parent)
 }
 
 bool LogTrackDock::showsChart() const {
-    return m_stack->currentWidget() == m_view;
+    return m_stack->currentWidget() == m_track;
 }
 
 QString LogTrackDock::message() const {
     return m_message->text();
+}
+
+QString LogTrackDock::legendText() const {
+    return m_legend->text();
 }
 
 double LogTrackDock::top_m() const {
@@ -138,7 +190,7 @@ void LogTrackDock::sync() {
     m_well = index;
     m_analysis = well->analysis;
     loadCurves(*m_analysis);
-    m_stack->setCurrentWidget(m_view);
+    m_stack->setCurrentWidget(m_track);
     defaultWindow();
 }
 
@@ -163,8 +215,9 @@ void LogTrackDock::loadCurves(const reconstruction::WellAnalysis& analysis) {
     if (std::isfinite(bitHigh)) high = std::isfinite(high) ? std::max(high, bitHigh) : bitHigh;
     if (!std::isfinite(low) || !std::isfinite(high)) low = 150.0, high = 300.0;
     const double pad = 0.08 * (high - low) + 5.0;
-    m_valueAxis->setRange(std::floor((low - pad) / 10.0) * 10.0,
-                          std::ceil((high + pad) / 10.0) * 10.0);
+    const double step = niceStep(high - low + 2.0 * pad, 4);
+    setAxis(m_valueAxis, std::floor((low - pad) / step) * step,
+            std::ceil((high + pad) / step) * step, step);
 }
 
 void LogTrackDock::defaultWindow() {
@@ -182,7 +235,9 @@ void LogTrackDock::setDepthWindow(double top_m, double bottom_m) {
     const double length_m = std::max(last_m - first_m, kMinSpan_m);
     const double span_m = std::clamp(bottom_m - top_m, kMinSpan_m, length_m);
     top_m = std::clamp(top_m, first_m, std::max(first_m, last_m - span_m));
-    m_depthAxis->setRange(top_m, top_m + span_m);
+    const double step = niceStep(span_m, 8);
+    setAxis(m_depthAxis, top_m, top_m + span_m, step);
+    m_depthAxis->setLabelFormat(step >= 1.0 ? "%.0f" : step >= 0.1 ? "%.1f" : "%.2f");
     redraw();
 }
 
@@ -201,17 +256,30 @@ void LogTrackDock::redraw() {
         if (series != m_cursor) delete series;
     }
     addBands();
-    addCurve(m_bit_mm, "bit size", QPen(QColor(0x56, 0xB4, 0xE9), 1.5, Qt::DashLine));
-    addCurve(m_dmin_mm, "dmin", QPen(QColor(0x00, 0x9E, 0x73), 1.2));
+    // The bit size last, dashed: where the hole is in gauge the three lines coincide, and
+    // the dashes show both it and the diameters under it.
     addCurve(m_dmax_mm, "dmax", QPen(Qt::black, 1.2));
+    addCurve(m_dmin_mm, "dmin", QPen(QColor(0x00, 0x9E, 0x73), 1.2));
+    addCurve(m_bit_mm, "bit size", QPen(QColor(0x56, 0xB4, 0xE9), 1.5, Qt::DashLine));
     m_chart->addSeries(m_cursor);  // last: drawn over the rest
     m_cursor->attachAxis(m_valueAxis);
     m_cursor->attachAxis(m_depthAxis);
+    // A series attached to a reversed axis is drawn the right way up only once the axis
+    // says it is reversed again (Qt Charts 5.15 sets a new series' domain unreversed).
+    m_depthAxis->setReverse(false);
+    m_depthAxis->setReverse(true);
     moveCursor();
-    // A curve split by gaps is several series of one name: one legend entry.
+    // What the window shows, each name once (a curve split by gaps is several series).
     std::set<QString> named;
-    for (QLegendMarker* marker : m_chart->legend()->markers())
-        marker->setVisible(named.insert(marker->label()).second);
+    QStringList legend;
+    for (QAbstractSeries* series : m_chart->series()) {
+        if (!named.insert(series->name()).second) continue;
+        if (auto* area = qobject_cast<QAreaSeries*>(series))
+            legend << swatch(area->brush().color(), area->name());
+        else if (auto* line = qobject_cast<QLineSeries*>(series))
+            legend << swatch(line->pen().color(), line->name());
+    }
+    m_legend->setText(legend.join(" &nbsp; "));
 }
 
 void LogTrackDock::addBands() {

@@ -39,6 +39,7 @@ public:
     // Whether the chart is shown (false while there is no well, or no analysis yet).
     bool showsChart() const;
     QString message() const;  // what is shown instead of the chart
+    QString legendText() const;  // the legend under the chart (rich text)
     double top_m() const;     // the depth window shown
     double bottom_m() const;
     // Shows [top_m, bottom_m] (clamped to the log, at least kMinSpan_m tall).
@@ -71,6 +72,8 @@ private:
     DeskModel& m_model;
     QStackedWidget* m_stack = nullptr;
     QLabel* m_message = nullptr;
+    QWidget* m_track = nullptr;  // the chart and its legend
+    QLabel* m_legend = nullptr;
     QT_CHARTS_NAMESPACE::QChartView* m_view = nullptr;
     QT_CHARTS_NAMESPACE::QChart* m_chart = nullptr;
     QT_CHARTS_NAMESPACE::QValueAxis* m_depthAxis = nullptr;

@@ -57,13 +57,19 @@ protected:
 
 TEST_F(LogTrackDockTest, SaysAnalysingUntilTheAnalysisIsIn) {
     app::DeskModel model;
-    app::LogTrackDock dock(model);
+    // On screen from the start, as in the window: its axes are laid out before any well.
+    const auto shown = shownDock(model);
+    app::LogTrackDock& dock = *shown;
     EXPECT_FALSE(dock.showsChart());
+    EXPECT_EQ(dock.message(), "No well loaded");
     const int well = model.addWell(test::exampleDeskWell(false));
     EXPECT_FALSE(dock.showsChart());
     EXPECT_EQ(dock.message(), "analysing...");
     model.updateWell(well, test::exampleDeskWell(true));
     EXPECT_TRUE(dock.showsChart());
+    QTest::qWait(50);
+    EXPECT_TRUE(dock.legendText().contains("breakout"));
+    EXPECT_TRUE(dock.legendText().contains("dmax"));
     // A 300 m well is shown whole.
     const auto& depth = model.well(well).geometry->table().depth_m;
     EXPECT_DOUBLE_EQ(dock.top_m(), depth.front());
@@ -184,6 +190,22 @@ TEST_F(LogTrackDockTest, DrawsTheCurvesAndTheBands) {
     app::DeskModel model;
     model.addWell(test::exampleDeskWell());
     const auto dock = shownDock(model);
+    // The breakout's dmax (245.9 mm) is drawn at its depth, down the page: a curve's dark
+    // pixels there (black dmax, green dmin; the bands and grid are light), and none at the
+    // mirror depth, where an axis drawn the other way would put it.
+    const QImage image = dock->chartView()->grab().toImage();
+    auto curveNear = [&](double value, double md_m) {
+        const QPoint centre = at(*dock, value, md_m);
+        int dark = 0;
+        for (int dy = -2; dy <= 2; ++dy)
+            for (int dx = -3; dx <= 3; ++dx)
+                dark += qGray(image.pixel(centre + QPoint(dx, dy))) < 150;
+        return dark;
+    };
+    EXPECT_GT(curveNear(245.9, 70.0), 0);
+    EXPECT_EQ(curveNear(245.9, 230.0), 0);
+    EXPECT_GT(curveNear(265.9, 155.0), 0);
+    EXPECT_EQ(curveNear(265.9, 145.0), 0);
     const int drawn = test::drawnPixels(*dock->chartView());
     EXPECT_GT(drawn, 5000);
     // The breakout's band: the palette's orange (230, 159, 0) at alpha 120 over white.
