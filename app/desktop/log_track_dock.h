@@ -38,9 +38,9 @@ public:
     QT_CHARTS_NAMESPACE::QChart* chart() const { return m_chart; }
     // Whether the chart is shown (false while there is no well, or no analysis yet).
     bool showsChart() const;
-    QString message() const;  // what is shown instead of the chart
+    QString message() const;     // what is shown instead of the chart
     QString legendText() const;  // the legend under the chart (rich text)
-    double top_m() const;     // the depth window shown
+    double top_m() const;        // the depth window shown
     double bottom_m() const;
     // Shows [top_m, bottom_m] (clamped to the log, at least kMinSpan_m tall).
     void setDepthWindow(double top_m, double bottom_m);
