@@ -60,7 +60,7 @@ BreakoutsDock::BreakoutsDock(DeskModel& model, QWidget* parent)
     m_chart->addAxis(m_radial, QPolarChart::PolarOrientationRadial);
     m_view = new QChartView(m_chart);
     m_view->setRenderHint(QPainter::Antialiasing);
-    m_view->setMinimumSize(240, 240);
+    m_view->setMinimumSize(160, 160);
     m_summary = new QLabel;
     m_summary->setWordWrap(true);
     m_summary->setObjectName("breakoutSummary");
@@ -96,6 +96,10 @@ BreakoutsDock::BreakoutsDock(DeskModel& model, QWidget* parent)
         selectZoneAt(md_m);
     });
     sync();
+}
+
+QSize BreakoutsDock::sizeHint() const {
+    return {kWidth_px, 480};
 }
 
 QString BreakoutsDock::summaryText() const {

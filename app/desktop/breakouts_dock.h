@@ -30,6 +30,9 @@ class BreakoutsDock : public QDockWidget {
 
 public:
     explicit BreakoutsDock(DeskModel& model, QWidget* parent = nullptr);
+    // Room for the rose and the table's first columns; the 3D view keeps the middle.
+    QSize sizeHint() const override;
+    static constexpr int kWidth_px = 260;
 
     QT_CHARTS_NAMESPACE::QChartView* roseView() const { return m_view; }
     QT_CHARTS_NAMESPACE::QPolarChart* rose() const { return m_chart; }

@@ -104,7 +104,7 @@ LogTrackDock::LogTrackDock(DeskModel& model, QWidget* parent)
     m_depthAxis->setTickAnchor(0.0);
     m_chart->addAxis(m_depthAxis, Qt::AlignLeft);
     m_valueAxis = new QValueAxis(m_chart);
-    m_valueAxis->setTitleText("diameter (mm)");
+    m_valueAxis->setTitleText("mm");  // the legend names the curves
     m_valueAxis->setLabelFormat("%.0f");
     m_valueAxis->setTickInterval(1.0);
     m_valueAxis->setTickType(QValueAxis::TicksDynamic);
@@ -116,7 +116,7 @@ LogTrackDock::LogTrackDock(DeskModel& model, QWidget* parent)
     m_view = new QChartView(m_chart, m_stack);
     m_view->setRenderHint(QPainter::Antialiasing);
     m_view->viewport()->installEventFilter(this);
-    m_view->setMinimumWidth(220);
+    m_view->setMinimumWidth(kMinWidth_px);  // the axes' labels need this much
     m_legend = new QLabel(m_stack);
     m_legend->setWordWrap(true);
     m_legend->setObjectName("logTrackLegend");
@@ -148,6 +148,10 @@ LogTrackDock::LogTrackDock(DeskModel& model, QWidget* parent)
         },
         Qt::QueuedConnection);
     sync();
+}
+
+QSize LogTrackDock::sizeHint() const {
+    return {kWidth_px, 480};
 }
 
 bool LogTrackDock::showsChart() const {
@@ -215,7 +219,8 @@ void LogTrackDock::loadCurves(const reconstruction::WellAnalysis& analysis) {
     if (std::isfinite(bitHigh)) high = std::isfinite(high) ? std::max(high, bitHigh) : bitHigh;
     if (!std::isfinite(low) || !std::isfinite(high)) low = 150.0, high = 300.0;
     const double pad = 0.08 * (high - low) + 5.0;
-    const double step = niceStep(high - low + 2.0 * pad, 4);
+    // Two or three labels: a narrow track has no room for more.
+    const double step = niceStep(high - low + 2.0 * pad, 3);
     setAxis(m_valueAxis, std::floor((low - pad) / step) * step,
             std::ceil((high + pad) / step) * step, step);
 }

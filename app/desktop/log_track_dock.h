@@ -33,6 +33,10 @@ class LogTrackDock : public QDockWidget {
 
 public:
     explicit LogTrackDock(DeskModel& model, QWidget* parent = nullptr);
+    // Narrow, as a log track is: the 3D view keeps the window's middle.
+    QSize sizeHint() const override;
+    static constexpr int kWidth_px = 220;
+    static constexpr int kMinWidth_px = 180;
 
     QT_CHARTS_NAMESPACE::QChartView* chartView() const { return m_view; }
     QT_CHARTS_NAMESPACE::QChart* chart() const { return m_chart; }
