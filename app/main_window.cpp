@@ -31,8 +31,10 @@
 #include <Inventor/nodes/SoSwitch.h>
 
 #include "app/desktop/analysis_job.h"
+#include "app/desktop/breakouts_dock.h"
 #include "app/desktop/desk_model.h"
 #include "app/desktop/file_menu.h"
+#include "app/desktop/log_track_dock.h"
 #include "app/desktop/retired_loads.h"
 #include "app/desktop/section_inspector_dock.h"
 #include "app/desktop/unrolled_image_dock.h"
@@ -651,7 +653,7 @@ void MainWindow::analyse(Well& well) {
 
 void MainWindow::buildDocks() {
     // The docks are views of m_model; each is a class of its own (app/desktop). Left: the
-    // wells and the log track; right: the section and the breakouts; below: the unrolled
+    // wells above the log track; right: the section above the breakouts; below: the unrolled
     // image, with the warnings in a tab beside it.
     auto* wells = new WellsDock(*m_model, this);
     addDockWidget(Qt::LeftDockWidgetArea, wells);
@@ -661,15 +663,19 @@ void MainWindow::buildDocks() {
         colour.quantity = quantity.toStdString();
         restyleWell(well, colour);
     });
+    auto* logTrack = new LogTrackDock(*m_model, this);
+    addDockWidget(Qt::LeftDockWidgetArea, logTrack);
     auto* inspector = new SectionInspectorDock(m_model, this);
     addDockWidget(Qt::RightDockWidgetArea, inspector);
+    auto* breakouts = new BreakoutsDock(*m_model, this);
+    addDockWidget(Qt::RightDockWidgetArea, breakouts);
     auto* unrolled = new UnrolledImageDock(m_model, this);
     addDockWidget(Qt::BottomDockWidgetArea, unrolled);
     m_warningsDock = new WarningsDock(*m_model, this);
     tabifyDockWidget(unrolled, m_warningsDock);
     unrolled->raise();
-    for (QDockWidget* dock :
-         std::initializer_list<QDockWidget*>{wells, inspector, unrolled, m_warningsDock})
+    for (QDockWidget* dock : std::initializer_list<QDockWidget*>{
+             wells, logTrack, inspector, breakouts, unrolled, m_warningsDock})
         m_docksMenu->addAction(dock->toggleViewAction());
 }
 
