@@ -11,6 +11,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressBar>
+#include <QScreen>
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QStatusBar>
@@ -56,10 +57,11 @@ namespace caliper3d::app {
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setWindowTitle("caliper3d");
-    resize(1200, 800);
+    resize(defaultSize());
     m_model = new DeskModel(this);
     m_retired = std::make_unique<RetiredLoads>();
     auto* centre = new QWidget(this);
+    centre->setMinimumSize(kMinimumViewSize);  // the docks give way before the 3D view does
     setCentralWidget(centre);
     m_viewer = new WellViewer(centre);
     m_viewer->setBackgroundColor(SbColor(scenegraph::kBackgroundColour));
@@ -111,6 +113,15 @@ std::vector<WellSource> MainWindow::wellSources() const {
     std::vector<WellSource> out;
     for (const auto& well : m_wells) out.push_back(well->source);
     return out;
+}
+
+QSize MainWindow::defaultSize() {
+    // Room for the 3D view and the docks around it, within the screen (a saved layout
+    // replaces it: FileMenu::restoreLayout).
+    const QScreen* screen = QGuiApplication::primaryScreen();
+    const QSize available = screen ? screen->availableGeometry().size() : QSize(1600, 1000);
+    return QSize(std::min(1600, available.width() * 9 / 10),
+                 std::min(1000, available.height() * 9 / 10));
 }
 
 MainWindow::~MainWindow() {

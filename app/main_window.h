@@ -6,6 +6,7 @@
 #include <vector>
 
 #include <QMainWindow>
+#include <QSize>
 
 #include "app/desktop/desk_model.h"
 #include "app/input_options.h"
@@ -130,6 +131,8 @@ private:
     void setView(int direction);
     void viewAll();  // the scene with room around it for the labels at its ends
     static constexpr float kViewAllRoom = 1.12f;  // distance, over SoCamera::viewAll's
+    static QSize defaultSize();
+    static constexpr QSize kMinimumViewSize{480, 360};
     static constexpr int kProgressSteps = 1000;
     static constexpr int kProgressInterval_ms = 100;
     static constexpr double kReadShare = 0.7;        // of a well's progress bar: reading the log

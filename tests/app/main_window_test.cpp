@@ -60,7 +60,7 @@ TEST_F(MainWindowTest, OpensTheExampleAndRendersTheWell) {
         log.string(),
         reconstruction::makeSyntheticWell(reconstruction::syntheticProfile("example", 60.0, 0.1)));
     app::MainWindow window;
-    window.resize(640, 480);
+    window.resize(1280, 960);
     window.show();
     app::LoadOptions options;
     options.read.bitSize_mm = 215.9;
@@ -104,7 +104,7 @@ TEST_F(MainWindowTest, ShowsDepthLabelsTheWellsNameAndTheNorthArrow) {
         log.string(),
         reconstruction::makeSyntheticWell(reconstruction::syntheticProfile("example", 60.0, 0.1)));
     app::MainWindow window;
-    window.resize(640, 480);
+    window.resize(1280, 960);
     window.show();
     app::LoadOptions options;
     options.radialExaggeration = 10.0;
@@ -184,7 +184,7 @@ TEST_F(MainWindowTest, RecolouringAndReExaggeratingReuseTheWellInMemory) {
         log.string(),
         reconstruction::makeSyntheticWell(reconstruction::syntheticProfile("washout", 40.0, 0.1)));
     app::MainWindow window;
-    window.resize(640, 480);
+    window.resize(1280, 960);
     window.show();
     app::LoadOptions options;
     options.read.bitSize_mm = 215.9;
