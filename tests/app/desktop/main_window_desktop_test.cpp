@@ -12,21 +12,27 @@
 #include <QProgressBar>
 #include <QTest>
 #include <QTreeWidget>
+#include <QtCharts/QChart>
+#include <QtCharts/QChartView>
 
 #include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
 #include <Inventor/SoSceneManager.h>
 #include <Inventor/nodes/SoCamera.h>
 
 #include "app/desktop/desk_model.h"
+#include "app/desktop/log_track_dock.h"
+#include "app/desktop/section_inspector_dock.h"
 #include "app/desktop/warnings_dock.h"
 #include "app/desktop/well_navigator.h"
 #include "app/desktop/wells_dock.h"
 #include "desktop_test_support.h"
+#include "reconstruction/analysis/report_writer.h"
 #include "scenegraph/camera_setup.h"
 #include "scenegraph/label_style.h"
 #include "scenegraph/section_pick.h"
 
 using namespace caliper3d;
+QT_CHARTS_USE_NAMESPACE
 
 namespace {
 
@@ -83,6 +89,45 @@ TEST_F(DesktopWindowTest, AClickOnTheWallMakesItsSectionCurrentAndTheCameraStays
     const std::size_t row = window.model().currentRow();
     EXPECT_TRUE(well.geometry->measured(row));
     EXPECT_EQ(window.navigator().markerPoints(), well.geometry->sampler().samples() + 1);
+
+    // The section inspector shows the report's numbers for the section picked.
+    auto* inspector = window.findChild<app::SectionInspectorDock*>("sectionInspector");
+    ASSERT_NE(inspector, nullptr);
+    int fields = 0;
+    for (const auto& [field, text] : reconstruction::sectionReportFields(well.analysis->sections[row]))
+        if (!inspector->value(QString::fromStdString(field)).isEmpty()) {
+            const QString shown = inspector->value(QString::fromStdString(field));
+            if (text.empty())  // undefined in the report: the inspector says why
+                EXPECT_TRUE(shown == "none" || shown == "unknown") << field;
+            else
+                EXPECT_EQ(shown.toStdString(), text) << field;
+            ++fields;
+        }
+    EXPECT_GE(fields, 8) << "md, dmin, dmax, ellipticity, azimuth, area, offset, class";
+}
+
+TEST_F(DesktopWindowTest, AClickOnTheLogTrackMovesTheCameraToThatDepth) {
+    app::MainWindow window;
+    openAndAnalyse(window, test::syntheticLog("example", 100.0, 0.05));
+    auto* track = window.findChild<app::LogTrackDock*>("logTrack");
+    ASSERT_NE(track, nullptr);
+    ASSERT_TRUE(test::waitUntil([&] { return track->showsChart(); }, 5000));
+    track->setDepthWindow(60.0, 80.0);  // 20 m over the track: a pixel is less than a row
+    QApplication::processEvents();
+    QChart* chart = track->chart();
+    const QPointF inChart = chart->mapToPosition(QPointF(230.0, 70.0), chart->series().back());
+    const QPoint pixel = track->chartView()->mapFromScene(chart->mapToScene(inChart));
+    QTest::mouseClick(track->chartView()->viewport(), Qt::LeftButton, {}, pixel);
+    QApplication::processEvents();
+
+    EXPECT_NEAR(window.model().currentDepth_m(), 70.0, 0.15);
+    const app::DeskWell& well = window.model().well(0);
+    const glm::dvec3 centre =
+        reconstruction::toScene(well.geometry->centre(window.model().currentRow()));
+    const SbVec3f focus = window.navigator().focus();
+    EXPECT_NEAR(focus[0], centre.x, 0.01);
+    EXPECT_NEAR(focus[1], centre.y, 0.01);
+    EXPECT_NEAR(focus[2], centre.z, 0.01);
 }
 
 TEST_F(DesktopWindowTest, TheCameraFollowsTheCurrentDepthAndStepsFromZoneToZone) {
