@@ -663,28 +663,29 @@ void MainWindow::analyse(Well& well) {
 }
 
 void MainWindow::buildDocks() {
-    // The docks are views of m_model; each is a class of its own (app/desktop). Left: the
-    // wells above the log track; right: the section above the breakouts; below: the unrolled
-    // image, with the warnings in a tab beside it.
+    // The docks are views of m_model; each is a class of its own (app/desktop). Left, side
+    // by side as on a log print: the log track and the unrolled image, both with depth down;
+    // right: the section above the breakouts, with the wells and the warnings in tabs beside
+    // the breakouts (the 3D view keeps the window's whole height).
+    auto* logTrack = new LogTrackDock(*m_model, this);
+    addDockWidget(Qt::LeftDockWidgetArea, logTrack);
+    auto* unrolled = new UnrolledImageDock(m_model, this);
+    splitDockWidget(logTrack, unrolled, Qt::Horizontal);
+    auto* inspector = new SectionInspectorDock(m_model, this);
+    addDockWidget(Qt::RightDockWidgetArea, inspector);
+    auto* breakouts = new BreakoutsDock(*m_model, this);
+    addDockWidget(Qt::RightDockWidgetArea, breakouts);
     auto* wells = new WellsDock(*m_model, this);
-    addDockWidget(Qt::LeftDockWidgetArea, wells);
+    tabifyDockWidget(breakouts, wells);
     connect(wells, &WellsDock::visibilityToggled, this, &MainWindow::setWellVisible);
     connect(wells, &WellsDock::colourChosen, this, [this](int well, const QString& quantity) {
         reconstruction::ColourRequest colour;
         colour.quantity = quantity.toStdString();
         restyleWell(well, colour);
     });
-    auto* logTrack = new LogTrackDock(*m_model, this);
-    addDockWidget(Qt::LeftDockWidgetArea, logTrack);
-    auto* inspector = new SectionInspectorDock(m_model, this);
-    addDockWidget(Qt::RightDockWidgetArea, inspector);
-    auto* breakouts = new BreakoutsDock(*m_model, this);
-    addDockWidget(Qt::RightDockWidgetArea, breakouts);
-    auto* unrolled = new UnrolledImageDock(m_model, this);
-    addDockWidget(Qt::BottomDockWidgetArea, unrolled);
     m_warningsDock = new WarningsDock(*m_model, this);
-    tabifyDockWidget(unrolled, m_warningsDock);
-    unrolled->raise();
+    tabifyDockWidget(wells, m_warningsDock);
+    breakouts->raise();
     for (QDockWidget* dock : std::initializer_list<QDockWidget*>{
              wells, logTrack, inspector, breakouts, unrolled, m_warningsDock})
         m_docksMenu->addAction(dock->toggleViewAction());

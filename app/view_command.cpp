@@ -1,4 +1,6 @@
+#include <cmath>
 #include <cstdio>
+#include <optional>
 #include <exception>
 #include <filesystem>
 
@@ -8,7 +10,9 @@
 #include "app/commands.h"
 #include "app/gui_session.h"
 #include "app/input_options.h"
+#include "app/desktop/desk_model.h"
 #include "app/main_window.h"
+#include "io/number_parsing.h"
 #include "app/png_output.h"
 #include "app/scene_assembly.h"
 #include "app/verb_parser.h"
@@ -23,7 +27,7 @@ namespace caliper3d::app {
 namespace {
 
 int showWindow(int argc, char** argv, const std::vector<WellSource>& wells,
-               const LoadOptions& options) {
+               const LoadOptions& options, std::optional<double> at_m = std::nullopt) {
     QApplication application(argc, argv);
     initGui();
     MainWindow window;
@@ -33,6 +37,10 @@ int showWindow(int argc, char** argv, const std::vector<WellSource>& wells,
         std::fprintf(stderr, "caliper3d: %s\n", message.toLocal8Bit().constData());
         status = kExitBadInput;
     });
+    if (at_m)  // once the first well is analysed, so that every view has it to show
+        QObject::connect(&window, &MainWindow::wellAnalysed, &window, [&window, at_m](int well) {
+            if (well == 0) window.model().setCurrent(0, *at_m);
+        });
     window.openWell(wells.front(), options);
     for (std::size_t i = 1; i < wells.size(); ++i) window.addWell(wells[i], options);
     // The first frame can stay black until something changes: redraw once shown.
@@ -55,7 +63,18 @@ int runView(int argc, char** argv, const QStringList& args) {
         addInputOptions(verb.parser());
         addColourOptions(verb.parser());
         addWellSourceOptions(verb.parser());
+        verb.parser().addOption(
+            {"at", "Measured depth (m) the views open at in the first well (the nearest section).",
+             "MD"});
         if (!verb.parse(args, 1)) return kExitOk;
+        std::optional<double> at;
+        if (verb.isSet("at")) {
+            double md = 0.0;
+            if (!io::parseNumber(verb.value("at"), md) || !std::isfinite(md))
+                throw UsageError("caliper3d view: --at takes a measured depth in metres, not '" +
+                                 verb.value("at") + "'");
+            at = md;
+        }
         LoadOptions options = inputOptionsFrom(verb.parser());
         options.colour = colourRequestFrom(verb.parser());
         const std::vector<WellSource> wells = wellSourcesFrom(verb.parser(), verb.positional());
@@ -65,7 +84,7 @@ int runView(int argc, char** argv, const QStringList& args) {
                 "caliper3d view: no display; use 'caliper3d render' or 'caliper3d export'\n");
             return kExitUsage;
         }
-        return showWindow(argc, argv, wells, options);
+        return showWindow(argc, argv, wells, options, at);
     });
 }
 

@@ -26,10 +26,10 @@ namespace caliper3d::app {
 
 namespace {
 
-// Outside, the camera comes no farther than this from the current section, or this many
-// drawn hole diameters when the radii are exaggerated: near enough to see the section.
-constexpr float kFollowDistance_m = 15.0f;
-constexpr float kFollowDiameters = 4.0f;
+// Outside, the camera comes this many drawn hole diameters from the current section (a few
+// metres of hole in view, its shape plain), and no nearer than the minimum.
+constexpr float kFollowDistance_m = 2.0f;
+constexpr float kFollowDiameters = 12.0f;
 constexpr float kMarkerColour[3] = {1.0f, 0.85f, 0.1f};  // a yellow no colour map uses
 
 }  // namespace
