@@ -1,21 +1,21 @@
 #include <cmath>
 #include <cstdio>
-#include <optional>
 #include <exception>
 #include <filesystem>
+#include <optional>
 
 #include <QApplication>
 #include <QTimer>
 
 #include "app/commands.h"
+#include "app/desktop/desk_model.h"
 #include "app/gui_session.h"
 #include "app/input_options.h"
-#include "app/desktop/desk_model.h"
 #include "app/main_window.h"
-#include "io/number_parsing.h"
 #include "app/png_output.h"
 #include "app/scene_assembly.h"
 #include "app/verb_parser.h"
+#include "io/number_parsing.h"
 #include "scenegraph/camera_setup.h"
 #include "scenegraph/iv_export.h"
 #include "scenegraph/main_thread.h"
@@ -48,6 +48,8 @@ int showWindow(int argc, char** argv, const std::vector<WellSource>& wells,
     const int rc = application.exec();
     return rc != 0 ? rc : status;
 }
+
+constexpr double kExampleBreakout_m = 70.0;  // the middle of the example's breakout (60-80 m)
 
 LoadOptions exampleOptions() {
     LoadOptions options;
@@ -97,8 +99,9 @@ int runDefault(int argc, char** argv) {
                      example.c_str());
         return kExitBadInput;
     }
-    if (haveDisplay())
-        return showWindow(argc, argv, {WellSource{example, {}, {}}}, exampleOptions());
+    if (haveDisplay())  // at the example's breakout, where every view has something to show
+        return showWindow(argc, argv, {WellSource{example, {}, {}}}, exampleOptions(),
+                          kExampleBreakout_m);
     try {
         scenegraph::initCoin();
         std::filesystem::create_directories("out");

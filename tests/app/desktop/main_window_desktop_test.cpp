@@ -94,7 +94,8 @@ TEST_F(DesktopWindowTest, AClickOnTheWallMakesItsSectionCurrentAndTheCameraStays
     auto* inspector = window.findChild<app::SectionInspectorDock*>("sectionInspector");
     ASSERT_NE(inspector, nullptr);
     int fields = 0;
-    for (const auto& [field, text] : reconstruction::sectionReportFields(well.analysis->sections[row]))
+    for (const auto& [field, text] :
+         reconstruction::sectionReportFields(well.analysis->sections[row]))
         if (!inspector->value(QString::fromStdString(field)).isEmpty()) {
             const QString shown = inspector->value(QString::fromStdString(field));
             if (text.empty())  // undefined in the report: the inspector says why
