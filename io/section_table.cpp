@@ -67,6 +67,8 @@ SectionTable SectionTable::rows(std::size_t first, std::size_t last) const {
     SectionTable out;
     out.source = source;
     out.wellName = wellName;
+    out.fileDepthUnit = fileDepthUnit;
+    out.fileCaliperUnit = fileCaliperUnit;
     out.armCount = armCount;
     out.holeAzimuth = holeAzimuth;
     for (const ExtraCurve& e : extraCurves)

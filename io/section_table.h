@@ -30,7 +30,10 @@ struct ExtraCurve {
 struct SectionTable {
     std::string source;    // file the table came from (for messages)
     std::string wellName;  // the log's well name (LAS ~Well WELL), empty when it gives none
-    int armCount = 0;      // radii per row
+    // The units the file wrote its depth and its caliper curves in ("M", "FT", "IN", "MM"...;
+    // empty when it wrote none): the table itself holds metres and millimetres.
+    std::string fileDepthUnit, fileCaliperUnit;
+    int armCount = 0;  // radii per row
 
     std::vector<double> depth_m;
     std::vector<double> radius_mm;   // row-major: armCount values per row

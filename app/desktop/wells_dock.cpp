@@ -86,7 +86,14 @@ void WellsDock::fill(QTreeWidgetItem* item, int well) {
                 ? QString("%1 mm (%2 in)").arg(smallest, 0, 'f', 1).arg(smallest / 25.4, 0, 'f', 3)
                 : QString("none in the log");
         if (w.options.read.bitSize_mm) bit += " (given)";
-        units = "m, mm";  // every table holds metres and millimetres (docs/conventions.md)
+        // As the file wrote them (the table holds metres and millimetres), or as given.
+        const auto unitOf = [](const std::string& written, bool given) {
+            return given             ? QString("given")
+                   : written.empty() ? QString("none written")
+                                     : QString::fromStdString(written);
+        };
+        units = "depth " + unitOf(t.fileDepthUnit, w.options.read.depthUnit.has_value()) +
+                ", caliper " + unitOf(t.fileCaliperUnit, w.options.read.radiusUnit.has_value());
         rows = QString::number(t.rowCount());
         if (t.rowCount() > 0)
             depths = QString("%1 - %2")

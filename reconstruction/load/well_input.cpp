@@ -1,10 +1,28 @@
 #include "reconstruction/load/well_input.h"
 
+#include <sstream>
+#include <string>
+
 #include "io/log_reader.h"
 #include "io/parse_error.h"
 #include "reconstruction/load/hole_azimuth.h"
 
 namespace caliper3d::reconstruction {
+
+namespace {
+
+// The unit of the first caliper curve named in info.armSource ("radii R1 R2 ...",
+// "diameters C1 C2"); empty when the file gave none.
+std::string caliperUnit(const io::LogInfo& info) {
+    std::istringstream words(info.armSource);
+    std::string kind, first;
+    words >> kind >> first;
+    for (const io::CurveInfo& curve : info.curves)
+        if (curve.mnemonic == first) return curve.unit;
+    return {};
+}
+
+}  // namespace
 
 io::SectionTable loadWellTable(const std::string& path, const io::ReadOptions& options,
                                bool surveyGiven, io::Diagnostics* diagnostics,
@@ -26,6 +44,8 @@ io::SectionTable loadWellTable(const std::string& path, const io::ReadOptions& o
                                  " curves; name them with --radii or --diameters");
     if (diagnostics) diagnostics->merge(loaded.info.diagnostics);
     loaded.table.wellName = loaded.info.wellName;
+    loaded.table.fileDepthUnit = loaded.info.depthUnit;
+    loaded.table.fileCaliperUnit = caliperUnit(loaded.info);
     resolveHoleAzimuth(loaded.table, io::holeAzimuthPlan(loaded.info, surveyGiven), diagnostics);
     return std::move(loaded.table);
 }

@@ -225,6 +225,12 @@ TEST_F(DesktopWindowTest, TheWellsAndWarningsDocksDrawTheWellAndHideIt) {
     EXPECT_EQ(item->text(app::WellsDock::Rows),
               QString::number(window.model().well(0).geometry->table().rowCount()));
     EXPECT_TRUE(item->text(app::WellsDock::BitSize).startsWith("215.9 mm"));
+    // The units as the file wrote them (our column text writes the caliper's, inches).
+    const io::SectionTable& table = window.model().well(0).geometry->table();
+    EXPECT_EQ(table.fileCaliperUnit, "in");
+    EXPECT_EQ(item->text(app::WellsDock::Units).toStdString(),
+              "depth " + (table.fileDepthUnit.empty() ? "none written" : table.fileDepthUnit) +
+                  ", caliper in");
     const QImage shown = wells->grab().toImage();
     shown.save(QString::fromStdString(test::scratch("desktop_wells_dock.png").string()));
     EXPECT_GT(test::drawnPixels(shown), 500u);

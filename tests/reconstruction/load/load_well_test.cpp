@@ -101,6 +101,31 @@ TEST(LoadWellTest, TheTableCarriesTheLogsWellName) {
               "");
 }
 
+TEST(LoadWellTest, TheTableCarriesTheUnitsTheFileWrote) {
+    const auto las = test::scratch("load_well_units.las");
+    io::writeLasFile(las.string(), makeSyntheticWell(syntheticProfile("circle", 10.0, 0.5)));
+    std::string depthUnit, caliperUnit;
+    {
+        std::ifstream in(las);
+        std::string line;
+        while (
+            std::getline(in, line)) {  // the writer's own ~Curve lines: "DEPT.M ...", "R1.IN ..."
+            const auto dot = line.find('.');
+            const auto space = line.find(' ', dot);
+            if (dot == std::string::npos || space == std::string::npos) continue;
+            const std::string name = line.substr(0, dot),
+                              unit = line.substr(dot + 1, space - dot - 1);
+            if (name.find("DEPT") != std::string::npos && depthUnit.empty()) depthUnit = unit;
+            if (name.find("R1") != std::string::npos && caliperUnit.empty()) caliperUnit = unit;
+        }
+    }
+    ASSERT_FALSE(depthUnit.empty());
+    ASSERT_FALSE(caliperUnit.empty());
+    const auto table = loadWell({las.string(), {}, {}}, LoadOptions{}).table;
+    EXPECT_EQ(table->fileDepthUnit, depthUnit);
+    EXPECT_EQ(table->fileCaliperUnit, caliperUnit);
+}
+
 TEST(LoadWellTest, DiagnosticsHoldTheSurveysWarningThenTheReaders) {
     std::size_t lines = 0;
     const std::string log = writeLog("load_well_warned.txt", &lines);
