@@ -154,7 +154,7 @@ void MainWindow::buildViewMenu() {
     view->addAction("Well &warnings...", this, &MainWindow::showWarnings);
     view->addSeparator();
     view->addAction(
-        "View &all", this, [this] { viewAll(); }, QKeySequence(Qt::CTRL | Qt::Key_R));
+        "View &all", this, [this] { viewAll(); }, QKeySequence("Ctrl+R"));
     view->addAction("&Iso", this, [this] { setView(int(scenegraph::ViewDirection::Iso)); });
     view->addAction("Looking &north", this,
                     [this] { setView(int(scenegraph::ViewDirection::North)); });
@@ -162,27 +162,26 @@ void MainWindow::buildViewMenu() {
                     [this] { setView(int(scenegraph::ViewDirection::East)); });
     view->addAction("From &top", this, [this] { setView(int(scenegraph::ViewDirection::Top)); });
     view->addSeparator();
-    view->addAction("&Go to depth...", this, &MainWindow::goToDepthDialog,
-                    QKeySequence(Qt::CTRL | Qt::Key_G));
+    view->addAction("&Go to depth...", this, &MainWindow::goToDepthDialog, QKeySequence("Ctrl+G"));
     view->addAction(
         "Ne&xt zone", this,
         [this] {
             if (!m_navigator->nextZone()) m_status->setText("No zone below the current depth");
         },
-        QKeySequence(Qt::CTRL | Qt::Key_Down));
+        QKeySequence("Ctrl+Down"));
     view->addAction(
         "&Previous zone", this,
         [this] {
             if (!m_navigator->previousZone()) m_status->setText("No zone above the current depth");
         },
-        QKeySequence(Qt::CTRL | Qt::Key_Up));
+        QKeySequence("Ctrl+Up"));
     QAction* inside = view->addAction("Inside the &hole");
     inside->setCheckable(true);
-    inside->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_I));
+    inside->setShortcut(QKeySequence("Ctrl+I"));
     connect(inside, &QAction::toggled, this, [this](bool on) { m_navigator->setInside(on); });
     QAction* fly = view->addAction("&Fly along the well");
     fly->setCheckable(true);
-    fly->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_F));
+    fly->setShortcut(QKeySequence("Ctrl+Shift+F"));
     connect(fly, &QAction::toggled, this, [this, inside](bool on) {
         if (on) {
             inside->setChecked(true);
