@@ -25,6 +25,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <Inventor/SoDB.h>
 #include <Inventor/SoSceneManager.h>
 #include <Inventor/nodes/SoCamera.h>
 #include <Inventor/nodes/SoPerspectiveCamera.h>
@@ -198,6 +199,41 @@ void MainWindow::buildViewMenu() {
                                 [this, factor] { setExaggeration(factor); });
     m_docksMenu = view->addMenu("&Docks");
     m_docksMenu->setObjectName("docksMenu");
+    QMenu* help = menuBar()->addMenu("&Help");
+    help->addAction("&Keyboard shortcuts", this, &MainWindow::showShortcuts,
+                    QKeySequence::HelpContents);
+    help->addAction("&About caliper3d", this, [this] {
+        QMessageBox::about(
+            this, "About caliper3d",
+            QString("<b>caliper3d 0.1.0</b><p>Caliper logs as true-shape 3D boreholes: pick, "
+                    "measure, colour and export them.</p><p>Qt %1, Coin %2, SoQt.</p><p>The user "
+                    "guide is docs/user-guide.md; every verb's options: caliper3d help VERB.</p>")
+                .arg(qVersion())
+                .arg(SoDB::getVersion()));
+    });
+}
+
+// Every menu action with a shortcut, as the menus show them: what a new user looks for.
+void MainWindow::showShortcuts() {
+    QString rows;
+    for (QAction* menu : menuBar()->actions()) {
+        if (!menu->menu()) continue;
+        for (QAction* action : menu->menu()->actions())
+            if (!action->shortcut().isEmpty())
+                rows += QString("<tr><td>%1</td><td>%2</td><td>%3</td></tr>")
+                            .arg(menu->text().remove('&'), action->text().remove('&'),
+                                 action->shortcut().toString(QKeySequence::NativeText));
+    }
+    rows += "<tr><td>3D view</td><td>click the wall: its section becomes current</td><td>"
+            "left click</td></tr><tr><td>3D view</td><td>turn, pan, zoom</td><td>left, middle "
+            "drag, wheel</td></tr><tr><td>Status bar</td><td>cancel loading</td><td>Esc</td></tr>";
+    QMessageBox box(QMessageBox::NoIcon, "Keyboard shortcuts",
+                    "<table cellspacing=6><tr><th align=left>Menu</th><th align=left>Action</th>"
+                    "<th align=left>Keys</th></tr>" +
+                        rows + "</table>",
+                    QMessageBox::Close, this);
+    box.setObjectName("shortcuts");
+    box.exec();
 }
 
 void MainWindow::goToDepthDialog() {

@@ -125,6 +125,7 @@ private:
     void buildProgress();
     void updateProgress();
     void goToDepthDialog();
+    void showShortcuts();
     void showLoadError(const QString& name, const QString& message);
     void openDialog(bool add);
     void exportDialog();
