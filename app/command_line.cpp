@@ -13,7 +13,7 @@
 namespace caliper3d::app {
 
 namespace {
-const char kVerbs[] = "view, info, export, render, report, synth";
+const char kVerbs[] = "view, info, export, render, report, synth, batch";
 const char kUsage[] =
     "usage: caliper3d [VERB] [OPTIONS] FILE...\n"
     "  (no verb)                         GUI on the bundled example well; with no display,\n"
@@ -41,6 +41,7 @@ namespace {
 
 // Runs `verb` on `args`; returns nullopt when `verb` is not one.
 std::optional<int> runVerb(const QString& verb, const QStringList& args, int argc, char** argv) {
+    if (verb == "batch") return runBatch(args);
     if (verb == "export") return runExport(args);
     if (verb == "info") return runInfo(args);
     if (verb == "render") return runRender(args);
