@@ -196,7 +196,7 @@ Manifest readManifest(const std::string& path) {
 std::string rowOutput(const ManifestRow& row, const std::string& verb, const std::string& folder) {
     if (verb == "info") return "";
     const std::string extension = verb == "report" ? ".csv" : verb == "render" ? ".png" : ".iv";
-    const std::string given = row.output.empty() ? folder : row.output;
+    std::string given = row.output.empty() ? folder : row.output;
     if (given.empty())
         throw std::invalid_argument("no output: give the row an output or batch -o DIR/");
     const bool isFolder = given.back() == '/' || (row.output.empty() && !folder.empty());
@@ -218,7 +218,7 @@ std::vector<std::string> verbArguments(const ManifestRow& row, const std::string
     std::vector<std::string> args = {row.file};
     auto option = [&args](const char* name, const std::string& value) {
         if (value.empty()) return;
-        args.push_back(name);
+        args.emplace_back(name);
         args.push_back(value);
     };
     if (verb != "info") {

@@ -289,6 +289,7 @@ int runExport(const QStringList& args) {
         }
         // One file per well: each well its own scene.
         std::vector<std::string> files;
+        files.reserve(sources.size());
         for (const WellSource& source : sources) files.push_back(source.path);
         const std::vector<std::string> outs = names.forInputs(files, "-o");
         for (const std::string& out : outs) checkExportName(out, verb);

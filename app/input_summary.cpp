@@ -36,8 +36,8 @@ void InputSummary::addAnalysis(const reconstruction::WellAnalysis& analysis) {
         top_m = analysis.sections[0].md_m;
         bottom_m = analysis.sections[analysis.sections.size() - 1].md_m;
     }
-    for (std::size_t i = 0; i < analysis.sections.size(); ++i)
-        ++classes[std::string(reconstruction::className(analysis.sections[i].cls))];
+    for (const reconstruction::SectionResult& section : analysis.sections)
+        ++classes[std::string(reconstruction::className(section.cls))];
     zones = analysis.zones.size();
     for (const reconstruction::Zone& zone : analysis.zones)
         ++zonesByClass[std::string(reconstruction::className(zone.kind))];

@@ -323,6 +323,7 @@ int runRender(const QStringList& args) {
         }
         // One picture per well.
         std::vector<std::string> files;
+        files.reserve(sources.size());
         for (const WellSource& source : sources) files.push_back(source.path);
         const std::vector<std::string> outs = names.forInputs(files, "-o");
         ProgressDisplay progress(sources.size());

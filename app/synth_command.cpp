@@ -46,8 +46,9 @@ void writeField(const std::string& folder, std::size_t wells, double length, dou
         const io::SectionTable table = reconstruction::makeSyntheticWell(spec);
         io::writeLasFile((fs::path(folder) / name).string(), table);
         sections += table.rowCount();
-        std::fprintf(manifest, "%s,report,\"%.1f,%.1f,0\"\n", name, 25.0 * double(w % columns),
-                     25.0 * double(w / columns));
+        const std::size_t gridColumn = w % columns, gridRow = w / columns;
+        std::fprintf(manifest, "%s,report,\"%.1f,%.1f,0\"\n", name,
+                     25.0 * static_cast<double>(gridColumn), 25.0 * static_cast<double>(gridRow));
     }
     if (std::fclose(manifest) != 0) throw std::runtime_error(manifestPath + ": write failed");
     std::printf("wrote %zu wells (%zu sections, %.1f m each) and %s\n", wells, sections, length,
