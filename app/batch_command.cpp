@@ -317,6 +317,9 @@ int runBatch(const QStringList& args) {
         if (positional.size() != 1)
             throw UsageError("caliper3d batch: give one MANIFEST (found " +
                              std::to_string(positional.size()) + ")");
+        std::vector<std::string> restartArgs = {"batch"};
+        for (const QString& arg : args) restartArgs.push_back(arg.toStdString());
+        restartWithHugePageMalloc(restartArgs);
         BatchSettings settings;
         settings.manifest = positional.front();
         settings.folder = verb.isSet("output") ? verb.value("output") : "";
