@@ -95,7 +95,10 @@ void addReportOptions(QCommandLineParser& p) {
                  "Set a classification threshold, NAME=VALUE (repeatable); 'list' prints them "
                  "with their defaults.",
                  "NAME=VALUE"});
-    p.addOption({"threads", "Analysis threads (default: the machine's cores).", "N"});
+    p.addOption({"threads",
+                 "Analysis threads (default: the machine's cores); with 1 the log is also read "
+                 "on one thread.",
+                 "N"});
 }
 
 // Applies each --rule in turn; false where one is 'list', which prints the rules (with those
@@ -241,6 +244,7 @@ bool reportSettings(VerbParser& verb, ReportSettings& settings) {
     settings.report.step_m = nonNegative(verb, "step");
     readVolumeOptions(verb, settings.analysis.volume);
     settings.analysis.threads = analysisThreads(p);
+    settings.load.readThreads = std::min(2, settings.analysis.threads);
     // The analysis adds the geometry's warnings from its own counts (warnAnalysis).
     settings.load.minValidArmFraction = settings.analysis.rules.minValidArmFraction;
     settings.load.geometryWarnings = false;
