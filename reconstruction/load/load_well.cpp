@@ -54,8 +54,11 @@ GeometryOptions wellGeometryOptions(const WellSource& source, const LoadOptions&
 LoadedWell loadWell(const WellSource& source, const LoadOptions& options, const Wellhead& origin) {
     LoadedWell out;
     const GeometryOptions geometry = wellGeometryOptions(source, options, origin, &out.diagnostics);
+    io::StreamOptions stream;
+    stream.cancel = options.cancel;  // checked per block: ReadCancelled
+    stream.threads = options.readThreads;
     out.table = std::make_shared<const io::SectionTable>(loadWellTable(
-        source.path, options.read, !source.surveyPath.empty(), &out.diagnostics, options.cancel));
+        source.path, options.read, !source.surveyPath.empty(), &out.diagnostics, stream));
     out.geometry = std::make_shared<const WellGeometry>(out.table, geometry);
     if (options.geometryWarnings) warnGeometry(*out.geometry, out.diagnostics);
     return out;

@@ -49,6 +49,9 @@ struct LoadOptions {
     bool geometryWarnings = true;
     // Set from another thread, stops the log's read within a block (io::ReadCancelled).
     const std::atomic<bool>* cancel = nullptr;
+    // Threads parsing the log (io::StreamOptions::threads, 1 or 2): 1 where several wells are
+    // read at once, each in its own process (caliper3d batch -j 2).
+    int readThreads = 2;
 };
 
 // A loaded well: its table, its geometry (path and frames; segments are built
