@@ -9,6 +9,8 @@ packages=(
   libgtest-dev libbenchmark-dev libfast-float-dev libassimp-dev libtinygltf-dev
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   xvfb xauth clang libclang-rt-14-dev clang-format clang-tidy locales
+  # A one-node Slurm for the test of the cluster examples (tests/cluster/slurm_field_test.sh).
+  slurm-wlm munge
 )
 
 missing=()
