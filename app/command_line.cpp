@@ -13,7 +13,7 @@
 namespace caliper3d::app {
 
 namespace {
-const char kVerbs[] = "view, info, export, render, report, synth";
+const char kVerbs[] = "view, info, export, render, report, synth, batch";
 const char kUsage[] =
     "usage: caliper3d [VERB] [OPTIONS] FILE...\n"
     "  (no verb)                         GUI on the bundled example well; with no display,\n"
@@ -26,9 +26,14 @@ const char kUsage[] =
     "                                    (.glb, .ply, .stl, .obj; --detail shown|full)\n"
     "  render FILE... -o OUT.png         picture (--width W --height H\n"
     "                                    --view iso|north|east|top|hole --at MD)\n"
-    "  report FILE -o OUT.csv            per-section analysis (--step M, --zones Z.csv,\n"
+    "  report FILE... -o OUT.csv         per-section analysis (--step M, --zones Z.csv,\n"
     "                                    --las OUT.las, --casing-od L, --excess F, --rule N=V)\n"
     "  synth -o OUT [--length M --step M --profile NAME]   synthetic log with known features\n"
+    "  synth --field N -o DIR/           N synthetic wells and a manifest for batch\n"
+    "  batch MANIFEST [-o DIR/ -j N --row K]   one well a row (CSV or JSON), each in its own\n"
+    "                                    process; batch --merge OUT.jsonl IN... joins summaries\n"
+    "many files: -o DIR/ or -o 'out/{stem}.csv' writes one output per FILE (export and render\n"
+    "        with one -o FILE draw them in one scene); --summary FILE.jsonl: a JSON line each\n"
     "common: --arms N --depth-unit m|ft --radius-unit in|mm|cm --bit-size VALUE[in|mm]\n"
     "        --radii MNEM,... --diameters MNEM,... --nulls declared|common --row-step METRES\n"
     "        --survey FILE --wellhead E,N,ELEV (once per FILE) --steep-inclination DEG\n"
@@ -41,6 +46,7 @@ namespace {
 
 // Runs `verb` on `args`; returns nullopt when `verb` is not one.
 std::optional<int> runVerb(const QString& verb, const QStringList& args, int argc, char** argv) {
+    if (verb == "batch") return runBatch(args);
     if (verb == "export") return runExport(args);
     if (verb == "info") return runInfo(args);
     if (verb == "render") return runRender(args);

@@ -9,6 +9,7 @@ enum ExitStatus { kExitOk = 0, kExitBadInput = 1, kExitUsage = 2 };
 
 // Each verb is one function over its own arguments (without the verb itself);
 // all of them are thin shells over io/, reconstruction/ and scenegraph/.
+int runBatch(const QStringList& args);
 int runExport(const QStringList& args);
 int runInfo(const QStringList& args);
 int runRender(const QStringList& args);

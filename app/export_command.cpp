@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <exception>
@@ -8,6 +9,9 @@
 
 #include "app/commands.h"
 #include "app/input_options.h"
+#include "app/input_summary.h"
+#include "app/output_names.h"
+#include "app/progress_display.h"
 #include "app/scene_assembly.h"
 #include "app/verb_parser.h"
 #include "reconstruction/load/load_well.h"
@@ -47,7 +51,7 @@ bool endsWith(const std::string& text, const std::string& tail) {
 // The Open Inventor export: the scene the window builds, or every level streamed.
 int exportIv(const std::vector<WellSource>& sources, const LoadOptions& options,
              const std::string& out, bool full, const scenegraph::IvExportOptions& ivOptions,
-             bool progress) {
+             bool progress, std::vector<InputSummary>& inputs) {
     scenegraph::initCoin();
     const auto start = std::chrono::steady_clock::now();
     // Steps: the wells read, the scene built, the file written.
@@ -56,6 +60,7 @@ int exportIv(const std::vector<WellSource>& sources, const LoadOptions& options,
         assembleScene(sources, options,
                       [&steps](std::vector<std::shared_ptr<const reconstruction::WellGeometry>>&,
                                double&) { steps.step(1); });
+    inputs = scene.inputs;
     if (scene.wells == 0) return kExitBadInput;
     steps.step(2);
     const auto built = std::chrono::steady_clock::now();
@@ -78,7 +83,7 @@ int exportIv(const std::vector<WellSource>& sources, const LoadOptions& options,
 // writer, and the well freed before the next is read.
 int exportMesh(const std::vector<WellSource>& sources, const LoadOptions& options,
                const std::string& out, scenegraph::MeshFormat format, bool full, bool binary,
-               bool progress) {
+               bool progress, std::vector<InputSummary>& inputs) {
     const auto start = std::chrono::steady_clock::now();
     // Steps: each well read, each well meshed, the file written.
     const int total = 2 * static_cast<int>(sources.size()) + 1;
@@ -90,9 +95,17 @@ int exportMesh(const std::vector<WellSource>& sources, const LoadOptions& option
         full ? scenegraph::MeshDetail::Full : scenegraph::MeshDetail::Shown;
     int wells = 0, failures = 0;
     for (const WellSource& source : sources) {
+        InputSummary& input = inputs.emplace_back();
+        input.file = source.path;
         try {
             const reconstruction::LoadedWell loaded =
                 reconstruction::loadWell(source, options, origin);
+            input.rows = loaded.table->rowCount();
+            if (input.rows > 0) {
+                input.top_m = loaded.table->depth_m.front();
+                input.bottom_m = loaded.table->depth_m.back();
+            }
+            input.addWarnings(loaded.diagnostics);
             steps.step(++done);
             // Drawn as asked (--colour-by, --exaggerate); each well over its own colour range,
             // as it is freed before the next is read.
@@ -114,6 +127,7 @@ int exportMesh(const std::vector<WellSource>& sources, const LoadOptions& option
             ++failures;
             done = 2 * (wells + failures);
             std::fprintf(stderr, "caliper3d: %s\n", e.what());
+            input.error = inputErrorFrom(e, source.path);
         }
     }
     if (wells == 0) return kExitBadInput;
@@ -130,13 +144,80 @@ int exportMesh(const std::vector<WellSource>& sources, const LoadOptions& option
     return failures > 0 ? kExitBadInput : kExitOk;
 }
 
+// How an export writes, from its options and the output's name.
+struct ExportSettings {
+    LoadOptions load;
+    bool full = false;
+    bool ascii = false;
+    bool gzip = false;
+    bool progress = false;
+};
+
+// Exports `sources` into `out` (its name says the format); each source's summary line goes to
+// `inputs`, failed where the export as a whole failed.
+int exportTo(const std::vector<WellSource>& sources, const ExportSettings& settings,
+             const std::string& out, std::vector<InputSummary>& inputs) {
+    const double start = steadySeconds();
+    const std::size_t first = inputs.size();
+    int status = kExitBadInput;
+    try {
+        if (const std::optional<scenegraph::MeshFormat> mesh = scenegraph::meshFormatFor(out))
+            status = exportMesh(sources, settings.load, out, *mesh, settings.full, !settings.ascii,
+                                settings.progress, inputs);
+        else {
+            scenegraph::IvExportOptions ivOptions;
+            ivOptions.binary = !settings.ascii;
+            ivOptions.gzip = settings.gzip || endsWith(out, ".iv.gz");
+            status = exportIv(sources, settings.load, out, settings.full, ivOptions,
+                              settings.progress, inputs);
+        }
+    } catch (const UsageError&) {
+        throw;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "caliper3d export: %s\n", e.what());
+        inputs.resize(std::max(inputs.size(), first));
+        for (std::size_t i = first; i < inputs.size(); ++i)
+            if (!inputs[i].error) inputs[i].error = InputError{out, 0, e.what()};
+        status = kExitBadInput;
+    }
+    // A well read but written nowhere (no well could be) is no success either.
+    for (std::size_t i = first; i < inputs.size(); ++i) {
+        InputSummary& input = inputs[i];
+        input.verb = "export";
+        if (!input.error && status != kExitOk && inputs.size() - first == 1)
+            input.error = InputError{out, 0, "not written"};
+        if (!input.error) input.outputs = {out};
+        stampCost(input, start);
+    }
+    return status;
+}
+
+// The output's name as a format: throws UsageError for an extension that is none.
+void checkExportName(const std::string& out, const VerbParser& verb) {
+    const bool iv = endsWith(out, ".iv") || endsWith(out, ".iv.gz");
+    const std::optional<scenegraph::MeshFormat> mesh = scenegraph::meshFormatFor(out);
+    if (!iv && !mesh)
+        throw UsageError("caliper3d export: the output must end in " +
+                         std::string(kAcceptedExtensions) + ", got '" + out + "'");
+    if (mesh && verb.isSet("gzip"))
+        throw UsageError("caliper3d export: --gzip applies to .iv only");
+    if (mesh && *mesh != scenegraph::MeshFormat::Stl &&
+        (verb.isSet("ascii") || verb.isSet("binary")))
+        throw UsageError(
+            "caliper3d export: --ascii and --binary apply to .iv and .stl (.glb is always "
+            "binary, .ply and .obj always text)");
+}
+
 }  // namespace
 
 int runExport(const QStringList& args) {
     return guardedVerb("export", [&]() -> int {
         VerbParser verb(
-            "export", "FILE... -o OUT",
+            "export", "FILE... -o OUT|DIR/|PATTERN",
             "Export wells for other tools; the extension of OUT chooses the format.\n"
+            "-o OUT puts every FILE in one scene; -o DIR/ (DIR/STEM.iv) or a pattern with "
+            "{stem}, {name} or {index} (out/{stem}.glb) writes one file per FILE, a bad one not "
+            "stopping the others (exit status 1).\n"
             ".iv, .iv.gz: an Open Inventor scene, each well's path and, per segment, an SoLOD. "
             "By default (--detail shown) its levels are the coarse ones the window loads up "
             "front (sections kept by shape error, 12-point rings and the raw N-gon; see "
@@ -180,40 +261,50 @@ int runExport(const QStringList& args) {
         addInputOptions(p);
         addColourOptions(p);
         addWellSourceOptions(p);
+        addSummaryOption(p);
         if (!verb.parse(args, 1)) return kExitOk;
         if (!verb.isSet("output")) throw UsageError("caliper3d export: -o OUT is required");
-        const std::string out = verb.value("output");
-        const bool gzipName = endsWith(out, ".iv.gz");
-        const bool iv = endsWith(out, ".iv") || gzipName;
-        const std::optional<scenegraph::MeshFormat> mesh = scenegraph::meshFormatFor(out);
-        if (!iv && !mesh)
-            throw UsageError("caliper3d export: the output must end in " +
-                             std::string(kAcceptedExtensions) + ", got '" + out + "'");
+        const OutputNames names(verb.value("output"), ".iv");
         const std::string detail = verb.value("detail");
         if (detail != "shown" && detail != "full")
             throw UsageError("caliper3d export: --detail takes shown or full, got '" + detail +
                              "'");
         if (verb.isSet("ascii") && verb.isSet("binary"))
             throw UsageError("caliper3d export: give --ascii or --binary, not both");
-        if (mesh && verb.isSet("gzip"))
-            throw UsageError("caliper3d export: --gzip applies to .iv only");
-        if (mesh && *mesh != scenegraph::MeshFormat::Stl &&
-            (verb.isSet("ascii") || verb.isSet("binary")))
-            throw UsageError(
-                "caliper3d export: --ascii and --binary apply to .iv and .stl (.glb is always "
-                "binary, .ply and .obj always text)");
-        LoadOptions options = inputOptionsFrom(p);
-        options.colour = colourRequestFrom(p);
+        ExportSettings settings;
+        settings.load = inputOptionsFrom(p);
+        settings.load.colour = colourRequestFrom(p);
+        settings.full = detail == "full";
+        settings.ascii = verb.isSet("ascii");
+        settings.gzip = verb.isSet("gzip");
+        settings.progress = verb.isSet("progress");
         const std::vector<WellSource> sources = wellSourcesFrom(p, verb.positional());
-        const bool full = detail == "full";
-        const bool progress = verb.isSet("progress");
-        if (mesh)
-            return exportMesh(sources, options, out, *mesh, full, !verb.isSet("ascii"), progress);
-
-        scenegraph::IvExportOptions ivOptions;
-        ivOptions.binary = !verb.isSet("ascii");
-        ivOptions.gzip = verb.isSet("gzip") || gzipName;
-        return exportIv(sources, options, out, full, ivOptions, progress);
+        SummaryFile summaries(verb.value("summary"));
+        std::vector<InputSummary> inputs;
+        if (!names.perInput()) {
+            checkExportName(names.spec(), verb);
+            const int status = exportTo(sources, settings, names.spec(), inputs);
+            for (const InputSummary& input : inputs) summaries.write(input);
+            return status;
+        }
+        // One file per well: each well its own scene.
+        std::vector<std::string> files;
+        files.reserve(sources.size());
+        for (const WellSource& source : sources) files.push_back(source.path);
+        const std::vector<std::string> outs = names.forInputs(files, "-o");
+        for (const std::string& out : outs) checkExportName(out, verb);
+        ProgressDisplay progress(sources.size());
+        int failures = 0;
+        for (std::size_t i = 0; i < sources.size(); ++i) {
+            progress.started(files[i], files[i]);
+            inputs.clear();
+            const int status = exportTo({sources[i]}, settings, outs[i], inputs);
+            progress.clear();
+            failures += status != kExitOk;
+            for (const InputSummary& input : inputs) summaries.write(input);
+            progress.finished(files[i], status == kExitOk);
+        }
+        return failures > 0 ? kExitBadInput : kExitOk;
     });
 }
 

@@ -2,6 +2,7 @@
 
 #include "app/commands.h"
 #include "app/input_options.h"
+#include "app/input_summary.h"
 #include "app/verb_parser.h"
 #include "io/log_reader.h"
 #include "io/survey_reader.h"
@@ -17,6 +18,7 @@ int runInfo(const QStringList& args) {
             "info", "FILE...",
             "Describe caliper logs: format, depth range, curves and their roles, nulls, warnings.");
         addInputOptions(verb.parser());
+        addSummaryOption(verb.parser());
         if (!verb.parse(args, 1)) return kExitOk;
         rejectInapplicable(verb.parser(), "info",
                            {"points", "segment-length", "shape-tolerance", "exaggerate",
@@ -24,7 +26,12 @@ int runInfo(const QStringList& args) {
                            "info describes the file as read; these shape the 3D reconstruction");
         const LoadOptions options = inputOptionsFrom(verb.parser());
         int failures = 0;
+        SummaryFile summaries(verb.value("summary"));
         for (const std::string& file : verb.positional()) {
+            InputSummary summary;
+            summary.file = file;
+            summary.verb = "info";
+            const double start = steadySeconds();
             try {
                 // Rows with a section shape, by the rule the other verbs draw and analyse with.
                 const reconstruction::GeometryOptions geometry =
@@ -41,6 +48,10 @@ int runInfo(const QStringList& args) {
                                             geometry.maxArmRadius_mm) >= needed;
                     });
                 std::fputs(io::formatLogInfo(info).c_str(), stdout);
+                summary.rows = info.rows;
+                summary.top_m = info.top_m;
+                summary.bottom_m = info.bottom_m;
+                summary.addWarnings(info.diagnostics);
                 if (!info.survey) {
                     std::printf(
                         "caliper:   %zu of %zu sections measured (at least %d of %d arms valid)\n",
@@ -48,10 +59,13 @@ int runInfo(const QStringList& args) {
                     if (measured == 0) {
                         // Described, but every other verb refuses it: say so and fail.
                         ++failures;
-                        std::fprintf(stderr,
-                                     "caliper3d info: %s: no usable caliper data: no section has "
-                                     "at least %d of its %d arms with a valid reading\n",
-                                     file.c_str(), needed, arms);
+                        char why[160];
+                        std::snprintf(why, sizeof why,
+                                      "no usable caliper data: no section has at least %d of its "
+                                      "%d arms with a valid reading",
+                                      needed, arms);
+                        std::fprintf(stderr, "caliper3d info: %s: %s\n", file.c_str(), why);
+                        summary.error = InputError{file, 0, why};
                     }
                 }
                 if (info.survey) {
@@ -63,7 +77,10 @@ int runInfo(const QStringList& args) {
             } catch (const std::exception& e) {
                 ++failures;
                 std::fprintf(stderr, "caliper3d info: %s\n", e.what());
+                summary.error = inputErrorFrom(e, file);
             }
+            stampCost(summary, start);
+            summaries.write(summary);
             std::fputs("\n", stdout);
         }
         return failures > 0 ? kExitBadInput : kExitOk;

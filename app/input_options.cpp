@@ -238,6 +238,15 @@ std::vector<WellSource> wellSourcesFrom(const QCommandLineParser& parser,
     return out;
 }
 
+void addSummaryOption(QCommandLineParser& parser) {
+    parser.addOption({"summary",
+                      "Also write one JSON object per input to this file, one a line: file, "
+                      "status, error (file, line, reason), rows, depths, classes, zones, "
+                      "volumes, warnings, seconds, peak memory (docs/formats.md, \"Summary "
+                      "lines\").",
+                      "FILE.jsonl"});
+}
+
 std::string formatWarnings(const io::Diagnostics& diagnostics) {
     std::string out;
     char count[96];

@@ -53,6 +53,9 @@ std::vector<WellSource> wellSourcesFrom(const QCommandLineParser& parser,
 // "E,N,ELEV" in metres; throws UsageError.
 reconstruction::Wellhead parseWellhead(const std::string& text);
 
+// --summary FILE.jsonl: one JSON line per input (app/input_summary.h).
+void addSummaryOption(QCommandLineParser& parser);
+
 // A file's warnings, one a line ("file:line: warning: ..."; no line for one
 // about the whole well), and how many more there were than the diagnostics kept.
 std::string formatWarnings(const io::Diagnostics& diagnostics);

@@ -12,8 +12,11 @@
 
 #include "app/commands.h"
 #include "app/input_options.h"
+#include "app/input_summary.h"
+#include "app/output_names.h"
 #include "app/pick_output.h"
 #include "app/png_output.h"
+#include "app/progress_display.h"
 #include "app/scene_assembly.h"
 #include "app/verb_parser.h"
 #include "io/number_parsing.h"
@@ -150,12 +153,115 @@ void printStats(scenegraph::OffscreenRenderer& renderer, SoNode* root, int width
         firstPictureMs, loadMs);
 }
 
+// What every picture of one run is drawn with.
+struct RenderSettings {
+    int width = 0, height = 0;
+    bool downHole = false;
+    std::optional<scenegraph::ViewDirection> view;
+    bool atSet = false;
+    double at = 0.0;
+    std::string atText;
+    std::optional<PickPixel> pick;
+    LoadOptions options;
+    PicturePlan plan{};
+    float tolerance = 2.0F;
+    bool stats = false;
+};
+
+// Draws `sources` into the picture `out`.
+int renderPicture(const std::vector<WellSource>& sources, const RenderSettings& r,
+                  const std::string& out, std::vector<InputSummary>& inputs) {
+    const int width = r.width, height = r.height;
+    const bool downHole = r.downHole;
+    const auto start = std::chrono::steady_clock::now();
+    scenegraph::initCoin();
+    PicturePlan plan = r.plan;
+    AssembledScene scene = assembleScene(sources, r.options, std::ref(plan));
+    inputs = scene.inputs;
+    if (scene.wells == 0) return kExitBadInput;
+    scenegraph::NodeRef<SoSeparator> root;
+    scenegraph::ViewOverlay overlay;
+    std::vector<std::string> caption{scenegraph::exaggerationCaption(plan.exaggeration)};
+    double annotatedTop = plan.top_m(), annotatedBottom = plan.bottom_m();
+    if (downHole) {
+        const auto& geometry = *scene.geometries.front();
+        const double top = geometry.table().depth_m.front();
+        const double bottom = geometry.table().depth_m.back();
+        double at = r.atSet ? r.at : top;
+        if (at < top || at > bottom)
+            throw UsageError("caliper3d render: --at " + r.atText + " is outside " +
+                             (plan.depth ? "--depth " + plan.depthText
+                                         : "the logged depths of " + geometry.table().source) +
+                             " (" + depthRange(top, bottom) + ")");
+        const scenegraph::CameraPose pose = downHolePose(geometry, at);
+        root = scenegraph::makeRef(scenegraph::makeRenderRoot(scene.root.get(), pose));
+        annotatedTop = at;
+        annotatedBottom = at + pose.fogVisibility_m;
+        char eye[64];
+        std::snprintf(eye, sizeof eye, "eye at MD %.2f m", at);
+        caption.insert(caption.begin(), eye);
+    } else {
+        // The path above each log is part of the picture when it shows the whole well.
+        if (!plan.depth)
+            for (const auto& geometry : scene.geometries)
+                if (SoSeparator* above = scenegraph::makeUnloggedPath(*geometry))
+                    scene.root->addChild(above);
+        root = scenegraph::makeRef(
+            scenegraph::makeRenderRoot(scene.root.get(), *r.view, width, height));
+    }
+    annotate(scene, root.get(), width, height, annotatedTop, annotatedBottom, plan.exaggeration,
+             !downHole);
+    overlay.setCaption(caption);
+    root->addChild(overlay.root());
+    refineForCamera(scene, root.get(), height, r.tolerance);
+    addColourLegend(root.get(), scene);
+    scenegraph::OffscreenRenderer renderer;
+    const scenegraph::RenderedImage image =
+        renderer.render(root.get(), width, height, scenegraph::kBackgroundColour);
+    const auto firstPicture = std::chrono::steady_clock::now();
+    savePng(image, out);
+    if (r.stats)
+        printStats(renderer, root.get(), width, height,
+                   std::chrono::duration<double, std::milli>(firstPicture - start).count(),
+                   scene.load_ms);
+    std::printf("wrote %s (%dx%d)\n", out.c_str(), width, height);
+    if (r.pick) std::fputs(describePick(scene, root.get(), width, height, *r.pick).c_str(), stdout);
+    return scene.failures > 0 ? kExitBadInput : kExitOk;
+}
+
+// renderPicture, each source's summary line to `inputs` (failed where the picture failed).
+int renderTo(const std::vector<WellSource>& sources, const RenderSettings& r,
+             const std::string& out, std::vector<InputSummary>& inputs) {
+    const double start = steadySeconds();
+    const std::size_t first = inputs.size();
+    int status = kExitBadInput;
+    try {
+        status = renderPicture(sources, r, out, inputs);
+    } catch (const UsageError&) {
+        throw;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "caliper3d render: %s\n", e.what());
+        for (std::size_t i = first; i < inputs.size(); ++i)
+            if (!inputs[i].error) inputs[i].error = InputError{out, 0, e.what()};
+    }
+    for (std::size_t i = first; i < inputs.size(); ++i) {
+        InputSummary& input = inputs[i];
+        input.verb = "render";
+        if (!input.error) input.outputs = {out};
+        stampCost(input, start);
+    }
+    return status;
+}
+
 }  // namespace
 
 int runRender(const QStringList& args) {
     return guardedVerb("render", [&]() -> int {
-        VerbParser verb("render", "FILE... -o OUT.png",
+        VerbParser verb("render", "FILE... -o OUT.png|DIR/|PATTERN",
                         "Render wells to a PNG picture without a window.\n"
+                        "-o OUT.png draws every FILE in one picture; -o DIR/ (DIR/STEM.png) or a\n"
+                        "pattern with {stem}, {name} or {index} (pics/{stem}.png) one picture\n"
+                        "per FILE, a bad one not stopping the others (exit status 1).\n"
                         "The picture shows every well whole (or --depth TOP,BOTTOM of it) with\n"
                         "depth ticks labelled in metres of measured depth, each well's name at\n"
                         "its wellhead, the path above the log dashed, a north arrow and the\n"
@@ -164,6 +270,7 @@ int runRender(const QStringList& args) {
                         "picture's height across); looking down the hole, as logged.");
         QCommandLineParser& p = verb.parser();
         addRenderOptions(p);
+        addSummaryOption(p);
         if (!verb.parse(args, 1)) return kExitOk;
         if (!verb.isSet("output")) throw UsageError("caliper3d render: -o OUT.png is required");
         bool okW = false, okH = false;
@@ -192,60 +299,45 @@ int runRender(const QStringList& args) {
             !(tolerance >= 0.1 && tolerance <= 100.0))
             throw UsageError("caliper3d render: --pixel-tolerance takes pixels from 0.1 to 100");
 
-        const auto start = std::chrono::steady_clock::now();
-        scenegraph::initCoin();
-        AssembledScene scene =
-            assembleScene(wellSourcesFrom(p, verb.positional()), options, std::ref(plan));
-        if (scene.wells == 0) return kExitBadInput;
-        const std::string out = verb.value("output");
-        scenegraph::NodeRef<SoSeparator> root;
-        scenegraph::ViewOverlay overlay;
-        std::vector<std::string> caption{scenegraph::exaggerationCaption(plan.exaggeration)};
-        double annotatedTop = plan.top_m(), annotatedBottom = plan.bottom_m();
-        if (downHole) {
-            const auto& geometry = *scene.geometries.front();
-            const double top = geometry.table().depth_m.front();
-            const double bottom = geometry.table().depth_m.back();
-            if (!verb.isSet("at")) at = top;
-            if (at < top || at > bottom)
-                throw UsageError("caliper3d render: --at " + verb.value("at") + " is outside " +
-                                 (plan.depth ? "--depth " + plan.depthText
-                                             : "the logged depths of " + geometry.table().source) +
-                                 " (" + depthRange(top, bottom) + ")");
-            const scenegraph::CameraPose pose = downHolePose(geometry, at);
-            root = scenegraph::makeRef(scenegraph::makeRenderRoot(scene.root.get(), pose));
-            annotatedTop = at;
-            annotatedBottom = at + pose.fogVisibility_m;
-            char eye[64];
-            std::snprintf(eye, sizeof eye, "eye at MD %.2f m", at);
-            caption.insert(caption.begin(), eye);
-        } else {
-            // The path above each log is part of the picture when it shows the whole well.
-            if (!plan.depth)
-                for (const auto& geometry : scene.geometries)
-                    if (SoSeparator* above = scenegraph::makeUnloggedPath(*geometry))
-                        scene.root->addChild(above);
-            root = scenegraph::makeRef(
-                scenegraph::makeRenderRoot(scene.root.get(), *view, width, height));
+        RenderSettings settings;
+        settings.width = width;
+        settings.height = height;
+        settings.downHole = downHole;
+        settings.view = view;
+        settings.atSet = verb.isSet("at");
+        settings.at = at;
+        settings.atText = verb.value("at");
+        settings.pick = pick;
+        settings.options = options;
+        settings.plan = plan;
+        settings.tolerance = static_cast<float>(tolerance);
+        settings.stats = verb.isSet("stats");
+        const std::vector<WellSource> sources = wellSourcesFrom(p, verb.positional());
+        const OutputNames names(verb.value("output"), ".png");
+        SummaryFile summaries(verb.value("summary"));
+        if (!names.perInput()) {
+            std::vector<InputSummary> inputs;
+            const int status = renderTo(sources, settings, names.spec(), inputs);
+            for (const InputSummary& input : inputs) summaries.write(input);
+            return status;
         }
-        annotate(scene, root.get(), width, height, annotatedTop, annotatedBottom, plan.exaggeration,
-                 !downHole);
-        overlay.setCaption(caption);
-        root->addChild(overlay.root());
-        refineForCamera(scene, root.get(), height, static_cast<float>(tolerance));
-        addColourLegend(root.get(), scene);
-        scenegraph::OffscreenRenderer renderer;
-        const scenegraph::RenderedImage image =
-            renderer.render(root.get(), width, height, scenegraph::kBackgroundColour);
-        const auto firstPicture = std::chrono::steady_clock::now();
-        savePng(image, out);
-        if (verb.isSet("stats"))
-            printStats(renderer, root.get(), width, height,
-                       std::chrono::duration<double, std::milli>(firstPicture - start).count(),
-                       scene.load_ms);
-        std::printf("wrote %s (%dx%d)\n", out.c_str(), width, height);
-        if (pick) std::fputs(describePick(scene, root.get(), width, height, *pick).c_str(), stdout);
-        return scene.failures > 0 ? kExitBadInput : kExitOk;
+        // One picture per well.
+        std::vector<std::string> files;
+        files.reserve(sources.size());
+        for (const WellSource& source : sources) files.push_back(source.path);
+        const std::vector<std::string> outs = names.forInputs(files, "-o");
+        ProgressDisplay progress(sources.size());
+        int failures = 0;
+        for (std::size_t i = 0; i < sources.size(); ++i) {
+            progress.started(files[i], files[i]);
+            std::vector<InputSummary> inputs;
+            const int status = renderTo({sources[i]}, settings, outs[i], inputs);
+            progress.clear();
+            failures += status != kExitOk;
+            for (const InputSummary& input : inputs) summaries.write(input);
+            progress.finished(files[i], status == kExitOk);
+        }
+        return failures > 0 ? kExitBadInput : kExitOk;
     });
 }
 

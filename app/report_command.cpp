@@ -9,6 +9,9 @@
 
 #include "app/commands.h"
 #include "app/input_options.h"
+#include "app/input_summary.h"
+#include "app/output_names.h"
+#include "app/progress_display.h"
 #include "app/verb_parser.h"
 #include "io/number_parsing.h"
 #include "reconstruction/analysis/report_writer.h"
@@ -132,23 +135,39 @@ int analysisThreads(const QCommandLineParser& p) {
     return threads;
 }
 
-// Where the report goes: the section report (-o), and the zone table and the LAS curves where
-// asked for (empty where not); each a file, or standard output for '-' (one of them at most).
+// Where one well's report goes: the section report (-o), and the zone table and the LAS
+// curves where asked for (empty where not); each a file, or standard output for '-' (one of
+// them at most).
 struct ReportOutputs {
     std::string sections, zones, las;
     bool toStdout = false;
 };
 
-ReportOutputs reportOutputs(const VerbParser& verb) {
-    ReportOutputs to;
-    to.sections = verb.value("output");
-    to.zones = verb.isSet("zones") ? verb.value("zones") : std::string();
-    to.las = verb.isSet("las") ? verb.value("las") : std::string();
-    const int dashes = (to.sections == "-") + (to.zones == "-") + (to.las == "-");
+// -o, --zones and --las for each of `files`: one of each per file (a folder or a pattern
+// with {stem}) when there are several.
+std::vector<ReportOutputs> reportOutputs(const VerbParser& verb,
+                                         const std::vector<std::string>& files) {
+    const OutputNames sections(verb.value("output"), ".csv");
+    const OutputNames zones(verb.isSet("zones") ? verb.value("zones") : "", "-zones.csv");
+    const OutputNames las(verb.isSet("las") ? verb.value("las") : "", ".las");
+    const int dashes = (sections.spec() == "-") + (zones.spec() == "-") + (las.spec() == "-");
     if (dashes > 1)
         throw UsageError("caliper3d report: only one of -o, --zones and --las can be '-'");
-    to.toStdout = dashes == 1;
-    return to;
+    if (files.size() > 1)
+        for (const OutputNames* names : {&sections, &zones, &las})
+            if (!names->spec().empty() && !names->perInput())
+                throw UsageError("caliper3d report: " + std::to_string(files.size()) +
+                                 " files write one report each: give -o (and --zones, --las) a "
+                                 "folder (out/) or a pattern with {stem} (out/{stem}.csv), not '" +
+                                 names->spec() + "'");
+    const std::vector<std::string> sectionFiles = sections.forInputs(files, "-o");
+    std::vector<std::string> zoneFiles(files.size()), lasFiles(files.size());
+    if (!zones.spec().empty()) zoneFiles = zones.forInputs(files, "--zones");
+    if (!las.spec().empty()) lasFiles = las.forInputs(files, "--las");
+    std::vector<ReportOutputs> out;
+    for (std::size_t i = 0; i < files.size(); ++i)
+        out.push_back({sectionFiles[i], zoneFiles[i], lasFiles[i], dashes == 1});
+    return out;
 }
 
 // Writes each output asked for, standard output flushed.
@@ -169,64 +188,111 @@ void writeReports(const ReportOutputs& to, const reconstruction::WellAnalysis& r
     std::cout.flush();
 }
 
+// What every well of one run is read and analysed with.
+struct ReportSettings {
+    LoadOptions load;
+    reconstruction::AnalysisOptions analysis;
+    reconstruction::ReportOptions report;
+};
+
+// Reads, analyses and reports one well; its summary line (the caller stamps the cost).
+InputSummary reportWell(const WellSource& well, const ReportSettings& settings,
+                        const ReportOutputs& to, ProgressDisplay& progress) {
+    InputSummary summary;
+    reconstruction::ReportOptions report = settings.report;
+    report.wellhead = well.wellhead;
+    reconstruction::LoadedWell loaded =
+        reconstruction::loadWell(well, settings.load, reconstruction::sceneOrigin({well}));
+    io::Diagnostics& diagnostics = loaded.diagnostics;
+    const reconstruction::WellGeometry& geometry = *loaded.geometry;
+    const reconstruction::WellAnalysis result =
+        reconstruction::analyseWell(geometry, settings.analysis);
+    warnWhereCasingDoesNotFit(result, settings.analysis.volume, well.path, diagnostics);
+    progress.clear();
+    writeReports(to, result, report, std::filesystem::path(well.path).stem().string());
+
+    // With the report on standard output, everything else goes to standard error.
+    FILE* info = to.toStdout ? stderr : stdout;
+    reconstruction::warnAnalysis(geometry, result, diagnostics);
+    std::fprintf(info, "%s: %zu sections, %zu reported, %zu zones, %zu no data, %zu warnings%s\n",
+                 well.path.c_str(), result.sections.size(),
+                 reconstruction::reportedSections(result, report).size(), result.zones.size(),
+                 result.noDataSections, diagnostics.warningCount,
+                 well.surveyPath.empty() ? "" : (", path from " + well.surveyPath).c_str());
+    std::fputs(reconstruction::formatAnalysisSummary(result).c_str(), info);
+    printWarnings(diagnostics);
+    for (const std::string& written : {to.sections, to.zones, to.las})
+        if (!written.empty() && written != "-") {
+            std::fprintf(info, "wrote %s\n", written.c_str());
+            summary.outputs.push_back(written);
+        }
+    summary.addAnalysis(result);
+    summary.addWarnings(diagnostics);
+    return summary;
+}
+
+// The settings of every well from the options; false where --rule list printed the rules.
+bool reportSettings(VerbParser& verb, ReportSettings& settings) {
+    const QCommandLineParser& p = verb.parser();
+    if (!applyRules(p, settings.analysis.rules)) return false;
+    rejectInapplicable(p, "report", {"exaggerate", "segment-length", "shape-tolerance"},
+                       "they shape the 3D picture, and the report measures the log");
+    settings.load = inputOptionsFrom(p);
+    settings.report.step_m = nonNegative(verb, "step");
+    readVolumeOptions(verb, settings.analysis.volume);
+    settings.analysis.threads = analysisThreads(p);
+    // The analysis adds the geometry's warnings from its own counts (warnAnalysis).
+    settings.load.minValidArmFraction = settings.analysis.rules.minValidArmFraction;
+    settings.load.geometryWarnings = false;
+    return true;
+}
+
 }  // namespace
 
 int runReport(const QStringList& args) {
     return guardedVerb("report", [&]() -> int {
-        VerbParser verb("report", "FILE -o OUT.csv",
-                        "Analyse every section of a well: shape, class, zones, volumes.");
+        VerbParser verb("report", "FILE... -o OUT.csv|DIR/|PATTERN",
+                        "Analyse every section of a well: shape, class, zones, volumes.\n"
+                        "With several files, -o (and --zones, --las) take a folder (out/: "
+                        "out/STEM.csv, out/STEM-zones.csv, out/STEM.las) or a pattern with "
+                        "{stem}, {name} or {index} (out/{stem}.csv); each file is reported on "
+                        "its own, and a bad one does not stop the others (exit status 1).");
         QCommandLineParser& p = verb.parser();
         addReportOptions(p);
         addInputOptions(p);
         addWellSourceOptions(p);
+        addSummaryOption(p);
         if (!verb.parse(args, 0)) return kExitOk;
 
-        reconstruction::AnalysisOptions analysis;
-        if (!applyRules(p, analysis.rules)) return kExitOk;
+        ReportSettings settings;
+        if (!reportSettings(verb, settings)) return kExitOk;
         const std::vector<std::string> files = verb.positional();
-        if (files.size() != 1)
-            throw UsageError("caliper3d report: give exactly one FILE (found " +
-                             std::to_string(files.size()) + "); run it once per well");
+        if (files.empty()) throw UsageError("caliper3d report: give at least one FILE");
         if (!verb.isSet("output")) throw UsageError("caliper3d report: -o OUT.csv is required");
-        rejectInapplicable(p, "report", {"exaggerate", "segment-length", "shape-tolerance"},
-                           "they shape the 3D picture, and the report measures the log");
-        LoadOptions options = inputOptionsFrom(p);
-        const WellSource well = wellSourcesFrom(p, files).front();
-
-        reconstruction::ReportOptions report;
-        report.step_m = nonNegative(verb, "step");
-        report.wellhead = well.wellhead;
-        readVolumeOptions(verb, analysis.volume);
-        analysis.threads = analysisThreads(p);
-
-        // The analysis adds the geometry's warnings from its own counts (warnAnalysis).
-        options.minValidArmFraction = analysis.rules.minValidArmFraction;
-        options.geometryWarnings = false;
-        reconstruction::LoadedWell loaded =
-            reconstruction::loadWell(well, options, reconstruction::sceneOrigin({well}));
-        io::Diagnostics& diagnostics = loaded.diagnostics;
-        const reconstruction::WellGeometry& geometry = *loaded.geometry;
-        const reconstruction::WellAnalysis result = reconstruction::analyseWell(geometry, analysis);
-        warnWhereCasingDoesNotFit(result, analysis.volume, well.path, diagnostics);
-
-        const ReportOutputs to = reportOutputs(verb);
-        writeReports(to, result, report, std::filesystem::path(well.path).stem().string());
-
-        // With the report on standard output, everything else goes to standard error.
-        FILE* info = to.toStdout ? stderr : stdout;
-        reconstruction::warnAnalysis(geometry, result, diagnostics);
-        std::fprintf(info,
-                     "%s: %zu sections, %zu reported, %zu zones, %zu no data, %zu warnings%s\n",
-                     well.path.c_str(), result.sections.size(),
-                     reconstruction::reportedSections(result, report).size(), result.zones.size(),
-                     result.noDataSections, diagnostics.warningCount,
-                     well.surveyPath.empty() ? "" : (", path from " + well.surveyPath).c_str());
-        std::fputs(reconstruction::formatAnalysisSummary(result).c_str(), info);
-        printWarnings(diagnostics);
-        for (const std::string& written : {to.sections, to.zones, to.las})
-            if (!written.empty() && written != "-")
-                std::fprintf(info, "wrote %s\n", written.c_str());
-        return kExitOk;
+        const std::vector<WellSource> wells = wellSourcesFrom(p, files);
+        const std::vector<ReportOutputs> outputs = reportOutputs(verb, files);
+        SummaryFile summaries(verb.value("summary"));
+        ProgressDisplay progress(files.size());
+        int failures = 0;
+        for (std::size_t i = 0; i < wells.size(); ++i) {
+            const double start = steadySeconds();
+            progress.started(wells[i].path, wells[i].path);
+            InputSummary summary;
+            try {
+                summary = reportWell(wells[i], settings, outputs[i], progress);
+            } catch (const std::exception& e) {
+                ++failures;
+                progress.clear();
+                std::fprintf(stderr, "caliper3d report: %s\n", e.what());
+                summary.error = inputErrorFrom(e, wells[i].path);
+            }
+            summary.file = wells[i].path;
+            summary.verb = "report";
+            stampCost(summary, start);
+            summaries.write(summary);
+            progress.finished(wells[i].path, !summary.error);
+        }
+        return failures > 0 ? kExitBadInput : kExitOk;
     });
 }
 

@@ -6,6 +6,8 @@
 #include <exception>
 #include <memory>
 #include <thread>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include <Inventor/nodes/SoPerspectiveCamera.h>
@@ -71,15 +73,25 @@ AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOpt
     std::vector<std::shared_ptr<const reconstruction::WellGeometry>> loaded;
     std::vector<std::string> files;
     std::vector<io::Diagnostics> diagnostics;
+    std::vector<std::size_t> loadedInput;  // each loaded well's place in out.inputs
     for (const WellSource& well : wells) {
+        InputSummary& input = out.inputs.emplace_back();
+        input.file = well.path;
         try {
             reconstruction::LoadedWell one = reconstruction::loadWell(well, options, origin);
             loaded.push_back(one.geometry);
             files.push_back(well.path);
+            const std::vector<double>& md = one.table->depth_m;
+            input.rows = md.size();
+            if (!md.empty())
+                std::tie(input.top_m, input.bottom_m) = std::pair(md.front(), md.back());
+            input.addWarnings(one.diagnostics);
+            loadedInput.push_back(out.inputs.size() - 1);
             diagnostics.push_back(std::move(one.diagnostics));
         } catch (const std::exception& e) {
             ++out.failures;
             std::fprintf(stderr, "caliper3d: %s\n", e.what());
+            input.error = inputErrorFrom(e, well.path);
         }
     }
     double exaggeration = options.radialExaggeration;
@@ -90,6 +102,8 @@ AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOpt
     } catch (const std::exception& e) {
         out.failures += static_cast<int>(loaded.size());
         std::fprintf(stderr, "caliper3d: %s\n", e.what());
+        for (const std::size_t input : loadedInput)
+            out.inputs[input].error = inputErrorFrom(e, out.inputs[input].file);
         loaded.clear();
     }
     for (std::size_t w = 0; w < loaded.size(); ++w) {

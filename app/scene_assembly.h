@@ -7,6 +7,7 @@
 
 #include <Inventor/nodes/SoSeparator.h>
 #include "app/input_options.h"
+#include "app/input_summary.h"
 
 #include "reconstruction/well_geometry.h"
 #include "scenegraph/camera_setup.h"
@@ -27,6 +28,9 @@ struct AssembledScene {
     std::vector<std::shared_ptr<const reconstruction::WellGeometry>> geometries;
     std::vector<std::shared_ptr<scenegraph::WellScene>> scenes;  // one per geometry
     double load_ms = 0.0;  // reading, geometry and the coarse levels of every well
+    // One per well asked for, in order: rows, depths and warnings, or why it failed (the
+    // verb's name, outputs and cost are the caller's to add).
+    std::vector<InputSummary> inputs;
     // What the wall's colours mean (every well shares it); null with no well.
     const reconstruction::ColourLegend* legend() const;
 };

@@ -1,7 +1,11 @@
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "app/commands.h"
 #include "app/input_options.h"
@@ -13,9 +17,50 @@
 
 namespace caliper3d::app {
 
+namespace {
+
+// synth --field N: N wells of `length` metres, each a profile in turn (their hole azimuths
+// turned 37 degrees a well, so no two builds point alike), wellheads 25 m apart on a square
+// grid, and DIR/manifest.csv listing them for caliper3d batch.
+void writeField(const std::string& folder, std::size_t wells, double length, double step,
+                int arms) {
+    namespace fs = std::filesystem;
+    fs::create_directories(folder);
+    const std::vector<std::string> profiles = reconstruction::syntheticProfileNames();
+    const std::size_t columns =
+        std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(std::sqrt(double(wells)))));
+    const int digits = std::max(3, static_cast<int>(std::to_string(wells - 1).size()));
+    const std::string manifestPath = (fs::path(folder) / "manifest.csv").string();
+    std::FILE* manifest = std::fopen(manifestPath.c_str(), "wb");
+    if (!manifest) throw std::runtime_error(manifestPath + ": cannot open for writing");
+    std::fputs("file,verb,wellhead\n", manifest);
+    std::size_t sections = 0;
+    for (std::size_t w = 0; w < wells; ++w) {
+        const std::string& profile = profiles[w % profiles.size()];
+        reconstruction::SyntheticWellSpec spec =
+            reconstruction::syntheticProfile(profile, length, step);
+        spec.armCount = arms;
+        spec.holeAzimuth_deg = std::fmod(spec.holeAzimuth_deg + 37.0 * double(w), 360.0);
+        char name[64];
+        std::snprintf(name, sizeof name, "well-%0*zu.las", digits, w);
+        const io::SectionTable table = reconstruction::makeSyntheticWell(spec);
+        io::writeLasFile((fs::path(folder) / name).string(), table);
+        sections += table.rowCount();
+        const std::size_t gridColumn = w % columns, gridRow = w / columns;
+        std::fprintf(manifest, "%s,report,\"%.1f,%.1f,0\"\n", name,
+                     25.0 * static_cast<double>(gridColumn), 25.0 * static_cast<double>(gridRow));
+    }
+    if (std::fclose(manifest) != 0) throw std::runtime_error(manifestPath + ": write failed");
+    std::printf("wrote %zu wells (%zu sections, %.1f m each) and %s\n", wells, sections, length,
+                manifestPath.c_str());
+}
+
+}  // namespace
+
 int runSynth(const QStringList& args) {
     return guardedVerb("synth", [&]() -> int {
-        VerbParser verb("synth", "-o OUT", "Write a synthetic caliper log with known features.");
+        VerbParser verb("synth", "-o OUT | --field N -o DIR/",
+                        "Write a synthetic caliper log with known features, or a field of them.");
         QCommandLineParser& p = verb.parser();
         p.addOption({{"o", "output"},
                      "Output log: LAS 2.0 when the name ends in .las, otherwise named column text "
@@ -32,6 +77,11 @@ int runSynth(const QStringList& args) {
                                             " (default example; their exact answers are listed "
                                             "in docs/analysis.md)."),
                      "NAME", "example"});
+        p.addOption({"field",
+                     "Write N wells instead of one, into the folder -o names (well-000.las, ...: "
+                     "the profiles in turn, hole azimuths varied, wellheads 25 m apart), with "
+                     "a manifest.csv for caliper3d batch.",
+                     "N"});
         if (!verb.parse(args, 0)) return kExitOk;
         if (!verb.isSet("output")) throw UsageError("caliper3d synth: -o OUT is required");
         double length = 0, step = 0;
@@ -42,6 +92,23 @@ int runSynth(const QStringList& args) {
                 "caliper3d synth: --step takes a positive number of metres below --length");
         if (length / step > 5e7)
             throw UsageError("caliper3d synth: more than 50 million sections asked for");
+        double arms = 0;
+        if (!io::parseNumber(verb.value("arms"), arms) || arms < io::kMinArms ||
+            arms > io::kMaxArms || arms != std::floor(arms))
+            throw UsageError("caliper3d synth: --arms takes a whole number from 2 to 256");
+        if (verb.isSet("field")) {
+            bool ok = false;
+            const int wells = p.value("field").toInt(&ok);
+            if (!ok || wells < 1 || wells > 100000)
+                throw UsageError("caliper3d synth: --field takes a whole number from 1 to 100000");
+            if (verb.isSet("profile"))
+                throw UsageError(
+                    "caliper3d synth: --field uses every profile in turn; drop "
+                    "--profile");
+            writeField(verb.value("output"), static_cast<std::size_t>(wells), length, step,
+                       static_cast<int>(arms));
+            return kExitOk;
+        }
         reconstruction::SyntheticWellSpec spec;
         try {
             spec = reconstruction::syntheticProfile(verb.value("profile"), length, step);
@@ -49,10 +116,6 @@ int runSynth(const QStringList& args) {
             throw UsageError(std::string("caliper3d synth: ") + e.what() + "; the profiles are " +
                              names);
         }
-        double arms = 0;
-        if (!io::parseNumber(verb.value("arms"), arms) || arms < io::kMinArms ||
-            arms > io::kMaxArms || arms != std::floor(arms))
-            throw UsageError("caliper3d synth: --arms takes a whole number from 2 to 256");
         spec.armCount = static_cast<int>(arms);
         const io::SectionTable table = reconstruction::makeSyntheticWell(spec);
         const std::string out = verb.value("output");

@@ -49,7 +49,8 @@ INSTANTIATE_TEST_SUITE_P(
     EveryVerb, VerbHelpTest,
     testing::Values(VerbHelp{"view", "--survey"}, VerbHelp{"info", "--nulls"},
                     VerbHelp{"export", "--ascii"}, VerbHelp{"render", "--view"},
-                    VerbHelp{"report", "--casing-od"}, VerbHelp{"synth", "--profile"}),
+                    VerbHelp{"report", "--casing-od"}, VerbHelp{"synth", "--profile"},
+                    VerbHelp{"batch", "--merge"}),
     [](const testing::TestParamInfo<VerbHelp>& info) { return std::string(info.param.verb); });
 
 std::filesystem::path exampleLog() {

@@ -1,0 +1,124 @@
+#include "app/input_summary.h"
+
+#include <chrono>
+#include <stdexcept>
+
+#include <sys/resource.h>
+
+#include <nlohmann/json.hpp>
+
+#include "app/input_options.h"
+#include "io/parse_error.h"
+#include "reconstruction/analysis/borehole_classifier.h"
+#include "reconstruction/analysis/well_analysis.h"
+
+namespace caliper3d::app {
+
+InputError inputErrorFrom(const std::exception& e, const std::string& input) {
+    if (const auto* parse = dynamic_cast<const io::ParseError*>(&e))
+        return {parse->file(), parse->line(), parse->message()};
+    return {input, 0, e.what()};
+}
+
+void InputSummary::addWarnings(const io::Diagnostics& diagnostics) {
+    warningCount += diagnostics.warningCount;
+    for (const io::Warning& w : diagnostics.warnings) {
+        if (warnings.size() >= kKeptWarnings) break;
+        std::string text = w.file;
+        if (w.line > 0) text += ":" + std::to_string(w.line);
+        warnings.push_back(text + ": " + w.message);
+    }
+}
+
+void InputSummary::addAnalysis(const reconstruction::WellAnalysis& analysis) {
+    rows = analysis.sections.size();
+    if (analysis.sections.size() > 0) {
+        top_m = analysis.sections[0].md_m;
+        bottom_m = analysis.sections[analysis.sections.size() - 1].md_m;
+    }
+    for (const reconstruction::SectionResult& section : analysis.sections)
+        ++classes[std::string(reconstruction::className(section.cls))];
+    zones = analysis.zones.size();
+    for (const reconstruction::Zone& zone : analysis.zones)
+        ++zonesByClass[std::string(reconstruction::className(zone.kind))];
+    volume = analysis.volume;
+}
+
+nlohmann::ordered_json toJson(const InputSummary& s) {
+    nlohmann::ordered_json line = nlohmann::ordered_json::object();
+    line["file"] = s.file;
+    line["verb"] = s.verb;
+    line["status"] = s.error ? "failed" : "ok";
+    if (s.error) {
+        nlohmann::ordered_json where;
+        where["file"] = s.error->file;
+        where["line"] = s.error->line > 0 ? nlohmann::ordered_json(s.error->line) : nullptr;
+        where["reason"] = s.error->reason;
+        line["error"] = where;
+    }
+    if (!s.outputs.empty()) line["outputs"] = s.outputs;
+    if (s.rows) line["rows"] = *s.rows;
+    if (s.top_m && s.bottom_m) line["depth_m"] = {*s.top_m, *s.bottom_m};
+    if (!s.classes.empty()) line["classes"] = s.classes;
+    if (s.zones) {
+        line["zones"] = *s.zones;
+        line["zones_by_class"] = s.zonesByClass.empty() ? nlohmann::ordered_json::object()
+                                                        : nlohmann::ordered_json(s.zonesByClass);
+    }
+    if (s.volume) {
+        const reconstruction::HoleVolume& v = *s.volume;
+        line["volumes_m3"] = {{"top_m", v.top_m},
+                              {"bottom_m", v.bottom_m},
+                              {"hole", v.hole_m3},
+                              {"gauge_hole", v.gaugeHole_m3},
+                              {"annulus", v.annulus_m3},
+                              {"gauge_annulus", v.gaugeAnnulus_m3},
+                              {"cement", v.cement_m3},
+                              {"gauge_cement", v.gaugeCement_m3},
+                              {"uncovered_m", v.uncovered_m}};
+    }
+    line["warnings"] = s.warningCount;
+    line["warning_messages"] = s.warnings;
+    line["seconds"] = s.seconds;
+    line["peak_rss_mb"] = s.peakRss_mb;
+    return line;
+}
+
+SummaryFile::SummaryFile(const std::string& path) : m_path(path) {
+    if (path.empty()) return;
+    m_file = std::fopen(path.c_str(), "wb");
+    if (!m_file) throw UsageError("--summary: cannot open '" + path + "' for writing");
+}
+
+SummaryFile::~SummaryFile() {
+    if (m_file) std::fclose(m_file);
+}
+
+void SummaryFile::write(const InputSummary& summary) {
+    write(toJson(summary));
+}
+
+void SummaryFile::write(const nlohmann::ordered_json& line) {
+    if (!m_file) return;
+    // NaN (a gauge volume without a bit size) is written null; bytes of a file name that are
+    // not UTF-8 are replaced rather than refused.
+    const std::string text =
+        line.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
+    std::fputs(text.c_str(), m_file);
+    std::fputc('\n', m_file);
+    if (std::fflush(m_file) != 0) throw std::runtime_error(m_path + ": write failed");
+}
+
+double steadySeconds() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+}
+
+void stampCost(InputSummary& summary, double startSeconds) {
+    summary.seconds = steadySeconds() - startSeconds;
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    summary.peakRss_mb = static_cast<double>(usage.ru_maxrss) / 1024.0;  // KiB on Linux
+}
+
+}  // namespace caliper3d::app

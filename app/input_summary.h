@@ -1,0 +1,83 @@
+#pragma once
+
+#include <cstddef>
+#include <cstdio>
+#include <exception>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "io/diagnostics.h"
+#include "reconstruction/analysis/hole_volume.h"
+
+namespace caliper3d::reconstruction {
+struct WellAnalysis;
+}
+
+namespace caliper3d::app {
+
+// Where and why an input failed, as the readers' messages give it (io::ParseError's file,
+// line and message; 0: no line, as for a file that cannot be opened).
+struct InputError {
+    std::string file;
+    std::size_t line = 0;
+    std::string reason;
+};
+
+// The error `e` raised while processing `input`: a ParseError's own file, line and message,
+// any other error's text against `input`.
+InputError inputErrorFrom(const std::exception& e, const std::string& input);
+
+// One line of a --summary file: what a verb made of one input (docs/formats.md, "Summary
+// lines"). Fields a verb does not measure stay unset and are left out of the line.
+struct InputSummary {
+    std::string file;
+    std::string verb;
+    std::optional<InputError> error;  // set: status "failed"
+    std::vector<std::string> outputs;
+    std::optional<std::size_t> rows;
+    std::optional<double> top_m, bottom_m;
+    std::map<std::string, std::size_t> classes;  // report: sections per class
+    std::optional<std::size_t> zones;
+    std::map<std::string, std::size_t> zonesByClass;
+    std::optional<reconstruction::HoleVolume> volume;
+    std::size_t warningCount = 0;
+    std::vector<std::string> warnings;  // the first kKeptWarnings, formatted as printed
+    double seconds = 0.0;
+    double peakRss_mb = 0.0;
+
+    static constexpr std::size_t kKeptWarnings = 20;
+    // Records the warnings of `diagnostics` (the count and the first messages).
+    void addWarnings(const io::Diagnostics& diagnostics);
+    // Records the report's counts: rows, depths, classes, zones, volumes.
+    void addAnalysis(const reconstruction::WellAnalysis& analysis);
+};
+
+nlohmann::ordered_json toJson(const InputSummary& summary);
+
+// A --summary FILE.jsonl: one JSON object a line, written (and flushed) as each input ends,
+// so a run that is stopped keeps the lines of the inputs it finished. No file: writes nothing.
+class SummaryFile {
+public:
+    explicit SummaryFile(const std::string& path);  // "" for none; throws when it cannot open
+    ~SummaryFile();
+    SummaryFile(const SummaryFile&) = delete;
+    SummaryFile& operator=(const SummaryFile&) = delete;
+    void write(const InputSummary& summary);
+    void write(const nlohmann::ordered_json& line);
+
+private:
+    std::FILE* m_file = nullptr;
+    std::string m_path;
+};
+
+// Seconds since `start` of a steady clock, and the peak resident memory of this process
+// (MiB), stamped on `summary`.
+void stampCost(InputSummary& summary, double startSeconds);
+// A steady clock in seconds, for stampCost.
+double steadySeconds();
+
+}  // namespace caliper3d::app
