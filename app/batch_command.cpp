@@ -62,11 +62,18 @@ Json failedLine(const ManifestRow& row, const std::string& verb, const InputErro
     return withRow(row, toJson(summary));
 }
 
+// A manifest row's verb (one of batchVerbs()), in the process that runs it.
+int runBatchVerb(const QString& verb, const QStringList& args) {
+    if (verb == "info") return runInfo(args);
+    if (verb == "report") return runReport(args);
+    if (verb == "render") return runRender(args);
+    return runExport(args);
+}
+
 struct BatchSettings {
     std::string folder;  // batch -o
     std::size_t jobs = 1;
     int threadsPerWell = 1;
-    std::string program;
     fs::path scratch;
     std::string manifest;
 };
@@ -100,7 +107,11 @@ bool startVerb(RowRun& run, const BatchSettings& settings, pid_t& pid) {
             std::find(row.options.begin(), row.options.end(), "--threads") == row.options.end())
             args.insert(args.end(), {"--threads", std::to_string(settings.threadsPerWell)});
         const fs::path base = settings.scratch / run.stem();
-        pid = startChild(settings.program, args, base.string() + ".out", base.string() + ".err");
+        const QString name = QString::fromStdString(args.front());
+        QStringList qtArgs;
+        for (std::size_t k = 1; k < args.size(); ++k) qtArgs << QString::fromStdString(args[k]);
+        pid = forkChild([&name, &qtArgs] { return runBatchVerb(name, qtArgs); },
+                        base.string() + ".out", base.string() + ".err");
         return true;
     } catch (const std::exception& e) {
         run.lines.push_back(failedLine(row, verb, {settings.manifest, row.line, e.what()}));
@@ -312,7 +323,6 @@ int runBatch(const QStringList& args) {
         settings.jobs = wholeNumber(verb, "jobs", 1, 256);
         const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());
         settings.threadsPerWell = static_cast<int>(std::max<std::size_t>(1, cores / settings.jobs));
-        settings.program = ownExecutable();
         const Manifest manifest = readManifest(settings.manifest);
         std::vector<const ManifestRow*> rows;
         for (const ManifestRow& row : manifest.rows) rows.push_back(&row);

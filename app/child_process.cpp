@@ -1,46 +1,49 @@
 #include "app/child_process.h"
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
+#include <iostream>
 #include <stdexcept>
 
 #include <fcntl.h>
-#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
-extern char** environ;
-
 namespace caliper3d::app {
 
-std::string ownExecutable() {
-    char path[4096];
-    const ssize_t size = readlink("/proc/self/exe", path, sizeof path - 1);
-    if (size <= 0) throw std::runtime_error("cannot find this program's executable");
-    return std::string(path, static_cast<std::size_t>(size));
+namespace {
+
+// Points descriptor `target` at `path`; false when it cannot be opened.
+bool redirect(int target, const char* path, int flags) {
+    const int fd = open(path, flags, 0644);
+    if (fd < 0) return false;
+    const bool ok = dup2(fd, target) >= 0;
+    close(fd);
+    return ok;
 }
 
-pid_t startChild(const std::string& program, const std::vector<std::string>& args,
-                 const std::string& stdoutPath, const std::string& stderrPath) {
-    std::vector<std::string> all = {program};
-    all.insert(all.end(), args.begin(), args.end());
-    std::vector<char*> argv;
-    argv.reserve(all.size() + 1);
-    for (std::string& arg : all) argv.push_back(arg.data());
-    argv.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, stdoutPath.c_str(),
-                                     O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, stderrPath.c_str(),
-                                     O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    pid_t pid = 0;
-    const int error = posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    if (error != 0)
-        throw std::runtime_error("cannot start " + program + ": " + std::strerror(error));
-    return pid;
+}  // namespace
+
+pid_t forkChild(const std::function<int()>& body, const std::string& stdoutPath,
+                const std::string& stderrPath) {
+    // Text buffered here would otherwise be printed again by the child.
+    std::cout.flush();
+    std::fflush(nullptr);
+    const pid_t pid = fork();
+    if (pid < 0)
+        throw std::runtime_error(std::string("cannot start a process: ") + strerror(errno));
+    if (pid > 0) return pid;
+    const int writing = O_WRONLY | O_CREAT | O_TRUNC;
+    if (!redirect(STDIN_FILENO, "/dev/null", O_RDONLY) ||
+        !redirect(STDOUT_FILENO, stdoutPath.c_str(), writing) ||
+        !redirect(STDERR_FILENO, stderrPath.c_str(), writing))
+        _exit(127);
+    const int status = body();
+    std::cout.flush();
+    std::fflush(nullptr);
+    // _exit: the parent's exit handlers and static objects are the parent's to run.
+    _exit(status);
 }
 
 std::string describeEnd(int waitStatus) {

@@ -263,3 +263,60 @@ TEST(ManyInputsTest, ReportWritesOneReportPerFileWhereTheFolderOrPatternSays) {
     EXPECT_EQ(runCaliper3d("report " + a + " " + a + " -o " + (dir / "d").string() + "/").status,
               2);
 }
+
+TEST(ManyInputsTest, ExportWritesOneFilePerInputOrOneSceneForAll) {
+    const fs::path dir = freshFolder("many_export");
+    const std::string a = synth(dir / "A.las", "example", 30.0);
+    const std::string b = synth(dir / "B.txt", "circle", 30.0);
+    const CommandRun each = runCaliper3d("export " + a + " " + b + " -o " + (dir / "e").string() +
+                                         "/ --summary " + (dir / "each.jsonl").string());
+    ASSERT_EQ(each.status, 0) << each.output;
+    EXPECT_TRUE(fs::exists(dir / "e" / "A.iv"));
+    EXPECT_TRUE(fs::exists(dir / "e" / "B.iv"));
+    const CommandRun one =
+        runCaliper3d("export " + a + " " + b + " " + (dir / "missing.las").string() + " -o " +
+                     (dir / "all.iv").string() + " --summary " + (dir / "one.jsonl").string());
+    EXPECT_EQ(one.status, 1) << one.output;
+    EXPECT_NE(one.output.find("(2 wells)"), std::string::npos) << one.output;
+    const std::vector<nlohmann::json> lines = readSummary(dir / "one.jsonl");
+    ASSERT_EQ(lines.size(), 3U);
+    EXPECT_EQ(lines[0]["outputs"][0], (dir / "all.iv").string());
+    EXPECT_EQ(lines[1]["outputs"][0], (dir / "all.iv").string());
+    EXPECT_EQ(lines[0]["rows"], 301);
+    EXPECT_EQ(lines[2]["status"], "failed");
+    EXPECT_EQ(lines[2].count("outputs"), 0U);
+}
+
+TEST(ManyInputsTest, RenderDrawsOnePicturePerInputWithAPattern) {
+    const fs::path dir = freshFolder("many_render");
+    const std::string a = synth(dir / "A.las", "example", 30.0);
+    const std::string b = synth(dir / "B.txt", "circle", 30.0);
+    const CommandRun r = runCaliper3d("render " + a + " " + b + " -o '" + (dir / "p").string() +
+                                      "/{stem}-east.png' --view east --width 96 --height 64 "
+                                      "--summary " +
+                                      (dir / "s.jsonl").string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_TRUE(fs::exists(dir / "p" / "A-east.png"));
+    EXPECT_TRUE(fs::exists(dir / "p" / "B-east.png"));
+    const std::vector<nlohmann::json> lines = readSummary(dir / "s.jsonl");
+    ASSERT_EQ(lines.size(), 2U);
+    EXPECT_EQ(lines[1]["verb"], "render");
+    EXPECT_EQ(lines[1]["outputs"][0], (dir / "p" / "B-east.png").string());
+}
+
+TEST(ManyInputsTest, InfoSummaryGivesRowsAndDepthsAndTheReadersReason) {
+    const fs::path dir = freshFolder("many_info");
+    const std::string a = synth(dir / "A.las", "example", 30.0);
+    const fs::path bad = badLineLog(dir);
+    const CommandRun r =
+        runCaliper3d("info " + a + " " + bad.string() + " --summary " + (dir / "s.jsonl").string());
+    EXPECT_EQ(r.status, 1) << r.output;
+    const std::vector<nlohmann::json> lines = readSummary(dir / "s.jsonl");
+    ASSERT_EQ(lines.size(), 2U);
+    EXPECT_EQ(lines[0]["status"], "ok");
+    EXPECT_EQ(lines[0]["rows"], 301);
+    EXPECT_DOUBLE_EQ(lines[0]["depth_m"][1].get<double>(), 30.0);
+    EXPECT_EQ(lines[1]["status"], "failed");
+    EXPECT_EQ(lines[1]["error"]["line"], 6);
+    EXPECT_EQ(lines[1]["error"]["reason"], "expected 12 named columns, found 3 values");
+}
