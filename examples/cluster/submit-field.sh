@@ -16,11 +16,17 @@ if [ -z "${FIELD_ROWS:-}" ]; then
 fi
 export FIELD_ROWS
 [ "$FIELD_ROWS" -gt 0 ] || { echo "$manifest: no data rows" >&2; exit 1; }
+summary_dir=${SUMMARY_DIR:-summaries}
+# The merge takes every summary in the folder: one left from another run would join this one.
+if compgen -G "$summary_dir/*.jsonl" >/dev/null; then
+  echo "$summary_dir/ already holds summaries: move them, or set SUMMARY_DIR" >&2
+  exit 1
+fi
 per_task=${ROWS_PER_TASK:-1}
 tasks=$(((FIELD_ROWS + per_task - 1) / per_task))
 # Slurm does not create the folder of --output; a missing one loses every task's log.
-mkdir -p logs "${SUMMARY_DIR:-summaries}"
+mkdir -p logs "$summary_dir"
 array=$(sbatch --parsable --array=0-$((tasks - 1)) "$here/field.sbatch" "$@")
 array=${array%%;*} # --parsable prints "id;cluster" on a multi-cluster site
-merge=$(sbatch --parsable --dependency=afterany:"$array" "$here/field-merge.sbatch")
+merge=$(sbatch --parsable --dependency=afterany:"$array" "$here/field-merge.sbatch" "$manifest")
 echo "field: $FIELD_ROWS rows in $tasks array tasks, job $array; merge job ${merge%%;*}"

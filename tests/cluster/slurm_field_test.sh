@@ -4,7 +4,7 @@
 # (the array job field.sbatch and its merge job), waits, and checks every well's outputs
 # and the merged summary. Fails, with the daemons' logs, if the cluster does not come up.
 #   tests/cluster/slurm_field_test.sh CALIPER3D SOURCE_DIR
-# Takes about 30 s on a 2-core machine (the wells are short; most of it is Slurm's
+# Takes about 35 s on a 2-core machine (the wells are short; most of it is Slurm's
 # one-second scheduling cadence).
 set -euo pipefail
 caliper3d=$(realpath "${1:?usage: slurm_field_test.sh CALIPER3D SOURCE_DIR}")
@@ -91,7 +91,7 @@ runField() {
     [[ $line =~ \"status\":\ *\"ok\" ]] || fail "summary line $row is not ok: $line"
     row=$((row + 1))
   done <"$merged"
-  grep -q "$wells of $wells wells, 0 not ok, 0 with no summary" logs/field-merge-*.out ||
+  grep -q "$wells lines for $wells wells, 0 not ok, 0 with no line" logs/field-merge-*.out ||
     fail "merge job said: $(cat logs/field-merge-*.out)"
 }
 
@@ -99,5 +99,22 @@ runField() {
 runField 1
 runField 7
 
+# A field with a bad row: its task fails, the merge still runs (afterany), keeps every other
+# well's line and says which row failed.
+bad_manifest="$work/field/with-bad-row.csv"
+{ cat "$manifest"; echo "no-such-well.las,report,"; } >"$bad_manifest"
+mkdir -p "$work/run-bad" && cd "$work/run-bad"
+submitted=$(ROWS_PER_TASK=7 "$src/examples/cluster/submit-field.sh" "$bad_manifest" -o out/) ||
+  fail "submit-field.sh: $submitted"
+echo "$submitted (the last row names a missing file)"
+local_slurm_wait_idle "$limit_s" || fail "the field with a bad row did not finish within $limit_s s"
+[ "$(wc -l <field-summary.jsonl)" -eq $((wells + 1)) ] ||
+  fail "merged summary of the bad field: $(wc -l <field-summary.jsonl) lines, not $((wells + 1))"
+[ "$(grep -c '"status":"ok"' field-summary.jsonl)" -eq "$wells" ] || fail "the good rows are not all ok"
+tail -n 1 field-summary.jsonl | grep -q "^{\"row\":$wells,.*no-such-well.las.*\"status\":\"failed\"" ||
+  fail "the bad row's line: $(tail -n 1 field-summary.jsonl)"
+grep -q "$((wells + 1)) lines for $((wells + 1)) wells, 1 not ok, 0 with no line" logs/field-merge-*.out ||
+  fail "merge job said: $(cat logs/field-merge-*.out)"
+
 passed=1
-echo "PASS: $wells wells on Slurm twice, outputs and merged summaries checked; $((SECONDS - t0)) s in all"
+echo "PASS: $wells wells on Slurm one a task and in blocks, and with a bad row; outputs and merged summaries checked; $((SECONDS - t0)) s in all"
