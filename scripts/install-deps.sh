@@ -12,6 +12,8 @@ packages=(
   xvfb xauth clang libclang-rt-14-dev clang-format clang-tidy locales
   # A one-node Slurm for the test of the cluster examples (tests/cluster/slurm_field_test.sh).
   slurm-wlm munge
+  # Reads the Kubernetes examples in tests/cluster/k8s_field_test.sh.
+  python3-yaml
 )
 
 missing=()
