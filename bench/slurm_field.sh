@@ -67,27 +67,6 @@ for per_task in $per_task_runs; do
   perWell field-summary.jsonl
 done
 
-# What one process per block of rows would give (batch --row takes one row, so each row of a
-# block starts the program again): the same array with each task running `batch -j 1` over a
-# manifest of its block's rows. Measured on the synthetic field only, whose manifest lines
-# split cleanly; the summaries' row numbers are then the block's, not the field's.
-block=${per_task_runs##* }
-blocks=$(((wells + block - 1) / block))
-for ((b = 0; b < blocks; b++)); do
-  { head -n 1 "$work/field/manifest.csv"
-    tail -n +2 "$work/field/manifest.csv" | sed -n "$((b * block + 1)),$(((b + 1) * block))p"; } \
-    >"$work/field/block-$b.csv"
-done
-mkdir -p "$work/run-blocks" && cd "$work/run-blocks"
-start=$(now)
-array=$(sbatch --parsable --array=0-$((blocks - 1)) -c 1 -o /dev/null --wrap \
-  "\"$bin\" batch \"$work/field/block-\$SLURM_ARRAY_TASK_ID.csv\" -o out/ --summary s-\$SLURM_ARRAY_TASK_ID.jsonl")
-sbatch --parsable --dependency=afterany:"$array" -o /dev/null --wrap "\"$bin\" batch --merge all.jsonl s-*.jsonl" >/dev/null
-local_slurm_wait_idle 900
-end=$(now)
-rate "Slurm array, one batch process per block of $block rows ($blocks tasks; not an example)" "$start" "$end"
-perWell all.jsonl
-
 # What the daemons themselves hold (high-water mark of resident memory).
 for d in slurmctld slurmd munge/munged; do
   pid=$(cat "$local_slurm_dir/$d.pid")
