@@ -15,7 +15,7 @@ verb=${5:-report}
 per_task_runs=${6:-"1 10 50"}
 bin="$(cd "$build" && pwd)/app/caliper3d"
 cpus=$(nproc)
-# shellcheck source=../tests/cluster/local_slurm.sh
+# shellcheck source-path=SCRIPTDIR source=../tests/cluster/local_slurm.sh
 source "$src/tests/cluster/local_slurm.sh"
 work=$(mktemp -d /tmp/caliper3d-slurm-bench.XXXXXX)
 trap 'local_slurm_stop; rm -rf "$work"' EXIT

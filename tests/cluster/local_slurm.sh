@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # A one-node Slurm cluster on this machine, for the field tests and benchmarks.
 # Source it, then:
 #   local_slurm_start DIR [CPUS]   munged + slurmctld + slurmd, everything under DIR, loopback only;

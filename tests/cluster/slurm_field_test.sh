@@ -12,7 +12,7 @@ src=$(realpath "${2:?usage: slurm_field_test.sh CALIPER3D SOURCE_DIR}")
 wells=${FIELD_WELLS:-20}
 limit_s=${FIELD_TIMEOUT_S:-150}
 
-# shellcheck source=local_slurm.sh
+# shellcheck source-path=SCRIPTDIR source=local_slurm.sh
 source "$src/tests/cluster/local_slurm.sh"
 fail() {
   echo "FAIL: $*" >&2
