@@ -8,6 +8,7 @@
 #include <optional>
 #include <sstream>
 #include <thread>
+#include <utility>
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -272,8 +273,9 @@ void addBatchOptions(QCommandLineParser& p) {
     p.addOption({"row",
                  "Run only data row K of the manifest, counted from 0 (the first well is row "
                  "0): a cluster array's task index (SLURM_ARRAY_TASK_ID with --array=0-(N-1), "
-                 "Kubernetes' JOB_COMPLETION_INDEX).",
-                 "K"});
+                 "Kubernetes' JOB_COMPLETION_INDEX). FIRST-LAST runs that block of rows in "
+                 "one process (LAST past the manifest's end stops at its last row).",
+                 "K|FIRST-LAST"});
     p.addOption({"merge",
                  "Write the summary lines of the files given (instead of a manifest) to OUT in "
                  "manifest row order: what the tasks of a cluster array wrote, in one file.",
@@ -291,12 +293,33 @@ std::size_t wholeNumber(VerbParser& verb, const char* name, std::size_t lo, std:
     return static_cast<std::size_t>(value);
 }
 
+// The rows --row names: K, or FIRST-LAST with LAST past the end cut to the last row, so that
+// a cluster array of blocks (task i: rows i*B to i*B+B-1) needs no care for the last block.
+std::pair<std::size_t, std::size_t> rowRange(VerbParser& verb, std::size_t rowCount) {
+    const QString value = verb.parser().value("row");
+    const qsizetype dash = value.indexOf('-', 1);
+    if (dash < 0) {
+        const std::size_t row = wholeNumber(verb, "row", 0, rowCount - 1);
+        return {row, row};
+    }
+    bool okFirst = false, okLast = false;
+    const long long first = value.left(dash).toLongLong(&okFirst);
+    const long long last = value.mid(dash + 1).toLongLong(&okLast);
+    if (!okFirst || !okLast || first < 0 || last < first ||
+        first > static_cast<long long>(rowCount) - 1)
+        throw UsageError("caliper3d batch: --row takes K or FIRST-LAST with FIRST from 0 to " +
+                         std::to_string(rowCount - 1) + " and LAST >= FIRST, found '" +
+                         verb.value("row") + "'");
+    return {static_cast<std::size_t>(first),
+            std::min(static_cast<std::size_t>(last), rowCount - 1)};
+}
+
 }  // namespace
 
 int runBatch(const QStringList& args) {
     return guardedVerb("batch", [&]() -> int {
         VerbParser verb(
-            "batch", "MANIFEST [-o DIR/] [-j N] [--row K] [--summary FILE.jsonl]",
+            "batch", "MANIFEST [-o DIR/] [-j N] [--row K|FIRST-LAST] [--summary FILE.jsonl]",
             "Run the verbs of a manifest, one well a row (CSV, or JSON for a name ending .json; "
             "docs/formats.md, \"Batch manifests\"), each in a child process of this program, "
             "so that a crash or a failed picture in one well leaves the others running. Bad "
@@ -332,7 +355,9 @@ int runBatch(const QStringList& args) {
         if (verb.isSet("row")) {
             if (manifest.rows.empty())
                 throw UsageError("caliper3d batch: --row: " + settings.manifest + " has no rows");
-            rows = {&manifest.rows[wholeNumber(verb, "row", 0, manifest.rows.size() - 1)]};
+            const auto [first, last] = rowRange(verb, manifest.rows.size());
+            rows.assign(rows.begin() + static_cast<std::ptrdiff_t>(first),
+                        rows.begin() + static_cast<std::ptrdiff_t>(last) + 1);
         }
         SummaryFile summaries(verb.isSet("summary") ? verb.value("summary") : "");
         char scratch[] = "/tmp/caliper3d-batch-XXXXXX";

@@ -10,6 +10,10 @@ packages=(
   nlohmann-json3-dev
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   xvfb xauth clang libclang-rt-14-dev clang-format clang-tidy locales
+  # A one-node Slurm for the test of the cluster examples (tests/cluster/slurm_field_test.sh).
+  slurm-wlm munge
+  # Reads the Kubernetes examples in tests/cluster/k8s_field_test.sh.
+  python3-yaml
 )
 
 missing=()

@@ -168,6 +168,26 @@ TEST(BatchCommandTest, RowRunsOnlyThatRowCountedFromZero) {
     EXPECT_EQ(runCaliper3d("batch " + manifest + " --row 3 -o out/").status, 2);
 }
 
+TEST(BatchCommandTest, RowRangeRunsThatBlockAndStopsAtTheManifestsEnd) {
+    const fs::path dir = freshFolder("batch_row_range");
+    ASSERT_EQ(runCaliper3d("synth --field 5 --length 30 -o " + dir.string() + "/").status, 0);
+    const std::string manifest = (dir / "manifest.csv").string();
+    // Rows 3 to 9 of 5: a cluster array's last block of 7 rows, cut at the last row.
+    const CommandRun r =
+        runCaliper3d("batch " + manifest + " --row 3-9 -o " + (dir / "out").string() +
+                     "/ --summary " + (dir / "s.jsonl").string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    for (int w = 0; w < 5; ++w)
+        EXPECT_EQ(fs::exists(dir / "out" / ("well-00" + std::to_string(w) + ".csv")), w >= 3) << w;
+    const std::vector<nlohmann::json> lines = readSummary(dir / "s.jsonl");
+    ASSERT_EQ(lines.size(), 2U);
+    EXPECT_EQ(lines[0]["row"], 3);
+    EXPECT_EQ(lines[1]["row"], 4);
+    for (const char* bad : {"5-6", "2-1", "x-3", "1-", "-1"})
+        EXPECT_EQ(runCaliper3d("batch " + manifest + " --row " + bad + " -o out/").status, 2)
+            << bad;
+}
+
 TEST(BatchCommandTest, TwoJobsGiveTheSameOutputsAsOne) {
     const fs::path dir = freshFolder("batch_jobs");
     ASSERT_EQ(runCaliper3d("synth --field 6 --length 60 -o " + dir.string() + "/").status, 0);
