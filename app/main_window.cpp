@@ -224,9 +224,10 @@ void MainWindow::showShortcuts() {
                             .arg(menu->text().remove('&'), action->text().remove('&'),
                                  action->shortcut().toString(QKeySequence::NativeText));
     }
-    rows += "<tr><td>3D view</td><td>click the wall: its section becomes current</td><td>"
-            "left click</td></tr><tr><td>3D view</td><td>turn, pan, zoom</td><td>left, middle "
-            "drag, wheel</td></tr><tr><td>Status bar</td><td>cancel loading</td><td>Esc</td></tr>";
+    rows +=
+        "<tr><td>3D view</td><td>click the wall: its section becomes current</td><td>"
+        "left click</td></tr><tr><td>3D view</td><td>turn, pan, zoom</td><td>left, middle "
+        "drag, wheel</td></tr><tr><td>Status bar</td><td>cancel loading</td><td>Esc</td></tr>";
     QMessageBox box(QMessageBox::NoIcon, "Keyboard shortcuts",
                     "<table cellspacing=6><tr><th align=left>Menu</th><th align=left>Action</th>"
                     "<th align=left>Keys</th></tr>" +
