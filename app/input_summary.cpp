@@ -1,7 +1,9 @@
 #include "app/input_summary.h"
 
 #include <chrono>
+#include <filesystem>
 #include <stdexcept>
+#include <system_error>
 
 #include <sys/resource.h>
 
@@ -86,8 +88,14 @@ nlohmann::ordered_json toJson(const InputSummary& s) {
 
 SummaryFile::SummaryFile(const std::string& path) : m_path(path) {
     if (path.empty()) return;
+    // Its folder is made as -o DIR/ makes the outputs' ("--summary out/summary.jsonl").
+    const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+    std::error_code made;
+    if (!folder.empty()) std::filesystem::create_directories(folder, made);
     m_file = std::fopen(path.c_str(), "wb");
-    if (!m_file) throw UsageError("--summary: cannot open '" + path + "' for writing");
+    if (!m_file)
+        throw UsageError("--summary: cannot open '" + path + "' for writing" +
+                         (made ? " (cannot make its folder: " + made.message() + ")" : ""));
 }
 
 SummaryFile::~SummaryFile() {

@@ -125,10 +125,11 @@ TEST(BatchCommandTest, SummaryLinesHoldTheReportsNumbers) {
               "{\"wells\": [{\"file\": \"E.las\", \"verb\": [\"report\"], \"wellhead\": [0, 0, "
               "0], \"output\": \"rep/\", \"options\": \"--zones " +
                   (dir / "zones.csv").string() + "\"}]}");
+    // The summary's folder is made as the outputs' are.
     const CommandRun r = runCaliper3d("batch " + (dir / "m.json").string() + " --summary " +
-                                      (dir / "s.jsonl").string());
+                                      (dir / "new" / "s.jsonl").string());
     ASSERT_EQ(r.status, 0) << r.output;
-    const std::vector<nlohmann::json> lines = readSummary(dir / "s.jsonl");
+    const std::vector<nlohmann::json> lines = readSummary(dir / "new" / "s.jsonl");
     ASSERT_EQ(lines.size(), 1U);
     const nlohmann::json& line = lines.front();
     EXPECT_EQ(line["status"], "ok");
