@@ -3,7 +3,7 @@
 #               (with no display: write out/example.iv and out/example.png)
 #   make test   build with AddressSanitizer + UBSan and run every test under xvfb-run (the
 #               layer and format checks among them), run clang-tidy over the sources, then
-#               build the io libFuzzer targets with clang and run each for FUZZ_SECONDS
+#               build the io and manifest libFuzzer targets with clang and run each for FUZZ_SECONDS
 BUILD_RELEASE ?= build/release
 BUILD_ASAN    ?= build/asan
 BUILD_TSAN    ?= build/tsan

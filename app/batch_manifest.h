@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <istream>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,9 @@ const std::vector<std::string>& batchVerbs();
 // (no file, an unknown verb, a field too many) keeps its place with its problem set. Throws
 // io::ParseError for a manifest that cannot be read at all (no file, an unknown column).
 Manifest readManifest(const std::string& path);
+// The same from a stream; `path` names it in messages, places its relative paths and, by
+// its extension, says whether it is JSON.
+Manifest parseManifest(const std::string& path, std::istream& in);
 
 // The arguments of "caliper3d VERB ..." for `row` (the verb not included), writing `output`
 // (ignored by info) and the summary line to `summary`.

@@ -11,7 +11,7 @@ set -euo pipefail
 seconds=${1:-60}
 root=$(cd "$(dirname "$0")/.." && pwd)
 build="$root/build/fuzz"
-targets=(fuzz_las_reader fuzz_las_header fuzz_column_text fuzz_survey_reader)
+targets=(fuzz_las_reader fuzz_las_header fuzz_column_text fuzz_survey_reader fuzz_batch_manifest)
 
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_COMPILER=clang++ \
@@ -20,7 +20,7 @@ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 cmake --build "$build" -j2 --target "${targets[@]}"
 
 mkdir -p "$build/crashes" "$build/logs"
-for kind in las text survey; do
+for kind in las text survey manifest; do
   mkdir -p "$build/corpus/$kind"
   cp "$root"/tests/fuzz/corpus/$kind/* "$build/corpus/$kind/"
 done
@@ -37,6 +37,7 @@ corpusOf() {
   case $1 in
     fuzz_column_text) echo "$build/corpus/text" ;;
     fuzz_survey_reader) echo "$build/corpus/survey" ;;
+    fuzz_batch_manifest) echo "$build/corpus/manifest" ;;
     *) echo "$build/corpus/las" ;;
   esac
 }

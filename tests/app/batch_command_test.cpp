@@ -150,6 +150,19 @@ TEST(BatchCommandTest, SummaryLinesHoldTheReportsNumbers) {
     EXPECT_NE(r.output.find("2 zones"), std::string::npos) << r.output;
 }
 
+TEST(BatchCommandTest, AJsonManifestThatIsNotAManifestIsRefusedNamingIt) {
+    // A number too large for a double is JSON's out_of_range, not a syntax error (found by
+    // fuzz_batch_manifest): refused with the manifest's name like any bad JSON.
+    const fs::path dir = freshFolder("batch_bad_json");
+    writeText(dir / "m.json", "{\"wells\": [{\"file\": \"a.las\", \"bit_size\": 1e99999}]}");
+    const CommandRun r =
+        runCaliper3d("batch " + (dir / "m.json").string() + " -o " + (dir / "out").string() + "/");
+    EXPECT_NE(r.status, 0);
+    EXPECT_NE(r.output.find((dir / "m.json").string()), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("not JSON"), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("terminate"), std::string::npos) << r.output;
+}
+
 TEST(BatchCommandTest, RowRunsOnlyThatRowCountedFromZero) {
     const fs::path dir = freshFolder("batch_row");
     const CommandRun field = runCaliper3d("synth --field 3 --length 50 -o " + dir.string() + "/");
