@@ -8,10 +8,10 @@
 #include <vector>
 
 #include "app/commands.h"
+#include "app/each_input.h"
 #include "app/input_options.h"
 #include "app/input_summary.h"
 #include "app/output_names.h"
-#include "app/progress_display.h"
 #include "app/scene_assembly.h"
 #include "app/verb_parser.h"
 #include "reconstruction/load/load_well.h"
@@ -293,18 +293,11 @@ int runExport(const QStringList& args) {
         for (const WellSource& source : sources) files.push_back(source.path);
         const std::vector<std::string> outs = names.forInputs(files, "-o");
         for (const std::string& out : outs) checkExportName(out, verb);
-        ProgressDisplay progress(sources.size());
-        int failures = 0;
-        for (std::size_t i = 0; i < sources.size(); ++i) {
-            progress.started(files[i], files[i]);
-            inputs.clear();
-            const int status = exportTo({sources[i]}, settings, outs[i], inputs);
-            progress.clear();
-            failures += status != kExitOk;
-            for (const InputSummary& input : inputs) summaries.write(input);
-            progress.finished(files[i], status == kExitOk);
-        }
-        return failures > 0 ? kExitBadInput : kExitOk;
+        return writeEachInput(sources, outs, summaries,
+                              [&settings](const WellSource& source, const std::string& out,
+                                          std::vector<InputSummary>& one) {
+                                  return exportTo({source}, settings, out, one);
+                              });
     });
 }
 

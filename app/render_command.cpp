@@ -11,12 +11,12 @@
 #include <glm/vec3.hpp>
 
 #include "app/commands.h"
+#include "app/each_input.h"
 #include "app/input_options.h"
 #include "app/input_summary.h"
 #include "app/output_names.h"
 #include "app/pick_output.h"
 #include "app/png_output.h"
-#include "app/progress_display.h"
 #include "app/scene_assembly.h"
 #include "app/verb_parser.h"
 #include "io/number_parsing.h"
@@ -326,18 +326,11 @@ int runRender(const QStringList& args) {
         files.reserve(sources.size());
         for (const WellSource& source : sources) files.push_back(source.path);
         const std::vector<std::string> outs = names.forInputs(files, "-o");
-        ProgressDisplay progress(sources.size());
-        int failures = 0;
-        for (std::size_t i = 0; i < sources.size(); ++i) {
-            progress.started(files[i], files[i]);
-            std::vector<InputSummary> inputs;
-            const int status = renderTo({sources[i]}, settings, outs[i], inputs);
-            progress.clear();
-            failures += status != kExitOk;
-            for (const InputSummary& input : inputs) summaries.write(input);
-            progress.finished(files[i], status == kExitOk);
-        }
-        return failures > 0 ? kExitBadInput : kExitOk;
+        return writeEachInput(sources, outs, summaries,
+                              [&settings](const WellSource& source, const std::string& out,
+                                          std::vector<InputSummary>& one) {
+                                  return renderTo({source}, settings, out, one);
+                              });
     });
 }
 
