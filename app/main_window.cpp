@@ -664,7 +664,7 @@ bool MainWindow::pickAt(const SbVec2s& pixel) {
         if (well->geometry && well->analysis &&
             well->shown->whichChild.getValue() != SO_SWITCH_NONE) {
             wells.push_back({well->scene.get(), well->geometry.get(), well->analysis.get(),
-                             record(*well).name.toStdString()});
+                             m_model->well(well->modelIndex).name.toStdString()});
             index.push_back(well->modelIndex);
         }
     if (wells.empty()) return false;

@@ -10,17 +10,17 @@
 #include <glm/trigonometric.hpp>
 
 #include "reconstruction/section/arm_geometry.h"
+#include "reconstruction/synthetic/synthetic_well.h"
 
 using namespace caliper3d;
 using namespace caliper3d::reconstruction;
 
 namespace {
 
+// The ellipse's radius at `azimuth_deg`, its major axis at `major_deg`: the synthetic
+// wells' own ellipse (reconstruction/synthetic).
 double ellipseRadius(double dmax, double dmin, double major_deg, double azimuth_deg) {
-    const double t = glm::radians(azimuth_deg - major_deg);
-    const double a = dmax / 2.0, b = dmin / 2.0;
-    return 1.0 /
-           std::sqrt(std::cos(t) * std::cos(t) / (a * a) + std::sin(t) * std::sin(t) / (b * b));
+    return ellipseRadius_mm(dmax, dmin, azimuth_deg - major_deg);
 }
 
 // 101 sections 0.1 m apart from 100 m to 110 m, arm 1 at a P1AZ turning 3 degrees a row, each
