@@ -42,10 +42,9 @@ int runInfo(const QStringList& args) {
                     io::describeLog(file, options.read, [&](const io::SectionTable& rows) {
                         arms = rows.armCount;
                         needed = reconstruction::minValidArms(arms, geometry.minValidArmFraction);
-                        for (std::size_t i = 0; i < rows.rowCount(); ++i)
-                            measured += reconstruction::countValidArms(
-                                            rows.radii(i), arms, geometry.minArmRadius_mm,
-                                            geometry.maxArmRadius_mm) >= needed;
+                        measured += reconstruction::countMeasuredSections(
+                            rows, geometry.minValidArmFraction, geometry.minArmRadius_mm,
+                            geometry.maxArmRadius_mm);
                     });
                 std::fputs(io::formatLogInfo(info).c_str(), stdout);
                 summary.rows = info.rows;

@@ -6,6 +6,7 @@
 
 #include "io/number_parsing.h"
 #include "io/units.h"
+#include "io/warnings_text.h"
 
 namespace caliper3d::app {
 
@@ -247,24 +248,8 @@ void addSummaryOption(QCommandLineParser& parser) {
                       "FILE.jsonl"});
 }
 
-std::string formatWarnings(const io::Diagnostics& diagnostics) {
-    std::string out;
-    char count[96];
-    for (const io::Warning& w : diagnostics.warnings) {
-        out += w.file;
-        if (w.line > 0) out += ":" + std::to_string(w.line);  // none: about the whole well
-        out += ": warning: " + w.message + "\n";
-    }
-    if (diagnostics.warningCount > diagnostics.warnings.size()) {
-        std::snprintf(count, sizeof count, "... and %zu more warnings\n",
-                      diagnostics.warningCount - diagnostics.warnings.size());
-        out += count;
-    }
-    return out;
-}
-
 void printWarnings(const io::Diagnostics& diagnostics) {
-    std::fputs(formatWarnings(diagnostics).c_str(), stderr);
+    std::fputs(io::formatWarnings(diagnostics).c_str(), stderr);
 }
 
 }  // namespace caliper3d::app

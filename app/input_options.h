@@ -56,10 +56,7 @@ reconstruction::Wellhead parseWellhead(const std::string& text);
 // --summary FILE.jsonl: one JSON line per input (app/input_summary.h).
 void addSummaryOption(QCommandLineParser& parser);
 
-// A file's warnings, one a line ("file:line: warning: ..."; no line for one
-// about the whole well), and how many more there were than the diagnostics kept.
-std::string formatWarnings(const io::Diagnostics& diagnostics);
-// Prints formatWarnings on stderr.
+// Prints io::formatWarnings on stderr.
 void printWarnings(const io::Diagnostics& diagnostics);
 
 }  // namespace caliper3d::app

@@ -16,16 +16,15 @@
 #include "app/input_summary.h"
 #include "app/output_names.h"
 #include "app/pick_output.h"
-#include "app/png_output.h"
 #include "app/scene_assembly.h"
 #include "app/verb_parser.h"
 #include "io/number_parsing.h"
 #include "reconstruction/well_interval.h"
 #include "scenegraph/main_thread.h"
+#include "scenegraph/picture/picture.h"
+#include "scenegraph/picture/png_file.h"
 #include "scenegraph/picture_scale.h"
 #include "scenegraph/render_stats.h"
-#include "scenegraph/view_overlay.h"
-#include "scenegraph/well_annotations.h"
 
 namespace caliper3d::app {
 
@@ -127,32 +126,6 @@ void addRenderOptions(QCommandLineParser& p) {
     addWellSourceOptions(p);
 }
 
-// Depth ticks, labels and each well's name over measured depths [top_m, bottom_m], for the
-// camera under `root`, added to it (they take no part in its framing).
-void annotate(const AssembledScene& scene, SoSeparator* root, int width, int height, double top_m,
-              double bottom_m, double exaggeration, bool tickMarks) {
-    const SoCamera* camera = scenegraph::findCamera(root);
-    if (!camera) return;
-    for (const auto& geometry : scene.geometries) {
-        scenegraph::AnnotationView view =
-            scenegraph::pictureAnnotationView(*camera, width, height, top_m, bottom_m);
-        view.radialExaggeration = exaggeration;
-        view.tickMarks = tickMarks;
-        root->addChild(scenegraph::makeWellAnnotations(*geometry, view));
-    }
-}
-
-// The --stats line: what the picture drew and what it cost, after 5 more frames.
-void printStats(scenegraph::OffscreenRenderer& renderer, SoNode* root, int width, int height,
-                double firstPictureMs, double loadMs) {
-    const double frameMs =
-        renderer.timeFrames(root, width, height, scenegraph::kBackgroundColour, 5);
-    std::printf(
-        "triangles_drawn=%zu frame_ms=%.1f rss_mb=%.0f first_picture_ms=%.0f load_ms=%.0f\n",
-        scenegraph::trianglesDrawn(root, width, height), frameMs, scenegraph::peakRss_mb(),
-        firstPictureMs, loadMs);
-}
-
 // What every picture of one run is drawn with.
 struct RenderSettings {
     int width = 0, height = 0;
@@ -171,61 +144,56 @@ struct RenderSettings {
 // Draws `sources` into the picture `out`.
 int renderPicture(const std::vector<WellSource>& sources, const RenderSettings& r,
                   const std::string& out, std::vector<InputSummary>& inputs) {
-    const int width = r.width, height = r.height;
-    const bool downHole = r.downHole;
     const auto start = std::chrono::steady_clock::now();
     scenegraph::initCoin();
     PicturePlan plan = r.plan;
     AssembledScene scene = assembleScene(sources, r.options, std::ref(plan));
     inputs = scene.inputs;
     if (scene.wells == 0) return kExitBadInput;
-    scenegraph::NodeRef<SoSeparator> root;
-    scenegraph::ViewOverlay overlay;
-    std::vector<std::string> caption{scenegraph::exaggerationCaption(plan.exaggeration)};
-    double annotatedTop = plan.top_m(), annotatedBottom = plan.bottom_m();
-    if (downHole) {
+    scenegraph::PictureRequest request;
+    request.width = r.width;
+    request.height = r.height;
+    request.top_m = plan.top_m();
+    request.bottom_m = plan.bottom_m();
+    request.radialExaggeration = plan.exaggeration;
+    request.pixelTolerance = r.tolerance;
+    request.legend = scene.legend();
+    request.stats = r.stats;
+    if (r.downHole) {
         const auto& geometry = *scene.geometries.front();
         const double top = geometry.table().depth_m.front();
         const double bottom = geometry.table().depth_m.back();
-        double at = r.atSet ? r.at : top;
+        const double at = r.atSet ? r.at : top;
         if (at < top || at > bottom)
             throw UsageError("caliper3d render: --at " + r.atText + " is outside " +
                              (plan.depth ? "--depth " + plan.depthText
                                          : "the logged depths of " + geometry.table().source) +
                              " (" + depthRange(top, bottom) + ")");
-        const scenegraph::CameraPose pose = downHolePose(geometry, at);
-        root = scenegraph::makeRef(scenegraph::makeRenderRoot(scene.root.get(), pose));
-        annotatedTop = at;
-        annotatedBottom = at + pose.fogVisibility_m;
+        request.pose = scenegraph::downHolePose(geometry, at);
+        request.top_m = at;
+        request.bottom_m = at + request.pose->fogVisibility_m;
+        request.tickMarks = false;
         char eye[64];
         std::snprintf(eye, sizeof eye, "eye at MD %.2f m", at);
-        caption.insert(caption.begin(), eye);
+        request.caption.push_back(eye);
     } else {
+        request.view = *r.view;
         // The path above each log is part of the picture when it shows the whole well.
-        if (!plan.depth)
-            for (const auto& geometry : scene.geometries)
-                if (SoSeparator* above = scenegraph::makeUnloggedPath(*geometry))
-                    scene.root->addChild(above);
-        root = scenegraph::makeRef(
-            scenegraph::makeRenderRoot(scene.root.get(), *r.view, width, height));
+        request.unloggedPath = !plan.depth;
     }
-    annotate(scene, root.get(), width, height, annotatedTop, annotatedBottom, plan.exaggeration,
-             !downHole);
-    overlay.setCaption(caption);
-    root->addChild(overlay.root());
-    refineForCamera(scene, root.get(), height, r.tolerance);
-    addColourLegend(root.get(), scene);
-    scenegraph::OffscreenRenderer renderer;
-    const scenegraph::RenderedImage image =
-        renderer.render(root.get(), width, height, scenegraph::kBackgroundColour);
-    const auto firstPicture = std::chrono::steady_clock::now();
-    savePng(image, out);
+    const scenegraph::Picture picture = scenegraph::drawPicture(scene.pictureWells(), request);
+    const double firstPicture_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    scenegraph::writePng(picture.image, out);
     if (r.stats)
-        printStats(renderer, root.get(), width, height,
-                   std::chrono::duration<double, std::milli>(firstPicture - start).count(),
-                   scene.load_ms);
-    std::printf("wrote %s (%dx%d)\n", out.c_str(), width, height);
-    if (r.pick) std::fputs(describePick(scene, root.get(), width, height, *r.pick).c_str(), stdout);
+        std::printf(
+            "triangles_drawn=%zu frame_ms=%.1f rss_mb=%.0f first_picture_ms=%.0f load_ms=%.0f\n",
+            picture.trianglesDrawn, picture.frame_ms, scenegraph::peakRss_mb(), firstPicture_ms,
+            scene.load_ms);
+    std::printf("wrote %s (%dx%d)\n", out.c_str(), r.width, r.height);
+    if (r.pick)
+        std::fputs(describePick(scene, picture.root.get(), r.width, r.height, *r.pick).c_str(),
+                   stdout);
     return scene.failures > 0 ? kExitBadInput : kExitOk;
 }
 

@@ -30,35 +30,6 @@ AssembledScene assembleScene(const std::vector<std::string>& files, const LoadOp
     return assembleScene(wells, options);
 }
 
-std::vector<std::shared_ptr<const reconstruction::WallColouring>> wallColourings(
-    const std::vector<std::shared_ptr<const reconstruction::WellGeometry>>& wells,
-    const reconstruction::ColourRequest& request,
-    const std::vector<const reconstruction::SectionValues*>& values) {
-    auto valuesOf = [&values](std::size_t w) { return w < values.size() ? values[w] : nullptr; };
-    std::vector<std::shared_ptr<const reconstruction::WallColouring>> out;
-    for (std::size_t w = 0; w < wells.size(); ++w)
-        out.push_back(reconstruction::makeWallColouring(*wells[w], request, valuesOf(w)));
-    if (out.size() < 2 || request.range ||
-        out.front()->legend().kind != reconstruction::ColourMapKind::Sequential)
-        return out;
-    double lo = out.front()->legend().lo, hi = out.front()->legend().hi;
-    for (const auto& colouring : out) {
-        lo = std::min(lo, colouring->legend().lo);
-        hi = std::max(hi, colouring->legend().hi);
-    }
-    reconstruction::ColourRequest shared = request;
-    shared.range = std::make_pair(lo, hi);
-    for (std::size_t w = 0; w < wells.size(); ++w) {
-        auto colouring = reconstruction::makeWallColouring(*wells[w], shared, valuesOf(w));
-        reconstruction::ColourLegend legend = colouring->legend();
-        legend.range =
-            out[w]->legend().range + ", over all " + std::to_string(wells.size()) + " wells";
-        out[w] = std::make_shared<const reconstruction::WallColouring>(
-            colouring->withLegend(std::move(legend)));
-    }
-    return out;
-}
-
 AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOptions& options) {
     return assembleScene(wells, options, ScenePlan());
 }
@@ -98,7 +69,7 @@ AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOpt
     if (plan && !loaded.empty()) plan(loaded, exaggeration);
     std::vector<std::shared_ptr<const reconstruction::WallColouring>> colourings;
     try {
-        colourings = wallColourings(loaded, options.colour);
+        colourings = reconstruction::wallColourings(loaded, options.colour);
     } catch (const std::exception& e) {
         out.failures += static_cast<int>(loaded.size());
         std::fprintf(stderr, "caliper3d: %s\n", e.what());
@@ -130,68 +101,10 @@ const reconstruction::ColourLegend* AssembledScene::legend() const {
     return &geometries.front()->options().colouring->legend();
 }
 
-std::size_t refineForView(AssembledScene& scene, const glm::vec3& eye,
-                          const scenegraph::LodView& view) {
-    std::size_t refined = 0;
-    for (std::size_t w = 0; w < scene.scenes.size(); ++w) {
-        scenegraph::WellScene& well = *scene.scenes[w];
-        const reconstruction::WellGeometry& geometry = *scene.geometries[w];
-        well.setLodView(view);
-        const std::vector<scenegraph::DetailRequest> wanted = well.wantedDetail(eye);
-        std::vector<reconstruction::SegmentMesh> meshes(wanted.size());
-        // Meshes on two threads (they read the immutable geometry only); nodes on this one.
-        auto build = [&](std::size_t from) {
-            for (std::size_t i = from; i < wanted.size(); i += 2)
-                meshes[i] = reconstruction::buildSegmentLevels(geometry, wanted[i].segment,
-                                                               wanted[i].level, wanted[i].heldFrom);
-        };
-        std::thread helper(build, 1);
-        build(0);
-        helper.join();
-        for (const reconstruction::SegmentMesh& mesh : meshes) well.attachFinerLevels(mesh);
-        refined += wanted.size();
-    }
-    return refined;
-}
-
-std::size_t refineForCamera(AssembledScene& scene, SoNode* renderRoot, int height,
-                            float pixelTolerance) {
-    auto* camera = dynamic_cast<SoPerspectiveCamera*>(scenegraph::findCamera(renderRoot));
-    if (!camera) return 0;
-    const SbVec3f eye = camera->position.getValue();
-    scenegraph::LodView view =
-        scenegraph::lodViewFor(height, camera->heightAngle.getValue(), pixelTolerance);
-    view.visibility_m = scenegraph::fogVisibility(renderRoot);
-    return refineForView(scene, glm::vec3(eye[0], eye[1], eye[2]), view);
-}
-
-void addColourLegend(SoSeparator* renderRoot, const AssembledScene& scene) {
-    if (const reconstruction::ColourLegend* legend = scene.legend())
-        renderRoot->addChild(scenegraph::makeColourLegend(*legend));
-}
-
-scenegraph::CameraPose downHolePose(const reconstruction::WellGeometry& geometry, double md_m) {
-    const auto& depth = geometry.table().depth_m;
-    const std::size_t row = static_cast<std::size_t>(
-        std::lower_bound(depth.begin(), depth.end(), md_m) - depth.begin());
-    const std::size_t r = std::min(row, depth.size() - 1);
-    const reconstruction::PathPoint& p = geometry.path()[r];
-    const glm::dvec3 eye = reconstruction::toScene(geometry.centre(r));
-    const glm::dvec3 look =
-        reconstruction::toScene(reconstruction::holeTangent(p.inc_deg, p.azi_deg));
-    const glm::dvec3 up = reconstruction::toScene(reconstruction::highSide(p.inc_deg, p.azi_deg));
-    scenegraph::CameraPose pose;
-    for (int i = 0; i < 3; ++i) {
-        pose.eye[i] = static_cast<float>(eye[i]);
-        pose.look[i] = static_cast<float>(look[i]);
-        pose.up[i] = static_cast<float>(up[i]);
-    }
-    return pose;
-}
-
-std::string exampleWellPath() {
-    if (const char* env = std::getenv("CALIPER3D_EXAMPLE")) return env;
-    return CALIPER3D_EXAMPLE_WELL;
+std::vector<scenegraph::PictureWell> AssembledScene::pictureWells() const {
+    std::vector<scenegraph::PictureWell> wells;
+    for (std::size_t w = 0; w < geometries.size(); ++w) wells.push_back({geometries[w], scenes[w]});
+    return wells;
 }
 
 }  // namespace caliper3d::app

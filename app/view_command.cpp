@@ -1,5 +1,6 @@
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <optional>
@@ -9,17 +10,21 @@
 
 #include "app/commands.h"
 #include "app/desktop/desk_model.h"
-#include "app/gui_session.h"
+#include "app/desktop/gui_session.h"
+#include "app/desktop/main_window.h"
+#include "app/desktop/well_session.h"
 #include "app/input_options.h"
-#include "app/main_window.h"
-#include "app/png_output.h"
 #include "app/scene_assembly.h"
 #include "app/verb_parser.h"
 #include "io/number_parsing.h"
 #include "scenegraph/camera_setup.h"
+#include "scenegraph/colour_legend.h"
 #include "scenegraph/iv_export.h"
 #include "scenegraph/main_thread.h"
 #include "scenegraph/node_ref.h"
+#include "scenegraph/offscreen_renderer.h"
+#include "scenegraph/picture/picture.h"
+#include "scenegraph/picture/png_file.h"
 #include "scenegraph/well_scene.h"
 
 namespace caliper3d::app {
@@ -33,23 +38,39 @@ int showWindow(int argc, char** argv, const std::vector<WellSource>& wells,
     MainWindow window;
     window.show();
     int status = kExitOk;
-    QObject::connect(&window, &MainWindow::wellFailed, [&](const QString& message) {
-        std::fprintf(stderr, "caliper3d: %s\n", message.toLocal8Bit().constData());
-        status = kExitBadInput;
-    });
+    WellSession& session = window.session();
+    QObject::connect(&session, &WellSession::wellFailed,
+                     [&](const QString&, const QString& message) {
+                         std::fprintf(stderr, "caliper3d: %s\n", message.toLocal8Bit().constData());
+                         status = kExitBadInput;
+                     });
     if (at_m)  // once the first well is analysed, so that every view has it to show
-        QObject::connect(&window, &MainWindow::wellAnalysed, &window, [&window, at_m](int well) {
+        QObject::connect(&session, &WellSession::wellAnalysed, &window, [&window, at_m](int well) {
             if (well == 0) window.model().setCurrent(0, *at_m);
         });
-    window.openWell(wells.front(), options);
-    for (std::size_t i = 1; i < wells.size(); ++i) window.addWell(wells[i], options);
+    session.openWell(wells.front(), options);
+    for (std::size_t i = 1; i < wells.size(); ++i) session.addWell(wells[i], options);
     // The first frame can stay black until something changes: redraw once shown.
     QTimer::singleShot(100, &window, [&window] { window.update(); });
     const int rc = application.exec();
     return rc != 0 ? rc : status;
 }
 
+// The bundled example well (written by 'caliper3d synth' at build time), or $CALIPER3D_EXAMPLE.
+std::string exampleWellPath() {
+    if (const char* env = std::getenv("CALIPER3D_EXAMPLE")) return env;
+    return CALIPER3D_EXAMPLE_WELL;
+}
+
 constexpr double kExampleBreakout_m = 70.0;  // the middle of the example's breakout (60-80 m)
+
+// The example's pictures with no display: the scene and its legend, no labels.
+void writeBarePicture(SoSeparator* root, const reconstruction::ColourLegend* legend,
+                      const std::string& path, int width, int height) {
+    if (legend) root->addChild(scenegraph::makeColourLegend(*legend));
+    scenegraph::OffscreenRenderer renderer;
+    scenegraph::writePng(renderer.render(root, width, height, scenegraph::kBackgroundColour), path);
+}
 
 LoadOptions exampleOptions() {
     LoadOptions options;
@@ -111,10 +132,9 @@ int runDefault(int argc, char** argv) {
         // Looking down the hole from just above the example's breakout (60-80 m):
         // the elongated lobes show in colour; a whole-well view is a thin line.
         auto hole = scenegraph::makeRef(scenegraph::makeRenderRoot(
-            scene.root.get(), downHolePose(*scene.geometries.front(), 59.0)));
-        refineForCamera(scene, hole.get(), 768);  // full detail near the eye
-        addColourLegend(hole.get(), scene);
-        detail::renderRootToPng(hole.get(), "out/example.png", 1024, 768);
+            scene.root.get(), scenegraph::downHolePose(*scene.geometries.front(), 59.0)));
+        scenegraph::refineForCamera(scene.pictureWells(), hole.get(), 768);  // detail near the eye
+        writeBarePicture(hole.get(), scene.legend(), "out/example.png", 1024, 768);
         // And the whole well, sections drawn 50 times larger so it is more than a line: the
         // same geometry restyled, not the file read again.
         const reconstruction::WellGeometry& loaded = *scene.geometries.front();
@@ -124,8 +144,7 @@ int runDefault(int argc, char** argv) {
         overview.buildAll(whole);
         auto overviewRoot = scenegraph::makeRef(
             scenegraph::makeRenderRoot(overview.root(), scenegraph::ViewDirection::Iso, 600, 900));
-        addColourLegend(overviewRoot.get(), scene);  // the same colouring
-        detail::renderRootToPng(overviewRoot.get(), "out/example-overview.png", 600, 900);
+        writeBarePicture(overviewRoot.get(), scene.legend(), "out/example-overview.png", 600, 900);
         const auto here = std::filesystem::current_path();
         std::printf(
             "No display: rendered the example well instead of opening a window.\n"

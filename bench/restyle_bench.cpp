@@ -1,6 +1,6 @@
 // How long a new look costs the window once a well is loaded: recolouring by each quantity
 // and re-exaggerating, from the geometry in memory (WellGeometry::restyled, the colouring,
-// and every segment's coarse levels rebuilt into a new WellScene, as MainWindow::restyle
+// and every segment's coarse levels rebuilt into a new WellScene, as WellSession::restyle
 // does). Prints one line a step and the peak resident memory.
 //   restyle_bench FILE [QUANTITY...]   (default: departure diameter ellipticity class dls)
 #include <chrono>

@@ -11,6 +11,8 @@
 #include <Inventor/nodes/SoPerspectiveCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
 
+#include "reconstruction/section/section_frame.h"
+#include "reconstruction/well_geometry.h"
 #include "scenegraph/main_thread.h"
 
 namespace caliper3d::scenegraph {
@@ -21,6 +23,27 @@ std::optional<ViewDirection> parseViewDirection(const std::string& name) {
     if (name == "east") return ViewDirection::East;
     if (name == "top") return ViewDirection::Top;
     return std::nullopt;
+}
+
+void frameAll(SoCamera* camera, SoNode* root, const SbViewportRegion& viewport, float room) {
+    assertMainThread("frameAll");
+    camera->viewAll(root, viewport);
+    SbVec3f look;
+    camera->orientation.getValue().multVec(SbVec3f(0.0f, 0.0f, -1.0f), look);
+    const float distance = camera->focalDistance.getValue();
+    const SbVec3f focus = camera->position.getValue() + look * distance;
+    camera->position = focus - look * (distance * room);
+    camera->focalDistance = distance * room;
+}
+
+void frameFrom(SoCamera* camera, SoNode* root, const SbViewportRegion& viewport,
+               ViewDirection view) {
+    assertMainThread("frameFrom");
+    SoGetBoundingBoxAction bbox(viewport);
+    bbox.apply(root);
+    if (bbox.getBoundingBox().isEmpty()) return;
+    aimCamera(camera, view, bbox.getBoundingBox().getCenter());
+    frameAll(camera, root, viewport);
 }
 
 void aimCamera(SoCamera* camera, ViewDirection view, const SbVec3f& centre) {
@@ -117,6 +140,25 @@ SoSeparator* makeRenderRoot(SoNode* scene, const CameraPose& pose) {
     root->addChild(fog);
     root->addChild(scene);
     return root;
+}
+
+CameraPose downHolePose(const reconstruction::WellGeometry& geometry, double md_m) {
+    const auto& depth = geometry.table().depth_m;
+    const std::size_t row = static_cast<std::size_t>(
+        std::lower_bound(depth.begin(), depth.end(), md_m) - depth.begin());
+    const std::size_t r = std::min(row, depth.size() - 1);
+    const reconstruction::PathPoint& p = geometry.path()[r];
+    const glm::dvec3 eye = reconstruction::toScene(geometry.centre(r));
+    const glm::dvec3 look =
+        reconstruction::toScene(reconstruction::holeTangent(p.inc_deg, p.azi_deg));
+    const glm::dvec3 up = reconstruction::toScene(reconstruction::highSide(p.inc_deg, p.azi_deg));
+    CameraPose pose;
+    for (int i = 0; i < 3; ++i) {
+        pose.eye[i] = static_cast<float>(eye[i]);
+        pose.look[i] = static_cast<float>(look[i]);
+        pose.up[i] = static_cast<float>(up[i]);
+    }
+    return pose;
 }
 
 }  // namespace caliper3d::scenegraph

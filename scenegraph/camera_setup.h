@@ -4,9 +4,14 @@
 #include <string>
 
 class SbVec3f;
+class SbViewportRegion;
 class SoCamera;
 class SoNode;
 class SoSeparator;
+
+namespace caliper3d::reconstruction {
+class WellGeometry;
+}
 
 namespace caliper3d::scenegraph {
 
@@ -21,6 +26,17 @@ std::optional<ViewDirection> parseViewDirection(const std::string& name);
 // Turns `camera` to look at `centre` from `view` (position moved one unit
 // back along the view; call viewAll afterwards to frame the scene).
 void aimCamera(SoCamera* camera, ViewDirection view, const SbVec3f& centre);
+
+// SoCamera::viewAll of `root`, then backed off along the view by `room` (SoCamera::viewAll
+// puts the ends of a long well on the window's edges, a vertical well's wellhead and its
+// name half outside).
+constexpr float kViewAllRoom = 1.12f;
+void frameAll(SoCamera* camera, SoNode* root, const SbViewportRegion& viewport,
+              float room = kViewAllRoom);
+// aimCamera at the centre of `root`'s bounding box from `view`, then frameAll; nothing when
+// `root` is empty.
+void frameFrom(SoCamera* camera, SoNode* root, const SbViewportRegion& viewport,
+               ViewDirection view);
 
 // A root ready to render: perspective camera framing `scene` from `view`
 // for the given aspect ratio, a light from the camera, then the scene.
@@ -41,5 +57,9 @@ struct CameraPose {
     float fogVisibility_m = 25.0f;
 };
 SoSeparator* makeRenderRoot(SoNode* scene, const CameraPose& pose);
+
+// The fly-through view: a camera on `geometry`'s axis at the row nearest below measured
+// depth `md_m`, looking down the hole, high side up.
+CameraPose downHolePose(const reconstruction::WellGeometry& geometry, double md_m);
 
 }  // namespace caliper3d::scenegraph

@@ -4,7 +4,10 @@
 # of reconstruction/ (section/, path/, mesh/, parallel/, synthetic/, well_geometry) reaches the
 # analysis half (analysis/) or the loading of a well, which sit above it. The CMake targets cannot
 # enforce this on their own: Debian installs Coin's headers on the default include path, and every
-# target sees the project root. Each module's tests follow the module's rule.
+# target sees the project root. Each module's tests follow the module's rule. Inside app/, the
+# command line (app/*) includes no desktop file (app/desktop/), and the desktop includes no
+# command-line file but the option table (app/input_options.h); view_command.cpp and main.cpp
+# are the bridge between them.
 #   scripts/check-layers.sh [ROOT]      check the tree at ROOT (default: this checkout)
 #   scripts/check-layers.sh --self-test  prove that the check catches each kind of violation
 set -euo pipefail
@@ -20,6 +23,11 @@ declare -A forbidden=(
 # loading (caliper3d_reconstruction).
 geometryForbidden="^reconstruction/(analysis/|load/)|^(scenegraph|app)/|^(${coinQtGl})"
 geometryDirs="reconstruction/section reconstruction/path reconstruction/mesh reconstruction/parallel reconstruction/synthetic"
+# app/: the two programs.
+optionTable='app/input_options\.h'
+commandLineForbidden='^app/desktop/'
+desktopForbidden="^app/[^/]+$"
+bridge='app/(view_command|main)\.cpp'
 
 # Prints "file:line: includes X" for each violation under ROOT; returns 1 if any.
 check() {
@@ -43,15 +51,25 @@ check() {
     [ -f "$file" ] || continue
     checkFile "$root" "$file" "well_geometry (geometry)" "$geometryForbidden" || status=1
   done
+  for file in "$root"/app/*.h "$root"/app/*.cpp; do
+    [ -f "$file" ] || continue
+    [[ ${file#"$root"/} =~ ^$bridge$ ]] && continue
+    checkFile "$root" "$file" "the command line" "$commandLineForbidden" || status=1
+  done
+  if [ -d "$root/app/desktop" ]; then
+    while IFS= read -r -d '' file; do
+      checkFile "$root" "$file" "the desktop" "$desktopForbidden" "^$optionTable$" || status=1
+    done < <(find "$root/app/desktop" -type f \( -name '*.h' -o -name '*.cpp' \) -print0)
+  fi
   return $status
 }
 
 # Prints a violation for each include of FILE that matches the regular expression FORBIDDEN (or
-# climbs with ../); returns 1 if any.
+# climbs with ../), unless it matches ALLOWED; returns 1 if any.
 checkFile() {
-  local root=$1 file=$2 who=$3 forbiddenRe=$4 status=0 line path
+  local root=$1 file=$2 who=$3 forbiddenRe=$4 allowedRe=${5:-'^$'} status=0 line path
   while IFS=: read -r line path; do
-    if [[ $path == ../* || $path =~ $forbiddenRe ]]; then
+    if [[ $path == ../* || ($path =~ $forbiddenRe && ! $path =~ $allowedRe) ]]; then
       echo "${file#"$root"/}:$line: $who may not include $path" >&2
       status=1
     fi
@@ -65,11 +83,15 @@ selfTest() {
   tmp=$(mktemp -d)
   trap 'rm -rf "$tmp"' RETURN
   mkdir -p "$tmp/io" "$tmp/reconstruction/mesh" "$tmp/reconstruction/analysis" "$tmp/scenegraph" \
-    "$tmp/tests/io"
+    "$tmp/tests/io" "$tmp/app/desktop"
   printf '#include "reconstruction/well_geometry.h"\n' >"$tmp/reconstruction/analysis/ok.cpp"
   printf '#include <vector>\n#include "io/a.h"\n' >"$tmp/io/ok.cpp"
   printf '#include "reconstruction/mesh/mesh.h"\n#include <glm/vec3.hpp>\n#include <Inventor/SoDB.h>\n' \
     >"$tmp/scenegraph/ok.cpp"
+  printf '#include "app/input_options.h"\n#include "app/desktop/desk_model.h"\n#include "scenegraph/well_scene.h"\n' \
+    >"$tmp/app/desktop/ok.cpp"
+  printf '#include "app/commands.h"\n#include "app/desktop/main_window.h"\n' >"$tmp/app/view_command.cpp"
+  printf '#include "app/input_options.h"\n#include "scenegraph/well_scene.h"\n' >"$tmp/app/ok.cpp"
   check "$tmp" 2>/dev/null || { echo "self-test: a clean tree was refused" >&2; return 1; }
   local bad
   for bad in 'io/x.cpp:#include "reconstruction/mesh/mesh.h"' \
@@ -84,7 +106,11 @@ selfTest() {
              'scenegraph/x.cpp:#include <Inventor/Qt/SoQt.h>' \
              'scenegraph/x.cpp:#include <QImage>' \
              'tests/io/x_test.cpp:#include "scenegraph/iv_export.h"' \
-             'io/x.cpp:  #  include "../app/commands.h"'; do
+             'io/x.cpp:  #  include "../app/commands.h"' \
+             'app/x.cpp:#include "app/desktop/main_window.h"' \
+             'app/x.h:#include "app/desktop/desk_model.h"' \
+             'app/desktop/x.cpp:#include "app/scene_assembly.h"' \
+             'app/desktop/x.h:#include "app/commands.h"'; do
     local file=${bad%%:*} text=${bad#*:}
     printf '%s\n' "$text" >"$tmp/$file"
     if check "$tmp" 2>/dev/null; then

@@ -24,6 +24,29 @@ void DeskModel::updateWell(int i, DeskWell well) {
     if (m_well < 0 && m_wells[static_cast<std::size_t>(i)].geometry) setCurrentRow(i, 0);
 }
 
+int DeskModel::indexOf(int id) const {
+    for (std::size_t i = 0; i < m_wells.size(); ++i)
+        if (m_wells[i].id == id) return static_cast<int>(i);
+    return -1;
+}
+
+void DeskModel::removeWell(int i) {
+    m_wells.erase(m_wells.begin() + i);
+    const bool wasCurrent = m_well == i;
+    if (m_well > i) --m_well;
+    if (wasCurrent) {
+        m_well = -1;
+        m_row = 0;
+        m_depth_m = io::kNaN;
+        m_azimuth_deg = io::kNaN;
+    }
+    emit wellsChanged();
+    if (!wasCurrent) return;
+    emit currentChanged(m_well, m_depth_m);
+    for (int w = 0; w < wellCount() && m_well < 0; ++w)
+        if (m_wells[static_cast<std::size_t>(w)].geometry) setCurrentRow(w, 0);
+}
+
 void DeskModel::clearWells() {
     m_wells.clear();
     m_well = -1;

@@ -18,8 +18,10 @@ namespace caliper3d::app {
 // shared (the geometry and the analysis are const); the window replaces a
 // well's record when something about it changes.
 struct DeskWell {
+    int id = -1;                          // stable while the well is shown (WellSession's key)
     QString name;                         // the log's WELL field, else the file's name
     QString path;                         // the file it was read from
+    reconstruction::WellSource source;    // the file with its survey and wellhead
     reconstruction::LoadOptions options;  // as it was loaded (bit size, roles, units given)
     std::shared_ptr<const reconstruction::WellGeometry> geometry;  // null until placed
     // The report's analysis of the geometry (reconstruction::analyseWell): null until it is
@@ -46,11 +48,17 @@ public:
     // The current well's record; null when there is none.
     const DeskWell* current() const;
 
-    // Called by the window as wells load.
+    // The index of the well whose DeskWell::id is `id`; -1 when none is.
+    int indexOf(int id) const;
+
+    // Called by the well session as wells load.
     int addWell(DeskWell well);             // emits wellsChanged; the first becomes current
     void updateWell(int i, DeskWell well);  // emits wellChanged(i)
-    void clearWells();                      // emits wellsChanged and currentChanged
-    void setVisible(int i, bool visible);   // emits wellChanged(i)
+    // Emits wellsChanged; when the current well goes, the first well with geometry becomes
+    // current at its first row (currentChanged).
+    void removeWell(int i);
+    void clearWells();                     // emits wellsChanged and currentChanged
+    void setVisible(int i, bool visible);  // emits wellChanged(i)
 
     int currentWell() const { return m_well; }  // -1 when no well is loaded
     // The current measured depth, metres, always a row's depth (NaN when no well).

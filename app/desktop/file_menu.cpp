@@ -8,6 +8,7 @@
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QGLWidget>
+#include <QMainWindow>
 #include <QMenu>
 #include <QMessageBox>
 #include <QProgressDialog>
@@ -23,7 +24,8 @@
 #include "app/desktop/open_well_dialog.h"
 #include "app/desktop/picture_renderer.h"
 #include "app/desktop/report_job.h"
-#include "app/main_window.h"
+#include "app/desktop/well_session.h"
+#include "scenegraph/picture/png_file.h"
 
 namespace caliper3d::app {
 
@@ -69,8 +71,13 @@ std::optional<QSize> askPictureSize(QWidget* parent, QSize initial) {
 
 }  // namespace
 
-FileMenu::FileMenu(MainWindow& window, QMenu* menu)
-    : QObject(&window), m_window(window), m_program(QCoreApplication::applicationFilePath()) {
+FileMenu::FileMenu(QMainWindow& window, WellSession& session, SoQtExaminerViewer& viewer,
+                   QMenu* menu)
+    : QObject(&window),
+      m_window(window),
+      m_session(session),
+      m_viewer(viewer),
+      m_program(QCoreApplication::applicationFilePath()) {
     menu->addAction(
         "&Open well...", this, [this] { openDialog(false); }, QKeySequence::Open);
     menu->addAction("&Add well...", this, [this] { openDialog(true); });
@@ -111,13 +118,13 @@ void FileMenu::openFiles(const QStringList& paths, bool add) {
 }
 
 bool FileMenu::openFile(const QString& path, bool add) {
-    OpenWellDialog dialog(path, m_window.look(), &m_window);
+    OpenWellDialog dialog(path, m_session.look(), &m_window);
     if (dialog.exec() != QDialog::Accepted) return false;
     const ParsedWells& chosen = dialog.request();
-    if (add && m_window.wellCount() > 0)
-        m_window.addWell(chosen.wells.front(), chosen.options);
+    if (add && m_session.wellCount() > 0)
+        m_session.addWell(chosen.wells.front(), chosen.options);
     else
-        m_window.openWell(chosen.wells.front(), chosen.options);
+        m_session.openWell(chosen.wells.front(), chosen.options);
     m_settings.addRecent({path, openArguments(dialog.choices())});
     m_settings.setLastFolder(QFileInfo(path).absolutePath());
     fillRecent();
@@ -134,9 +141,9 @@ void FileMenu::openRecent(const DeskSettings::Recent& recent) {
     try {
         ParsedWells parsed = parseWellArguments(recent.arguments);
         if (parsed.wells.size() != 1) throw UsageError("expected one file");
-        parsed.options.radialExaggeration = m_window.look().radialExaggeration;
-        parsed.options.colour = m_window.look().colour;
-        m_window.openWell(parsed.wells.front(), parsed.options);
+        parsed.options.radialExaggeration = m_session.look().radialExaggeration;
+        parsed.options.colour = m_session.look().colour;
+        m_session.openWell(parsed.wells.front(), parsed.options);
         m_settings.addRecent(recent);
     } catch (const std::exception& e) {
         // Remembered by another version, or edited: open it as a new file instead.
@@ -174,14 +181,14 @@ void FileMenu::exportDialog() {
 }
 
 bool FileMenu::exportTo(const QString& path) {
-    if (m_export || m_window.wellCount() == 0 || m_window.loading()) {
+    if (m_export || m_session.wellCount() == 0 || m_session.loading()) {
         status(m_export ? "An export is running" : "No well loaded to export");
         return false;
     }
     // The command line takes one set of options for every file: wells opened with different
     // ones (or only some with a survey) are exported one at a time, the current well here.
-    std::vector<WellSource> wells = m_window.wellSources();
-    const DeskModel& model = m_window.model();
+    std::vector<WellSource> wells = m_session.wellSources();
+    const DeskModel& model = m_session.model();
     LoadOptions options = model.well(0).options;
     bool same = true;
     for (int i = 1; i < model.wellCount(); ++i)
@@ -238,8 +245,8 @@ void FileMenu::exportEnded(bool ok, const QString& message) {
 }
 
 void FileMenu::savePicture() {
-    SoQtExaminerViewer* viewer = m_window.viewer();
-    if (m_window.wellCount() == 0 || !viewer->getCamera()) {
+    SoQtExaminerViewer* viewer = &m_viewer;
+    if (m_session.wellCount() == 0 || !viewer->getCamera()) {
         status("No well to picture");
         return;
     }
@@ -249,20 +256,24 @@ void FileMenu::savePicture() {
     const std::optional<QSize> size = askPictureSize(&m_window, viewer->getGLWidget()->size());
     if (!size) return;
     try {
-        // The offscreen renderer's EGL context cannot be made current on this thread while the
-        // viewer's GLX context is: release it (the viewer makes it current again to draw).
-        if (auto* gl = qobject_cast<QGLWidget*>(viewer->getGLWidget())) gl->doneCurrent();
-        const QImage image =
-            renderPicture(viewer->getSceneGraph(), *viewer->getCamera(), m_window.legend(), *size);
-        if (!image.save(path, "PNG")) throw std::runtime_error("cannot write the file");
+        writePicture(path, *size);
         status(QString("Wrote %1 (%2 x %3)").arg(path).arg(size->width()).arg(size->height()));
     } catch (const std::exception& e) {
         QMessageBox::warning(&m_window, "Save picture failed", path + ": " + e.what());
     }
 }
 
+void FileMenu::writePicture(const QString& path, QSize size) {
+    // The offscreen renderer's EGL context cannot be made current on this thread while the
+    // viewer's GLX context is: release it (the viewer makes it current again to draw).
+    if (auto* gl = qobject_cast<QGLWidget*>(m_viewer.getGLWidget())) gl->doneCurrent();
+    const scenegraph::Picture picture =
+        drawWindowPicture(m_session, *m_viewer.getCamera(), size.width(), size.height());
+    scenegraph::writePng(picture.image, path.toStdString());
+}
+
 void FileMenu::saveReport() {
-    const DeskWell* well = m_window.model().current();
+    const DeskWell* well = m_session.model().current();
     if (!well || !well->analysis) {
         status(well ? "The analysis of " + well->name + " is not ready yet" : "No well loaded");
         return;

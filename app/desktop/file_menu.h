@@ -4,32 +4,36 @@
 #include <optional>
 
 #include <QObject>
+#include <QSize>
 #include <QString>
 #include <QStringList>
 
 #include "app/desktop/desk_settings.h"
 #include "app/desktop/open_choices.h"
 
+class QMainWindow;
 class QMenu;
 class QProgressDialog;
 class QTimer;
+class SoQtExaminerViewer;
 
 namespace caliper3d::app {
 
 class ExportJob;
-class MainWindow;
+class WellSession;
 class ReportJob;
 
 // The window's File menu and what it does with files: Open and Add through the Open dialog
 // (OpenWellDialog), Open recent, drag and drop (FileDrop), Export (a child `caliper3d export`,
-// ExportJob, with a progress dialog and Cancel), Save picture (renderPicture) and Save report
-// (ReportJob on a worker); and the settings that outlive the window (DeskSettings). It uses
-// the window's public interface only.
+// ExportJob, with a progress dialog and Cancel), Save picture (drawWindowPicture) and Save report
+// (ReportJob on a worker); and the settings that outlive the window (DeskSettings). It opens
+// wells through the session, pictures from the viewer, and uses the window as the dialogs'
+// parent, for drops and for its layout.
 class FileMenu : public QObject {
     Q_OBJECT
 
 public:
-    FileMenu(MainWindow& window, QMenu* menu);
+    FileMenu(QMainWindow& window, WellSession& session, SoQtExaminerViewer& viewer, QMenu* menu);
     ~FileMenu() override;
 
     // File > Open (add false) or Add: a file chosen, then the Open dialog.
@@ -45,6 +49,9 @@ public:
     // false when there is nothing to export or one is running.
     bool exportTo(const QString& path);
     void savePicture();
+    // Save picture without its dialogs: the window's view at `size`, as `caliper3d render`
+    // draws it (drawWindowPicture). Throws std::runtime_error naming what failed.
+    void writePicture(const QString& path, QSize size);
     void saveReport();
 
     // The window's layout (closeEvent) and its restoring (after the docks are built).
@@ -66,7 +73,9 @@ private:
     void exportEnded(bool ok, const QString& message);
     void status(const QString& text);
 
-    MainWindow& m_window;
+    QMainWindow& m_window;
+    WellSession& m_session;
+    SoQtExaminerViewer& m_viewer;
     QMenu* m_recent = nullptr;
     DeskSettings m_settings;
     QString m_program;

@@ -1,20 +1,21 @@
 #pragma once
 
-#include <QImage>
-#include <QSize>
-
-#include "reconstruction/mesh/wall_colouring.h"
+#include "scenegraph/picture/picture.h"
 
 class SoCamera;
-class SoNode;
 
 namespace caliper3d::app {
 
-// File > Save picture: the window's 3D view drawn offscreen at any size (the render verb's
-// renderer: scenegraph::OffscreenRenderer), seen through a copy of the viewer's camera with a
-// headlight as the viewer has, the legend drawn over it as `caliper3d render` draws it. Main
-// thread only (Coin). Throws std::runtime_error when no offscreen context can be made.
-QImage renderPicture(SoNode* viewRoot, const SoCamera& camera,
-                     const reconstruction::ColourLegend* legend, QSize size);
+class WellSession;
+
+// File > Save picture: what `caliper3d render` would draw of the session's visible wells (the
+// geometry as shown, their look and legend) seen through `camera` (the viewer's), at `width`
+// x `height`: the same request to the same recipe (scenegraph::drawPicture), so the detail is
+// chosen for the picture's size, not the viewer's. Main thread only. Throws
+// std::runtime_error when no offscreen context can be made.
+scenegraph::PictureRequest windowPictureRequest(const WellSession& session, const SoCamera& camera,
+                                                int width, int height);
+scenegraph::Picture drawWindowPicture(const WellSession& session, const SoCamera& camera, int width,
+                                      int height);
 
 }  // namespace caliper3d::app

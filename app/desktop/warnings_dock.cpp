@@ -4,7 +4,7 @@
 #include <QPlainTextEdit>
 
 #include "app/desktop/desk_model.h"
-#include "app/input_options.h"
+#include "io/warnings_text.h"
 
 namespace caliper3d::app {
 
@@ -31,7 +31,7 @@ void WarningsDock::refresh() {
     for (int i = 0; i < m_model.wellCount(); ++i) {
         const DeskWell& well = m_model.well(i);
         if (!well.error.isEmpty()) text += "error: " + well.error + "\n";
-        text += QString::fromStdString(formatWarnings(well.diagnostics));
+        text += QString::fromStdString(io::formatWarnings(well.diagnostics));
         count += well.diagnostics.warningCount;
     }
     if (text.isEmpty()) text = m_model.wellCount() > 0 ? "No warnings." : "No well loaded.";

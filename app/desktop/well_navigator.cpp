@@ -18,7 +18,6 @@
 #include <Inventor/nodes/SoSwitch.h>
 
 #include "app/desktop/desk_model.h"
-#include "app/scene_assembly.h"
 #include "reconstruction/mesh/lod_levels.h"
 #include "scenegraph/camera_setup.h"
 
@@ -35,8 +34,12 @@ constexpr float kMarkerColour[3] = {1.0f, 0.85f, 0.1f};  // a yellow no colour m
 }  // namespace
 
 WellNavigator::WellNavigator(DeskModel& model, SoQtExaminerViewer& viewer, SoSeparator* viewRoot,
-                             QObject* parent)
-    : QObject(parent), m_model(model), m_viewer(viewer), m_viewRoot(viewRoot) {
+                             SoNode* sceneRoot, QObject* parent)
+    : QObject(parent),
+      m_model(model),
+      m_viewer(viewer),
+      m_viewRoot(viewRoot),
+      m_sceneRoot(sceneRoot) {
     m_viewRoot->ref();
     m_insideLook = new SoSwitch;
     m_insideLook->whichChild = SO_SWITCH_NONE;
@@ -89,11 +92,26 @@ WellNavigator::~WellNavigator() {
 
 void WellNavigator::onCurrentChanged() {
     updateMarker();
-    if (m_holdCamera) {
-        m_holdCamera = false;
-        return;
-    }
-    follow();
+    if (!m_picking) follow();
+}
+
+void WellNavigator::showPicked(int well, std::size_t row, double azimuth_deg) {
+    m_picking = true;  // the model's currentChanged arrives within the call below
+    m_model.setCurrentRow(well, row);
+    m_picking = false;
+    m_model.setCurrentAzimuth(azimuth_deg);
+}
+
+void WellNavigator::viewAll() {
+    SoCamera* camera = m_viewer.getCamera();
+    if (!camera) return;
+    scenegraph::frameAll(camera, m_sceneRoot, m_viewer.getViewportRegion());
+}
+
+void WellNavigator::viewFrom(scenegraph::ViewDirection direction) {
+    SoCamera* camera = m_viewer.getCamera();
+    if (!camera) return;
+    scenegraph::frameFrom(camera, m_sceneRoot, m_viewer.getViewportRegion(), direction);
 }
 
 void WellNavigator::updateMarker() {
@@ -132,7 +150,7 @@ void WellNavigator::follow() {
     const reconstruction::WellGeometry& g = *well->geometry;
     const std::size_t row = m_model.currentRow();
     if (m_inside) {
-        const scenegraph::CameraPose pose = downHolePose(g, m_model.currentDepth_m());
+        const scenegraph::CameraPose pose = scenegraph::downHolePose(g, m_model.currentDepth_m());
         const SbVec3f eye(pose.eye), look(pose.look);
         camera->position = eye;
         camera->pointAt(eye + look, SbVec3f(pose.up));

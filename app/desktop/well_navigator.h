@@ -3,11 +3,16 @@
 #include <QObject>
 #include <QTimer>
 
+#include <cstddef>
+
 #include <Inventor/SbVec3f.h>
+
+#include "scenegraph/camera_setup.h"
 
 class SoCamera;
 class SoCoordinate3;
 class SoLineSet;
+class SoNode;
 class SoQtExaminerViewer;
 class SoSeparator;
 class SoSwitch;
@@ -23,16 +28,21 @@ class WellNavigator : public QObject {
     Q_OBJECT
 
 public:
-    // Adds its nodes (the marker, the inside-the-hole look) under `viewRoot`.
+    // Adds its nodes (the marker, the inside-the-hole look) under `viewRoot`; frames
+    // `sceneRoot` (the wells, under `viewRoot`) on View all and the view presets.
     WellNavigator(DeskModel& model, SoQtExaminerViewer& viewer, SoSeparator* viewRoot,
-                  QObject* parent = nullptr);
+                  SoNode* sceneRoot, QObject* parent = nullptr);
     ~WellNavigator() override;
     WellNavigator(const WellNavigator&) = delete;
     WellNavigator& operator=(const WellNavigator&) = delete;
 
-    // The next change of the current depth came from the 3D view itself (a pick): the
-    // marker moves, the camera stays where the user put it.
-    void holdCameraOnce() { m_holdCamera = true; }
+    // A section picked in the 3D view becomes current: the marker moves, the camera stays
+    // where the user put it.
+    void showPicked(int well, std::size_t row, double azimuth_deg);
+    // The whole scene in view, with room for the labels at its ends.
+    void viewAll();
+    // The whole scene from a preset direction.
+    void viewFrom(scenegraph::ViewDirection direction);
     // Looks at the current depth: from inside the hole down it, or from outside, from the
     // side the camera looks from now, close enough to see the section.
     void follow();
@@ -65,12 +75,13 @@ private:
     DeskModel& m_model;
     SoQtExaminerViewer& m_viewer;
     SoSeparator* m_viewRoot = nullptr;
+    SoNode* m_sceneRoot = nullptr;
     SoSwitch* m_insideLook = nullptr;  // BASE_COLOR light model and fog, on inside the hole
     SoSeparator* m_marker = nullptr;
     SoCoordinate3* m_markerPoints = nullptr;
     SoLineSet* m_markerLine = nullptr;
     bool m_inside = false;
-    bool m_holdCamera = false;
+    bool m_picking = false;  // within showPicked: the camera stays
     QTimer m_flight;
     double m_speed_m_s = 5.0;
     static constexpr int kFlightTick_ms = 40;

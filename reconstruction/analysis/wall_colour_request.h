@@ -47,6 +47,14 @@ std::shared_ptr<const WallColouring> makeWallColouring(const WellGeometry& geome
                                                        const SectionValues* values = nullptr,
                                                        const AnalysisOptions& analysis = {});
 
+// The wall colourings `request` asks for, one per well, sharing one colour range so a colour
+// means the same value in each (the union of their own ranges, when it comes from the
+// data). Throws std::invalid_argument as makeWallColouring does. `values`: each well's
+// sectionValues where known (null or missing: computed when the quantity needs them).
+std::vector<std::shared_ptr<const WallColouring>> wallColourings(
+    const std::vector<std::shared_ptr<const WellGeometry>>& wells, const ColourRequest& request,
+    const std::vector<const SectionValues*>& values = {});
+
 // The report's classes, from the Okabe-Ito palette (told apart with any colour vision).
 std::uint32_t classColour(BoreholeClass c);
 

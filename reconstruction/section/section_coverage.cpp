@@ -40,4 +40,14 @@ std::string describeNoDataInterval(const NoDataInterval& interval) {
     return buf;
 }
 
+std::size_t countMeasuredSections(const io::SectionTable& rows, double minValidArmFraction,
+                                  double minRadius_mm, double maxRadius_mm) {
+    const int arms = rows.armCount;
+    const int needed = minValidArms(arms, minValidArmFraction);
+    std::size_t measured = 0;
+    for (std::size_t i = 0; i < rows.rowCount(); ++i)
+        measured += countValidArms(rows.radii(i), arms, minRadius_mm, maxRadius_mm) >= needed;
+    return measured;
+}
+
 }  // namespace caliper3d::reconstruction

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include "io/section_table.h"
+
 namespace caliper3d::reconstruction {
 
 // A section needs at least this fraction of its arms valid to have a shape;
@@ -19,6 +21,12 @@ int minValidArms(int armCount, double fraction);
 
 // Arms of one section whose reading lies in (minRadius_mm, maxRadius_mm].
 int countValidArms(const double* radii_mm, int armCount, double minRadius_mm, double maxRadius_mm);
+
+// The sections of `rows` that have a shape (at least minValidArms(rows.armCount, fraction)
+// arms read in (minRadius_mm, maxRadius_mm]): what every verb draws and analyses, and what
+// `caliper3d info` counts as measured.
+std::size_t countMeasuredSections(const io::SectionTable& rows, double minValidArmFraction,
+                                  double minRadius_mm, double maxRadius_mm);
 
 // A run of consecutive sections without data, rows [firstRow, lastRow].
 struct NoDataInterval {

@@ -1,4 +1,4 @@
-#include "app/main_window.h"
+#include "app/desktop/main_window.h"
 
 #include <cstdlib>
 #include <fstream>
@@ -12,7 +12,8 @@
 
 #include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
 
-#include "app/gui_session.h"
+#include "app/desktop/gui_session.h"
+#include "app/desktop/well_session.h"
 #include "io/column_text_writer.h"
 #include "reconstruction/synthetic/synthetic_well.h"
 #include "scenegraph/label_style.h"
@@ -38,9 +39,10 @@ protected:
     // Waits for `signal` on the event loop, at most `ms` milliseconds.
     template <typename Signal>
     static bool waitFor(app::MainWindow& window, Signal signal, int ms) {
+        app::WellSession& session = window.session();
         QEventLoop loop;
         bool fired = false;
-        QObject::connect(&window, signal, &loop, [&] {
+        QObject::connect(&session, signal, &loop, [&] {
             fired = true;
             loop.quit();
         });
@@ -64,9 +66,9 @@ TEST_F(MainWindowTest, OpensTheExampleAndRendersTheWell) {
     window.show();
     app::LoadOptions options;
     options.read.bitSize_mm = 215.9;
-    window.openWell(QString::fromStdString(log.string()), options);
-    ASSERT_TRUE(waitFor(window, &app::MainWindow::wellLoaded, 60000)) << "the well did not load";
-    EXPECT_FALSE(window.loading());
+    window.session().openWell(QString::fromStdString(log.string()), options);
+    ASSERT_TRUE(waitFor(window, &app::WellSession::wellLoaded, 60000)) << "the well did not load";
+    EXPECT_FALSE(window.session().loading());
 
     auto* gl = qobject_cast<QGLWidget*>(window.viewer()->getGLWidget());
     ASSERT_NE(gl, nullptr);
@@ -108,8 +110,8 @@ TEST_F(MainWindowTest, ShowsDepthLabelsTheWellsNameAndTheNorthArrow) {
     window.show();
     app::LoadOptions options;
     options.radialExaggeration = 10.0;
-    window.openWell(QString::fromStdString(log.string()), options);
-    ASSERT_TRUE(waitFor(window, &app::MainWindow::allWellsLoaded, 60000))
+    window.session().openWell(QString::fromStdString(log.string()), options);
+    ASSERT_TRUE(waitFor(window, &app::WellSession::allWellsLoaded, 60000))
         << "the well did not load";
     auto* gl = qobject_cast<QGLWidget*>(window.viewer()->getGLWidget());
     ASSERT_NE(gl, nullptr);
@@ -129,9 +131,10 @@ TEST_F(MainWindowTest, BadFileReportsFailureWithFileAndLine) {
     { std::ofstream(bad) << "1 2 3 4 5 6 7 8 9 10\n2 2 3\n3 2 3 4 5 6 7 8 9 10\n"; }
     app::MainWindow window;
     QString message;
-    QObject::connect(&window, &app::MainWindow::wellFailed, [&](const QString& m) { message = m; });
-    window.openWell(QString::fromStdString(bad.string()), app::LoadOptions{});
-    ASSERT_TRUE(waitFor(window, &app::MainWindow::wellFailed, 30000));
+    QObject::connect(&window.session(), &app::WellSession::wellFailed,
+                     [&](const QString&, const QString& m) { message = m; });
+    window.session().openWell(QString::fromStdString(bad.string()), app::LoadOptions{});
+    ASSERT_TRUE(waitFor(window, &app::WellSession::wellFailed, 30000));
     EXPECT_TRUE(message.contains(QString::fromStdString(bad.string() + ":2")))
         << message.toStdString();
 }
@@ -146,13 +149,13 @@ TEST_F(MainWindowTest, ShowsSeveralWellsAtOnce) {
         reconstruction::makeSyntheticWell(reconstruction::syntheticProfile("example", 30.0, 0.1)));
     app::MainWindow window;
     int loaded = 0;
-    QObject::connect(&window, &app::MainWindow::wellLoaded, [&](int) { ++loaded; });
-    window.openWell(QString::fromStdString(a.string()), app::LoadOptions{});
-    window.addWell(QString::fromStdString(b.string()), app::LoadOptions{});
-    ASSERT_TRUE(waitFor(window, &app::MainWindow::allWellsLoaded, 60000));
+    QObject::connect(&window.session(), &app::WellSession::wellLoaded, [&](int) { ++loaded; });
+    window.session().openWell(QString::fromStdString(a.string()), app::LoadOptions{});
+    window.session().addWell(QString::fromStdString(b.string()), app::LoadOptions{});
+    ASSERT_TRUE(waitFor(window, &app::WellSession::allWellsLoaded, 60000));
     EXPECT_EQ(loaded, 2);
-    EXPECT_EQ(window.wellCount(), 2u);
-    EXPECT_FALSE(window.loading());
+    EXPECT_EQ(window.session().wellCount(), 2u);
+    EXPECT_FALSE(window.session().loading());
 }
 
 TEST_F(MainWindowTest, ReaderWarningsOfALoadedWellAreCountedAndListed) {
@@ -169,12 +172,12 @@ TEST_F(MainWindowTest, ReaderWarningsOfALoadedWellAreCountedAndListed) {
     // A truncated last row: the reader skips it with a warning on its line.
     { std::ofstream(log, std::ios::app) << "20.5 1.0 2.0\n"; }
     app::MainWindow window;
-    window.openWell(QString::fromStdString(log.string()), app::LoadOptions{});
-    ASSERT_TRUE(waitFor(window, &app::MainWindow::wellLoaded, 60000)) << "the well did not load";
-    EXPECT_EQ(window.warningCount(), 1u) << window.warningsText().toStdString();
-    EXPECT_TRUE(window.warningsText().contains(
+    window.session().openWell(QString::fromStdString(log.string()), app::LoadOptions{});
+    ASSERT_TRUE(waitFor(window, &app::WellSession::wellLoaded, 60000)) << "the well did not load";
+    EXPECT_EQ(window.session().warningCount(), 1u) << window.session().warningsText().toStdString();
+    EXPECT_TRUE(window.session().warningsText().contains(
         QString::fromStdString(log.string() + ":" + std::to_string(lines + 1) + ": warning: ")))
-        << window.warningsText().toStdString();
+        << window.session().warningsText().toStdString();
     EXPECT_TRUE(window.statusText().endsWith(", 1 warning")) << window.statusText().toStdString();
 }
 
@@ -188,23 +191,23 @@ TEST_F(MainWindowTest, RecolouringAndReExaggeratingReuseTheWellInMemory) {
     window.show();
     app::LoadOptions options;
     options.read.bitSize_mm = 215.9;
-    window.openWell(QString::fromStdString(log.string()), options);
-    ASSERT_TRUE(waitFor(window, &app::MainWindow::allWellsLoaded, 60000)) << "no load";
-    const auto loaded = window.geometry(0);
+    window.session().openWell(QString::fromStdString(log.string()), options);
+    ASSERT_TRUE(waitFor(window, &app::WellSession::allWellsLoaded, 60000)) << "no load";
+    const auto loaded = window.session().geometry(0);
     ASSERT_NE(loaded, nullptr);
-    ASSERT_NE(window.legend(), nullptr);
-    EXPECT_EQ(window.legend()->title, "radius - bit radius");
+    ASSERT_NE(window.session().legend(), nullptr);
+    EXPECT_EQ(window.session().legend()->title, "radius - bit radius");
 
     reconstruction::ColourRequest byClass;
     byClass.quantity = "class";
-    ASSERT_TRUE(window.restyle(20.0, byClass)) << window.statusText().toStdString();
-    const auto styled = window.geometry(0);
+    ASSERT_TRUE(window.session().restyle(20.0, byClass)) << window.statusText().toStdString();
+    const auto styled = window.session().geometry(0);
     ASSERT_NE(styled, loaded);
     EXPECT_EQ(&styled->table(), &loaded->table());  // not read again
     EXPECT_EQ(&styled->path(), &loaded->path());    // not placed again
     EXPECT_EQ(styled->options().radialExaggeration, 20.0);
-    ASSERT_NE(window.legend(), nullptr);
-    EXPECT_EQ(window.legend()->title, "class");
+    ASSERT_NE(window.session().legend(), nullptr);
+    EXPECT_EQ(window.session().legend()->title, "class");
     EXPECT_NE(window.statusText().indexOf("nothing read again"), -1)
         << window.statusText().toStdString();
     // The washout's sections now draw in the washout's colour.
@@ -214,7 +217,7 @@ TEST_F(MainWindowTest, RecolouringAndReExaggeratingReuseTheWellInMemory) {
 
     reconstruction::ColourRequest bogus;
     bogus.quantity = "porosity";
-    EXPECT_FALSE(window.restyle(1.0, bogus));
+    EXPECT_FALSE(window.session().restyle(1.0, bogus));
     EXPECT_NE(window.statusText().indexOf("cannot colour by 'porosity'"), -1);
-    EXPECT_EQ(window.geometry(0), styled);  // left as it was
+    EXPECT_EQ(window.session().geometry(0), styled);  // left as it was
 }

@@ -5,12 +5,14 @@
 #include <gtest/gtest.h>
 #include <QImage>
 
-#include "app/png_output.h"
 #include "reconstruction/synthetic/synthetic_well.h"
 #include "reconstruction/well_geometry.h"
+#include "scenegraph/camera_setup.h"
 #include "scenegraph/label_style.h"
 #include "scenegraph/main_thread.h"
 #include "scenegraph/node_ref.h"
+#include "scenegraph/offscreen_renderer.h"
+#include "scenegraph/picture/png_file.h"
 #include "scenegraph/render_stats.h"
 #include "scenegraph/view_overlay.h"
 #include "scenegraph/well_annotations.h"
@@ -18,6 +20,19 @@
 #include "test_support.h"
 
 using namespace caliper3d;
+
+namespace {
+// `scene` framed whole from `view`, drawn offscreen and written to a PNG at `path`.
+scenegraph::RenderedImage renderToPng(SoNode* scene, const std::string& path, int width, int height,
+                                      scenegraph::ViewDirection view) {
+    auto root = scenegraph::makeRef(scenegraph::makeRenderRoot(scene, view, width, height));
+    scenegraph::OffscreenRenderer renderer;
+    scenegraph::RenderedImage image =
+        renderer.render(root.get(), width, height, scenegraph::kBackgroundColour);
+    scenegraph::writePng(image, path);
+    return image;
+}
+}  // namespace
 
 TEST(OffscreenRenderTest, WellRendersToAPngWithoutAWindow) {
     scenegraph::initCoin();
@@ -30,8 +45,7 @@ TEST(OffscreenRenderTest, WellRendersToAPngWithoutAWindow) {
     const auto path = test::scratch("offscreen.png");
     scenegraph::RenderedImage image;
     try {
-        image = app::renderToPng(scene.root(), path.string(), 320, 240,
-                                 scenegraph::ViewDirection::East);
+        image = renderToPng(scene.root(), path.string(), 320, 240, scenegraph::ViewDirection::East);
     } catch (const std::runtime_error& e) {
         FAIL() << e.what();
     }

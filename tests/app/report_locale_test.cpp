@@ -12,7 +12,7 @@
 #include <QApplication>
 #include <QCoreApplication>
 
-#include "app/gui_session.h"
+#include "app/desktop/gui_session.h"
 #include "reconstruction/analysis/report_writer.h"
 #include "reconstruction/synthetic/synthetic_well.h"
 

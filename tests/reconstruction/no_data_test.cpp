@@ -61,6 +61,20 @@ TEST(NoDataTest, ValidArmsNeededFollowTheFractionWithAtLeastTwo) {
     EXPECT_EQ(minValidArms(6, 3.0), 6);
 }
 
+TEST(NoDataTest, MeasuredSectionsCountedFromTheTableAgreeWithTheGeometry) {
+    const SectionTable table = gappedWell();
+    const WellGeometry g(std::make_shared<const SectionTable>(table), GeometryOptions{});
+    std::size_t measured = 0;
+    for (std::size_t i = 0; i < g.table().rowCount(); ++i) measured += g.measured(i);
+    ASSERT_LT(measured, table.rowCount());  // the gaps hold sections without data
+    const GeometryOptions options;
+    EXPECT_EQ(countMeasuredSections(table, options.minValidArmFraction, options.minArmRadius_mm,
+                                    options.maxArmRadius_mm),
+              measured);
+    // A tool reach below every reading leaves nothing measured.
+    EXPECT_EQ(countMeasuredSections(table, 0.5, 0.0, 1.0), 0u);
+}
+
 TEST(NoDataTest, SectionsWithTooFewValidArmsAreNotMeasuredAndOneOrTwoMissingAre) {
     const WellGeometry g(std::make_shared<const SectionTable>(gappedWell()), GeometryOptions{});
     for (std::size_t i = 0; i < g.table().rowCount(); ++i)

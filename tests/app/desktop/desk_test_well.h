@@ -12,7 +12,7 @@
 #include <QWidget>
 
 #include "app/desktop/desk_model.h"
-#include "app/gui_session.h"
+#include "app/desktop/gui_session.h"
 #include "desktop_test_support.h"
 #include "reconstruction/synthetic/synthetic_well.h"
 

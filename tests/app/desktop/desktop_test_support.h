@@ -13,7 +13,7 @@
 #include <QTimer>
 #include <QWidget>
 
-#include "app/gui_session.h"
+#include "app/desktop/gui_session.h"
 #include "io/column_text_writer.h"
 #include "reconstruction/synthetic/synthetic_well.h"
 #include "test_support.h"

@@ -1,6 +1,8 @@
 // The window as a whole: picking, the camera following the current depth, zones, cancelling
 // a load, the error dialog and the docks it holds.
-#include "app/main_window.h"
+#include "app/desktop/main_window.h"
+
+#include "app/desktop/well_session.h"
 
 #include <cmath>
 #include <cstdio>
@@ -48,11 +50,11 @@ protected:
         window.show();
         app::LoadOptions options;
         options.read.bitSize_mm = 215.9;
-        window.openWell(QString::fromStdString(log.string()), options);
+        window.session().openWell(QString::fromStdString(log.string()), options);
         ASSERT_TRUE(test::waitUntil(
             [&] {
                 return window.model().wellCount() == 1 && window.model().well(0).analysis &&
-                       !window.loading();
+                       !window.session().loading();
             },
             120000))
             << "the well did not load and analyse";
@@ -166,29 +168,30 @@ TEST_F(DesktopWindowTest, CancelsAFourKilometreLoadWithinATenthOfASecond) {
     app::MainWindow window;
     window.resize(1280, 960);
     window.show();
-    window.openWell(QString::fromStdString(log.string()), app::LoadOptions{});
+    window.session().openWell(QString::fromStdString(log.string()), app::LoadOptions{});
     // While the log is being read: the bar shows the fraction read.
     ASSERT_TRUE(test::waitUntil([&] { return window.loadProgress()->value() > 0; }, 20000))
-        << "progress " << window.loadProgress()->value() << ", loading " << window.loading();
+        << "progress " << window.loadProgress()->value() << ", loading "
+        << window.session().loading();
     EXPECT_TRUE(window.loadProgress()->isVisible());
-    EXPECT_TRUE(window.loading());
+    EXPECT_TRUE(window.session().loading());
     const int progress = window.loadProgress()->value();
     EXPECT_LT(progress, window.loadProgress()->maximum());
     QElapsedTimer clock;
     clock.start();
-    window.cancelLoading();
+    window.session().cancelLoading();
     const qint64 took = clock.elapsed();
     EXPECT_LT(took, 100) << "cancelling took " << took << " ms";
     RecordProperty("cancel_ms", static_cast<int>(took));
     std::printf("cancelled the 4 km load at %.0f %% of its bar in %lld ms\n",
                 100.0 * progress / window.loadProgress()->maximum(), static_cast<long long>(took));
-    EXPECT_FALSE(window.loading());
-    EXPECT_EQ(window.wellCount(), 0u);
+    EXPECT_FALSE(window.session().loading());
+    EXPECT_EQ(window.session().wellCount(), 0u);
     EXPECT_EQ(window.model().wellCount(), 0);
     EXPECT_FALSE(window.loadProgress()->isVisible());
     EXPECT_TRUE(window.statusText().contains("cancelled")) << window.statusText().toStdString();
     // Its worker stops at the end of the block it was reading, off the window's thread.
-    EXPECT_TRUE(test::waitUntil([&] { return window.retiredLoadsRunning() == 0; }, 5000));
+    EXPECT_TRUE(test::waitUntil([&] { return window.session().retiredLoadsRunning() == 0; }, 5000));
 }
 
 TEST_F(DesktopWindowTest, ABadFileOpensAnErrorDialogNamingTheFileAndLine) {
@@ -196,7 +199,7 @@ TEST_F(DesktopWindowTest, ABadFileOpensAnErrorDialogNamingTheFileAndLine) {
     { std::ofstream(bad) << "1 2 3 4 5 6 7 8 9 10\n2 2 3\n3 2 3 4 5 6 7 8 9 10\n"; }
     app::MainWindow window;
     window.show();
-    window.openWell(QString::fromStdString(bad.string()), app::LoadOptions{});
+    window.session().openWell(QString::fromStdString(bad.string()), app::LoadOptions{});
     QMessageBox* dialog = nullptr;
     ASSERT_TRUE(test::waitUntil(
         [&] {

@@ -1,4 +1,4 @@
-#include "app/gui_session.h"
+#include "app/desktop/gui_session.h"
 
 #include <cstdio>
 #include <cstdlib>

@@ -1,4 +1,4 @@
-#include "app/well_viewer.h"
+#include "app/desktop/well_viewer.h"
 
 #include <cstdlib>
 

@@ -1,0 +1,50 @@
+#include "app/desktop/load_progress_bar.h"
+
+#include <QHBoxLayout>
+#include <QProgressBar>
+#include <QToolButton>
+
+#include "app/desktop/well_session.h"
+
+namespace caliper3d::app {
+
+LoadProgressBar::LoadProgressBar(WellSession& session, QWidget* parent)
+    : QWidget(parent), m_session(session) {
+    auto* layout = new QHBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    m_bar = new QProgressBar(this);
+    m_bar->setRange(0, kSteps);
+    m_bar->setMaximumWidth(260);
+    m_bar->setTextVisible(true);
+    m_cancel = new QToolButton(this);
+    m_cancel->setText("Cancel");
+    m_cancel->setToolTip("Stop loading (Esc); the wells not loaded yet are removed");
+    m_cancel->setShortcut(QKeySequence(Qt::Key_Escape));
+    layout->addWidget(m_bar);
+    layout->addWidget(m_cancel);
+    connect(m_cancel, &QToolButton::clicked, &m_session, &WellSession::cancelLoading);
+    m_timer.setInterval(kInterval_ms);
+    connect(&m_timer, &QTimer::timeout, this, &LoadProgressBar::refresh);
+    connect(&m_session, &WellSession::loadStarted, this, [this] {
+        m_timer.start();
+        refresh();
+    });
+    connect(&m_session, &WellSession::loadCancelled, this, &LoadProgressBar::refresh);
+    connect(&m_session, &WellSession::allWellsLoaded, this, &LoadProgressBar::refresh);
+    m_bar->hide();
+    m_cancel->hide();
+}
+
+void LoadProgressBar::refresh() {
+    const LoadProgress progress = m_session.progress();
+    m_bar->setVisible(progress.busy);
+    m_cancel->setVisible(progress.busy);
+    if (!progress.busy) {
+        m_timer.stop();
+        return;
+    }
+    m_bar->setValue(static_cast<int>(kSteps * progress.fraction));
+    m_bar->setFormat(progress.text + " %p%");
+}
+
+}  // namespace caliper3d::app

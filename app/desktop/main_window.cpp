@@ -1,0 +1,209 @@
+#include "app/desktop/main_window.h"
+
+#include <QFileInfo>
+#include <QGuiApplication>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QScreen>
+#include <QStatusBar>
+
+#include <Inventor/SoSceneManager.h>
+#include <Inventor/nodes/SoPerspectiveCamera.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+#include "app/desktop/breakouts_dock.h"
+#include "app/desktop/desk_model.h"
+#include "app/desktop/file_menu.h"
+#include "app/desktop/load_progress_bar.h"
+#include "app/desktop/log_track_dock.h"
+#include "app/desktop/section_inspector_dock.h"
+#include "app/desktop/style_bar.h"
+#include "app/desktop/unrolled_image_dock.h"
+#include "app/desktop/view_menu.h"
+#include "app/desktop/warnings_dock.h"
+#include "app/desktop/well_navigator.h"
+#include "app/desktop/well_session.h"
+#include "app/desktop/well_viewer.h"
+#include "app/desktop/wells_dock.h"
+#include "scenegraph/camera_setup.h"
+#include "scenegraph/segment_node_builder.h"
+#include "scenegraph/view_overlay.h"
+
+namespace caliper3d::app {
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
+    setWindowTitle("caliper3d");
+    resize(defaultSize());
+    m_model = new DeskModel(this);
+    auto* centre = new QWidget(this);
+    centre->setMinimumSize(kMinimumViewSize);  // the docks give way before the 3D view does
+    setCentralWidget(centre);
+    m_viewer = new WellViewer(centre);
+    m_viewer->setBackgroundColor(SbColor(scenegraph::kBackgroundColour));
+    m_viewer->setTransparencyType(SoGLRenderAction::SORTED_OBJECT_BLEND);
+    // Full detail near the camera, built on a worker as the camera moves.
+    m_session = new WellSession(
+        *m_model,
+        [this]() -> std::optional<scenegraph::DetailView> {
+            auto* camera = dynamic_cast<SoPerspectiveCamera*>(m_viewer->getCamera());
+            if (!camera) return std::nullopt;
+            const SbVec3f eye = camera->position.getValue();
+            scenegraph::DetailView view;
+            view.eye = glm::vec3(eye[0], eye[1], eye[2]);
+            view.lod =
+                scenegraph::lodViewFor(m_viewer->getViewportRegion().getViewportSizePixels()[1],
+                                       camera->heightAngle.getValue());
+            return view;
+        },
+        this);
+    m_overlay = std::make_unique<scenegraph::ViewOverlay>();
+    m_viewRoot = new SoSeparator;
+    m_viewRoot->ref();
+    m_viewRoot->addChild(m_session->sceneRoot());
+    m_viewRoot->addChild(m_overlay->root());
+    m_viewer->setSceneGraph(m_viewRoot);
+    m_navigator = new WellNavigator(*m_model, *m_viewer, m_viewRoot, m_session->sceneRoot(), this);
+    m_viewer->onClick([this](const SbVec2s& pixel) { pickAt(pixel); });
+
+    m_files = new FileMenu(*this, *m_session, *m_viewer, menuBar()->addMenu("&File"));
+    addToolBar(new StyleBar(*m_session, this));
+    m_views = new ViewMenu(*this, *m_session, *m_navigator);
+    buildStatusBar();
+    buildDocks();
+    m_files->restoreLayout();  // after the docks: they are found by their objectName
+
+    connect(m_session, &WellSession::status, m_status, &QLabel::setText);
+    connect(m_views, &ViewMenu::status, m_status, &QLabel::setText);
+    connect(m_views, &ViewMenu::warningsWanted, this, &MainWindow::showWarnings);
+    connect(m_session, &WellSession::warningsChanged, this, &MainWindow::updateWarningsButton);
+    connect(m_session, &WellSession::wellFailed, this, &MainWindow::showLoadError);
+    connect(m_session, &WellSession::lookChanged, this, &MainWindow::updateLook);
+    connect(m_model, &DeskModel::wellsChanged, this, &MainWindow::updateTitle);
+    // The first segments of a load, then the whole scene once everything is in.
+    connect(m_session, &WellSession::firstSegmentsShown, m_navigator, &WellNavigator::viewAll);
+    connect(m_session, &WellSession::allWellsLoaded, m_navigator, &WellNavigator::viewAll);
+}
+
+MainWindow::~MainWindow() {
+    // The workers stop, then the nodes go, before the viewer does.
+    delete m_navigator;
+    delete m_session;
+    m_viewer->setSceneGraph(nullptr);
+    m_viewRoot->unref();
+    delete m_viewer;
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    m_files->saveLayout();
+    QMainWindow::closeEvent(event);
+}
+
+QSize MainWindow::defaultSize() {
+    // Room for the 3D view and the docks around it, within the screen (a saved layout
+    // replaces it: FileMenu::restoreLayout).
+    const QScreen* screen = QGuiApplication::primaryScreen();
+    const QSize available = screen ? screen->availableGeometry().size() : QSize(1600, 1000);
+    return QSize(std::min(1600, available.width() * 9 / 10),
+                 std::min(1000, available.height() * 9 / 10));
+}
+
+SoQtExaminerViewer* MainWindow::viewer() const {
+    return m_viewer;
+}
+
+QProgressBar* MainWindow::loadProgress() const {
+    return m_progress->bar();
+}
+
+QString MainWindow::statusText() const {
+    return m_status->text();
+}
+
+void MainWindow::buildStatusBar() {
+    m_status = new QLabel("No well loaded", this);
+    statusBar()->addWidget(m_status, 1);
+    m_warningsButton = new QPushButton(this);
+    m_warningsButton->setFlat(true);
+    m_warningsButton->setToolTip("Show the warnings met while loading the wells");
+    m_warningsButton->hide();
+    connect(m_warningsButton, &QPushButton::clicked, this, &MainWindow::showWarnings);
+    statusBar()->addPermanentWidget(m_warningsButton);
+    m_progress = new LoadProgressBar(*m_session, this);
+    statusBar()->addPermanentWidget(m_progress);
+}
+
+void MainWindow::buildDocks() {
+    // The docks are views of m_model; each is a class of its own (app/desktop). Left, side
+    // by side as on a log print: the log track and the unrolled image, both with depth down;
+    // right: the section above the breakouts, with the wells and the warnings in tabs beside
+    // the breakouts (the 3D view keeps the window's whole height).
+    auto* logTrack = new LogTrackDock(*m_model, this);
+    addDockWidget(Qt::LeftDockWidgetArea, logTrack);
+    auto* unrolled = new UnrolledImageDock(m_model, this);
+    splitDockWidget(logTrack, unrolled, Qt::Horizontal);
+    auto* inspector = new SectionInspectorDock(m_model, this);
+    addDockWidget(Qt::RightDockWidgetArea, inspector);
+    auto* breakouts = new BreakoutsDock(*m_model, this);
+    addDockWidget(Qt::RightDockWidgetArea, breakouts);
+    auto* wells = new WellsDock(*m_model, this);
+    tabifyDockWidget(breakouts, wells);
+    connect(wells, &WellsDock::visibilityToggled, m_session, &WellSession::setWellVisible);
+    connect(wells, &WellsDock::colourChosen, this, [this](int well, const QString& quantity) {
+        reconstruction::ColourRequest colour;
+        colour.quantity = quantity.toStdString();
+        m_session->restyleWell(well, colour);
+    });
+    m_warningsDock = new WarningsDock(*m_model, this);
+    tabifyDockWidget(wells, m_warningsDock);
+    breakouts->raise();
+    for (QDockWidget* dock : std::initializer_list<QDockWidget*>{
+             wells, logTrack, inspector, breakouts, unrolled, m_warningsDock})
+        m_views->docksMenu()->addAction(dock->toggleViewAction());
+}
+
+bool MainWindow::pickAt(const SbVec2s& pixel) {
+    const std::optional<WellPick> pick = m_session->pick(
+        m_viewer->getSceneManager()->getSceneGraph(), m_viewer->getViewportRegion(), pixel);
+    if (!pick) return false;
+    m_navigator->showPicked(pick->well, pick->row, pick->azimuth_deg);
+    m_status->setText(pick->text);
+    return true;
+}
+
+void MainWindow::showLoadError(const QString& name, const QString& message) {
+    auto* box = new QMessageBox(QMessageBox::Critical, "Could not load " + name, message,
+                                QMessageBox::Ok, this);
+    box->setObjectName("loadError");
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();  // not modal to the loads still under way
+}
+
+void MainWindow::updateWarningsButton() {
+    const std::size_t count = m_session->warningCount();
+    m_warningsButton->setText(QString("%1 warning%2").arg(count).arg(count == 1 ? "" : "s"));
+    m_warningsButton->setVisible(count > 0);
+}
+
+void MainWindow::showWarnings() {
+    m_warningsDock->show();
+    m_warningsDock->raise();
+}
+
+void MainWindow::updateTitle() {
+    const int count = m_model->wellCount();
+    if (count == 1)
+        setWindowTitle("caliper3d - " + QFileInfo(m_model->well(0).path).fileName());
+    else if (count > 1)
+        setWindowTitle(QString("caliper3d - %1 wells").arg(count));
+}
+
+// The caption says the radial exaggeration the wells are drawn with; the legend what the
+// wall's colours mean.
+void MainWindow::updateLook() {
+    m_overlay->setCaption({scenegraph::exaggerationCaption(m_session->look().radialExaggeration)});
+    m_viewer->setLegend(m_session->legend());
+}
+
+}  // namespace caliper3d::app

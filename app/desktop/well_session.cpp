@@ -1,0 +1,452 @@
+#include "app/desktop/well_session.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QFileInfo>
+
+#include <Inventor/nodes/SoSeparator.h>
+
+#include "app/desktop/analysis_job.h"
+#include "app/desktop/desk_model.h"
+#include "app/desktop/retired_loads.h"
+#include "io/warnings_text.h"
+#include "reconstruction/analysis/wall_colour_request.h"
+#include "reconstruction/load/well_load_pipeline.h"
+#include "scenegraph/section_pick.h"
+#include "scenegraph/segment_feeder.h"
+#include "scenegraph/well_scene.h"
+#include "scenegraph/well_view.h"
+
+namespace caliper3d::app {
+
+namespace {
+
+constexpr double kReadShare = 0.7;  // of a well's progress: reading the log
+
+QString fileName(const std::string& path) {
+    return QFileInfo(QString::fromStdString(path)).fileName();
+}
+
+}  // namespace
+
+// One well being shown: what runs for it and its nodes; its data is in the model. Members
+// are destroyed analysis first, then the feeder, the worker, and last the nodes.
+struct WellSession::Well {
+    int id = -1;
+    QString name;  // the file's name, for messages
+    std::unique_ptr<scenegraph::WellView> view;
+    std::unique_ptr<reconstruction::WellLoadPipeline> pipeline;
+    std::unique_ptr<scenegraph::SegmentFeeder> feeder;
+    std::unique_ptr<AnalysisJob> analysisJob;  // after the load, until the analysis is in
+    // The report's section values, computed the first time a colouring needs them.
+    std::shared_ptr<const reconstruction::SectionValues> values;
+    bool done = false;
+};
+
+WellSession::WellSession(DeskModel& model, scenegraph::DetailLoader::CameraProbe probe,
+                         QObject* parent)
+    : QObject(parent),
+      m_model(model),
+      m_retired(std::make_unique<RetiredLoads>()),
+      m_sceneRoot(scenegraph::makeRef(new SoSeparator)),
+      m_detail(std::make_unique<scenegraph::DetailLoader>(std::move(probe))) {}
+
+WellSession::~WellSession() {
+    // Stop the workers before the nodes go.
+    m_detail.reset();
+    m_wells.clear();
+}
+
+WellSession::Well* WellSession::find(int id) const {
+    for (const auto& well : m_wells)
+        if (well->id == id) return well.get();
+    return nullptr;
+}
+
+int WellSession::modelIndex(const Well& well) const {
+    return m_model.indexOf(well.id);
+}
+
+template <typename Edit>
+void WellSession::edit(const Well& well, Edit change) {
+    const int index = modelIndex(well);
+    if (index < 0) return;
+    DeskWell record = m_model.well(index);
+    change(record);
+    m_model.updateWell(index, std::move(record));
+}
+
+int WellSession::openWell(const QString& path, const LoadOptions& options) {
+    return openWell(WellSource{path.toStdString(), {}, {}}, options);
+}
+
+int WellSession::openWell(const WellSource& source, const LoadOptions& options) {
+    m_detail->removeAll();
+    m_wells.clear();
+    m_model.clearWells();
+    emit warningsChanged();
+    m_framed = false;
+    m_origin = reconstruction::sceneOrigin({source});
+    return addWell(source, options);
+}
+
+int WellSession::addWell(const QString& path, const LoadOptions& options) {
+    return addWell(WellSource{path.toStdString(), {}, {}}, options);
+}
+
+int WellSession::addWell(const WellSource& source, const LoadOptions& options) {
+    auto owned = std::make_unique<Well>();
+    Well& w = *owned;
+    w.id = m_nextId++;
+    w.name = fileName(source.path);
+    w.view = std::make_unique<scenegraph::WellView>(m_sceneRoot.get());
+    m_wells.push_back(std::move(owned));
+    m_look = options;
+
+    DeskWell record;
+    record.id = w.id;
+    record.path = QString::fromStdString(source.path);
+    record.name = w.name;
+    record.source = source;
+    record.options = options;
+    m_model.addWell(record);
+    emit lookChanged();
+
+    // Survey, log and geometry are all read on the worker (loadWell).
+    w.pipeline = std::make_unique<reconstruction::WellLoadPipeline>(source, options, m_origin);
+    emit status("Loading " + w.name + "...");
+    scenegraph::SegmentFeeder::Callbacks callbacks;
+    callbacks.geometry = [this, &w](std::shared_ptr<const reconstruction::WellGeometry> g) {
+        w.view->annotate(*g, m_model.well(modelIndex(w)).options.radialExaggeration);
+        m_detail->addWell(w.view->scene(), g);
+        edit(w, [&g](DeskWell& record) {
+            if (!g->table().wellName.empty())
+                record.name = QString::fromStdString(g->table().wellName);
+            record.geometry = g;
+        });
+    };
+    callbacks.warnings = [this, &w](const io::Diagnostics& diagnostics) {
+        edit(w, [&diagnostics](DeskWell& record) { record.diagnostics = diagnostics; });
+        emit warningsChanged();
+    };
+    callbacks.progress = [this, &w](std::size_t attached) {
+        if (!m_framed) {
+            m_framed = true;
+            emit firstSegmentsShown();
+        }
+        emit status(QString("Loading %1: %2 segments").arg(w.name).arg(attached));
+    };
+    callbacks.finished = [this, &w](std::size_t segments) {
+        const DeskWell& record = m_model.well(modelIndex(w));
+        const std::size_t warnings = record.diagnostics.warningCount;
+        emit status(QString("%1: %2 segments, %3 triangles at full detail, radii x%4, %5 warning%6")
+                        .arg(w.name)
+                        .arg(segments)
+                        .arg(w.view->scene().fullDetailTriangles())
+                        .arg(record.options.radialExaggeration)
+                        .arg(warnings)
+                        .arg(warnings == 1 ? "" : "s"));
+        w.done = true;
+        analyse(w);
+        // Signalled from the event loop, not from inside the feeder's tick, so a slot may
+        // open other wells (destroying this feeder) safely.
+        QMetaObject::invokeMethod(
+            this,
+            [this, segments] {
+                emit wellLoaded(static_cast<int>(segments));
+                wellDone();
+            },
+            Qt::QueuedConnection);
+    };
+    callbacks.failed = [this, &w](const std::string& message) {
+        const QString error = QString::fromStdString(message);
+        emit status(w.name + ": failed: " + error);
+        w.done = true;
+        edit(w, [&error](DeskWell& record) { record.error = error; });
+        QMetaObject::invokeMethod(
+            this,
+            [this, name = w.name, error] {
+                emit wellFailed(name, error);
+                wellDone();
+            },
+            Qt::QueuedConnection);
+    };
+    w.feeder = std::make_unique<scenegraph::SegmentFeeder>(*w.pipeline, w.view->scene(), callbacks);
+    w.pipeline->start();
+    emit loadStarted();
+    return w.id;
+}
+
+void WellSession::cancelLoading() {
+    std::size_t stopped = 0;
+    for (auto& well : m_wells)
+        if (!well->done && well->pipeline) {
+            well->pipeline->cancel();
+            ++stopped;
+        }
+    if (stopped == 0) return;
+    m_detail->removeAll();  // it holds the scenes of wells about to go
+    std::vector<std::unique_ptr<Well>> kept;
+    for (auto& well : m_wells) {
+        if (well->done) {
+            kept.push_back(std::move(well));
+            continue;
+        }
+        m_model.removeWell(modelIndex(*well));
+        well->feeder.reset();                          // its sensor, on this thread
+        m_retired->retire(std::move(well->pipeline));  // joined off this thread
+        well.reset();                                  // its nodes leave the scene
+    }
+    m_wells = std::move(kept);
+    for (const auto& well : m_wells) {
+        const auto& g = m_model.well(modelIndex(*well)).geometry;
+        if (g) m_detail->addWell(well->view->scene(), g);
+    }
+    emit warningsChanged();
+    emit status(QString("Loading cancelled: %1 well%2 not loaded")
+                    .arg(stopped)
+                    .arg(stopped == 1 ? "" : "s"));
+    emit loadCancelled();
+}
+
+void WellSession::analyse(Well& well) {
+    const DeskWell& record = m_model.well(modelIndex(well));
+    if (!record.geometry) return;
+    reconstruction::AnalysisOptions options;
+    options.rules.minValidArmFraction = record.options.minValidArmFraction;
+    options.threads = 2;
+    well.analysisJob = std::make_unique<AnalysisJob>(
+        this, record.geometry, options,
+        [this, &well](std::shared_ptr<const reconstruction::WellAnalysis> analysis) {
+            edit(well, [&analysis](DeskWell& r) { r.analysis = std::move(analysis); });
+            emit wellAnalysed(modelIndex(well));
+        });
+}
+
+void WellSession::wellDone() {
+    if (loading()) return;
+    applyStyleAfterLoad();
+    emit allWellsLoaded();
+}
+
+bool WellSession::loading() const {
+    return std::any_of(m_wells.begin(), m_wells.end(), [](const auto& w) { return !w->done; });
+}
+
+LoadProgress WellSession::progress() const {
+    LoadProgress out;
+    double sum = 0.0;
+    int count = 0;
+    for (const auto& well : m_wells) {
+        if (well->done || !well->pipeline) continue;
+        ++count;
+        const auto& g = m_model.well(modelIndex(*well)).geometry;
+        if (!g) {
+            sum += kReadShare * well->pipeline->readFraction();
+            out.text = "Reading " + well->name;
+        } else {
+            const double segments = std::max<double>(1.0, double(g->segmentCount()));
+            sum += kReadShare +
+                   (1.0 - kReadShare) * std::min(1.0, double(well->feeder->attached()) / segments);
+            out.text = "Drawing " + well->name;
+        }
+    }
+    out.busy = count > 0;
+    if (count > 1) out.text = QString("Loading %1 wells").arg(count);
+    if (out.busy) out.fraction = sum / count;
+    return out;
+}
+
+std::size_t WellSession::warningCount() const {
+    std::size_t count = 0;
+    for (int i = 0; i < m_model.wellCount(); ++i) count += m_model.well(i).diagnostics.warningCount;
+    return count;
+}
+
+QString WellSession::warningsText() const {
+    QString text;
+    for (int i = 0; i < m_model.wellCount(); ++i)
+        text += QString::fromStdString(io::formatWarnings(m_model.well(i).diagnostics));
+    return text;
+}
+
+std::vector<WellSource> WellSession::wellSources() const {
+    std::vector<WellSource> out;
+    for (int i = 0; i < m_model.wellCount(); ++i) out.push_back(m_model.well(i).source);
+    return out;
+}
+
+const reconstruction::ColourLegend* WellSession::legend() const {
+    return m_legend ? &*m_legend : nullptr;
+}
+
+std::shared_ptr<const reconstruction::WellGeometry> WellSession::geometry(std::size_t i) const {
+    return i < std::size_t(m_model.wellCount()) ? m_model.well(int(i)).geometry : nullptr;
+}
+
+std::vector<std::string> WellSession::colourQuantities() const {
+    for (int i = 0; i < m_model.wellCount(); ++i)
+        if (m_model.well(i).geometry)
+            return reconstruction::colourQuantities(m_model.well(i).geometry->table());
+    return {"departure", "diameter", "ellipticity", "class", "dls"};
+}
+
+int WellSession::retiredLoadsRunning() const {
+    return m_retired->running();
+}
+
+void WellSession::setWellVisible(int well, bool visible) {
+    if (well < 0 || well >= m_model.wellCount()) return;
+    Well* w = find(m_model.well(well).id);
+    if (!w) return;
+    w->view->setVisible(visible);
+    m_model.setVisible(well, visible);
+}
+
+std::optional<WellPick> WellSession::pick(SoNode* root, const SbViewportRegion& viewport,
+                                          const SbVec2s& pixel) const {
+    std::vector<scenegraph::PickableWell> wells;
+    std::vector<int> index;
+    for (const auto& well : m_wells) {
+        const int i = modelIndex(*well);
+        const DeskWell& record = m_model.well(i);
+        if (record.geometry && record.analysis && well->view->visible()) {
+            wells.push_back({&well->view->scene(), record.geometry.get(), record.analysis.get(),
+                             record.name.toStdString()});
+            index.push_back(i);
+        }
+    }
+    if (wells.empty()) return std::nullopt;
+    const std::optional<scenegraph::SectionPick> hit =
+        scenegraph::pickSection(root, viewport, pixel, wells);
+    if (!hit) return std::nullopt;
+    WellPick out;
+    out.well = index[hit->well];
+    out.row = hit->wall.row;
+    out.azimuth_deg = hit->wall.azimuth_deg;
+    out.text = QString("%1 at %2 m MD: radius %3 mm at azimuth %4")
+                   .arg(QString::fromStdString(hit->wellName))
+                   .arg(hit->section.md_m, 0, 'f', 2)
+                   .arg(hit->wall.radius_mm, 0, 'f', 1)
+                   .arg(hit->wall.azimuth_deg, 0, 'f', 0);
+    return out;
+}
+
+bool WellSession::restyle(double radialExaggeration, const reconstruction::ColourRequest& colour) {
+    if (!restyleWells(radialExaggeration, colour, -1)) return false;
+    m_look.radialExaggeration = radialExaggeration;
+    m_look.colour = colour;
+    emit lookChanged();
+    return true;
+}
+
+bool WellSession::restyleWell(int well, const reconstruction::ColourRequest& colour) {
+    if (well < 0 || well >= m_model.wellCount()) return false;
+    const DeskWell& record = m_model.well(well);
+    return restyleWells(record.options.radialExaggeration, colour, record.id);
+}
+
+bool WellSession::restyleWells(double radialExaggeration,
+                               const reconstruction::ColourRequest& colour, int onlyId) {
+    if (m_wells.empty()) return false;
+    if (loading()) {
+        emit status("Wait for the wells to load before changing how they are drawn");
+        return false;
+    }
+    QElapsedTimer clock;
+    clock.start();
+    static const std::vector<std::string> analysed{"diameter", "ellipticity", "class"};
+    const bool needsValues =
+        std::find(analysed.begin(), analysed.end(), colour.quantity) != analysed.end();
+    const auto chosen = [this, onlyId](const Well& well) {
+        return m_model.well(modelIndex(well)).geometry && (onlyId < 0 || well.id == onlyId);
+    };
+    std::vector<std::shared_ptr<const reconstruction::WellGeometry>> geometries;
+    std::vector<const reconstruction::SectionValues*> values;
+    QApplication::setOverrideCursor(Qt::WaitCursor);
+    for (const auto& well : m_wells) {
+        if (!chosen(*well)) continue;
+        const DeskWell& record = m_model.well(modelIndex(*well));
+        if (needsValues && !well->values)
+            well->values = std::make_shared<const reconstruction::SectionValues>(
+                record.analysis ? reconstruction::sectionValues(*record.analysis)
+                                : reconstruction::sectionValues(*record.geometry));
+        geometries.push_back(record.geometry);
+        values.push_back(well->values.get());
+    }
+    std::vector<std::shared_ptr<const reconstruction::WallColouring>> colourings;
+    try {
+        colourings = reconstruction::wallColourings(geometries, colour, values);
+    } catch (const std::exception& e) {
+        QApplication::restoreOverrideCursor();
+        emit status(QString::fromStdString(e.what()));
+        return false;
+    }
+    m_detail->removeAll();
+    std::size_t next = 0;
+    for (auto& well : m_wells) {
+        const DeskWell& record = m_model.well(modelIndex(*well));
+        if (!chosen(*well)) {
+            if (record.geometry) m_detail->addWell(well->view->scene(), record.geometry);
+            continue;
+        }
+        const auto restyled = std::make_shared<const reconstruction::WellGeometry>(
+            record.geometry->restyled(radialExaggeration, colourings[next++]));
+        well->view->rebuild(*restyled, radialExaggeration);
+        m_detail->addWell(well->view->scene(), restyled);
+        edit(*well, [&](DeskWell& r) {
+            r.geometry = restyled;
+            r.options.radialExaggeration = radialExaggeration;
+            r.options.colour = colour;
+        });
+    }
+    m_legend.reset();
+    if (!colourings.empty()) m_legend = colourings.front()->legend();
+    QApplication::restoreOverrideCursor();
+    emit lookChanged();
+    emit status(QString("Coloured by %1, radii x%2 (%3 ms, nothing read again)")
+                    .arg(QString::fromStdString(colour.quantity))
+                    .arg(radialExaggeration)
+                    .arg(clock.elapsed()));
+    return true;
+}
+
+// Once every well is loaded: its colours as asked (a quantity other than the departure from
+// bit size, a range, a well without a bit size) and the legend.
+void WellSession::applyStyleAfterLoad() {
+    std::vector<std::shared_ptr<const reconstruction::WellGeometry>> geometries;
+    for (int i = 0; i < m_model.wellCount(); ++i)
+        if (m_model.well(i).geometry) geometries.push_back(m_model.well(i).geometry);
+    if (geometries.empty()) return;
+    const reconstruction::ColourRequest colour = m_look.colour;
+    bool rebuild = colour.quantity != "departure" || colour.range.has_value();
+    for (const auto& g : geometries) {
+        bool anyBit = false;
+        for (std::size_t row = 0; row < g->table().rowCount() && !anyBit; ++row)
+            anyBit = std::isfinite(g->bitRadius_mm(row));
+        rebuild = rebuild || !anyBit;
+    }
+    // A restyle here keeps the load's own status line.
+    QSignalBlocker quiet(this);
+    if (rebuild && restyle(m_look.radialExaggeration, colour)) {
+        quiet.unblock();
+        emit lookChanged();
+        return;
+    }
+    // The streamed segments are coloured as asked already: only the legend is new.
+    QString error;
+    try {
+        m_legend = reconstruction::wallColourings({geometries.front()}, colour).front()->legend();
+    } catch (const std::exception& e) {
+        error = QString::fromStdString(e.what());
+        m_legend.reset();
+    }
+    quiet.unblock();
+    if (!error.isEmpty()) emit status(error);
+    emit lookChanged();
+}
+
+}  // namespace caliper3d::app

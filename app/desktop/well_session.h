@@ -1,0 +1,152 @@
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <QObject>
+#include <QString>
+
+#include "app/input_options.h"
+#include "scenegraph/detail_loader.h"
+#include "scenegraph/node_ref.h"
+
+class SbVec2s;
+class SbViewportRegion;
+class SoNode;
+class SoSeparator;
+
+namespace caliper3d::app {
+
+class DeskModel;
+class RetiredLoads;
+
+// A click on the wall, as the session found it: the well (its record in the model), the
+// section and direction hit, and a line for the status bar.
+struct WellPick {
+    int well = -1;
+    std::size_t row = 0;
+    double azimuth_deg = 0.0;
+    QString text;
+};
+
+// How far the loads under way have got: reading is the first 70 % of a well's share
+// (the fraction of the log read), drawing the rest (segments attached over the well's
+// segments); the fraction is the mean over the wells loading.
+struct LoadProgress {
+    bool busy = false;
+    double fraction = 0.0;  // 0..1
+    QString text;           // "Reading NAME", "Drawing NAME" or "Loading N wells"
+};
+
+// The wells shown (FreeCAD's App::Document): opens, adds, cancels, restyles, shows and hides
+// them. Per well it owns the load pipeline, the segment feeder, the analysis job and the
+// well's Coin nodes (scenegraph::WellView), keyed by a stable id; everything a view reads
+// about a well (source, options, geometry, analysis, diagnostics, error, visibility) it
+// writes into the DeskModel, the only store. It makes no widget; it reports by signals.
+// Main thread only (Coin nodes are made here; workers hand over plain data).
+class WellSession : public QObject {
+    Q_OBJECT
+
+public:
+    // `probe` tells the detail loader where the camera is (null: no camera, no detail).
+    WellSession(DeskModel& model, scenegraph::DetailLoader::CameraProbe probe,
+                QObject* parent = nullptr);
+    ~WellSession() override;
+    WellSession(const WellSession&) = delete;
+    WellSession& operator=(const WellSession&) = delete;
+
+    // Every well's nodes: what a viewer shows and a scene export writes.
+    SoSeparator* sceneRoot() const { return m_sceneRoot.get(); }
+    DeskModel& model() const { return m_model; }
+
+    // Replaces the wells shown by this one; its wellhead (if any) becomes the scene origin.
+    // Returns the well's id.
+    int openWell(const WellSource& source, const LoadOptions& options);
+    int openWell(const QString& path, const LoadOptions& options);
+    // Adds a well to those shown; each loads on its own worker.
+    int addWell(const WellSource& source, const LoadOptions& options);
+    int addWell(const QString& path, const LoadOptions& options);
+    // Stops every load under way within a block of the log; the wells not yet loaded are
+    // removed (a part of a well is never left drawn as if it were the whole).
+    void cancelLoading();
+
+    // Draws the wells with another radial exaggeration and wall colouring from the geometry
+    // in memory: no file is read again and no path placed again; the coarse levels are
+    // rebuilt and the detail near the camera follows. False, with the reason in status(),
+    // while a well still loads or when a well cannot be coloured so (an unknown curve). The
+    // colour range is shared by every well.
+    bool restyle(double radialExaggeration, const reconstruction::ColourRequest& colour);
+    // The same for one well (its record in the model) only, its colour range its own.
+    bool restyleWell(int well, const reconstruction::ColourRequest& colour);
+    // Shows or hides a well (its record in the model).
+    void setWellVisible(int well, bool visible);
+
+    std::size_t wellCount() const { return m_wells.size(); }
+    bool loading() const;
+    LoadProgress progress() const;
+    // The warnings of the wells shown (reader, survey, geometry) as loaded so far.
+    std::size_t warningCount() const;
+    QString warningsText() const;
+    // The files of the wells shown, with their surveys and wellheads.
+    std::vector<WellSource> wellSources() const;
+    // What every well is drawn with (radial exaggeration, colouring): all a newly opened
+    // well takes from those shown.
+    const LoadOptions& look() const { return m_look; }
+    // The legend of the wall's colours (null before a well is loaded).
+    const reconstruction::ColourLegend* legend() const;
+    // The geometry well `i` (a record of the model) is drawn from (null until placed).
+    std::shared_ptr<const reconstruction::WellGeometry> geometry(std::size_t i) const;
+    // What the wall can be coloured by: the built-in quantities and the first well's curves.
+    std::vector<std::string> colourQuantities() const;
+    // Cancelled loads whose workers have not stopped yet (they stop within a block).
+    int retiredLoadsRunning() const;
+
+    // The wall at `pixel` of a view of `root` (Coin's pixels, origin bottom left) among the
+    // visible, analysed wells; nothing when none is hit.
+    std::optional<WellPick> pick(SoNode* root, const SbViewportRegion& viewport,
+                                 const SbVec2s& pixel) const;
+
+signals:
+    void status(const QString& text);
+    void loadStarted();
+    // The first segments of a load are in the scene (the camera may frame them).
+    void firstSegmentsShown();
+    void wellLoaded(int segments);  // once per well
+    void allWellsLoaded();
+    // A well could not be loaded: its file's name and why (file, line and reason).
+    void wellFailed(const QString& name, const QString& message);
+    void wellAnalysed(int well);  // its record in the model now holds the report's analysis
+    void loadCancelled();
+    void warningsChanged();
+    // The legend, exaggeration or colouring the wells are drawn with changed.
+    void lookChanged();
+
+private:
+    struct Well;
+    Well* find(int id) const;
+    int modelIndex(const Well& well) const;
+    template <typename Edit>
+    void edit(const Well& well, Edit change);
+    void analyse(Well& well);
+    void wellDone();
+    void applyStyleAfterLoad();
+    bool restyleWells(double radialExaggeration, const reconstruction::ColourRequest& colour,
+                      int onlyId);  // -1: every well
+
+    DeskModel& m_model;
+    std::unique_ptr<RetiredLoads> m_retired;  // declared first: destroyed after the wells
+    scenegraph::NodeRef<SoSeparator> m_sceneRoot;
+    std::unique_ptr<scenegraph::DetailLoader> m_detail;
+    std::vector<std::unique_ptr<Well>> m_wells;
+    int m_nextId = 0;
+    LoadOptions m_look;
+    reconstruction::Wellhead m_origin;  // the first well's wellhead
+    bool m_framed = false;              // firstSegmentsShown sent for this opening
+    // What the legend shows (a copy: the colouring's per-row values stay with the geometry).
+    std::optional<reconstruction::ColourLegend> m_legend;
+};
+
+}  // namespace caliper3d::app

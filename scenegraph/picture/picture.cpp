@@ -1,0 +1,143 @@
+#include "scenegraph/picture/picture.h"
+
+#include <chrono>
+#include <thread>
+
+#include <glm/vec3.hpp>
+
+#include <Inventor/nodes/SoDirectionalLight.h>
+#include <Inventor/nodes/SoPerspectiveCamera.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+#include "reconstruction/mesh/lod_levels.h"
+#include "reconstruction/well_geometry.h"
+#include "scenegraph/colour_legend.h"
+#include "scenegraph/main_thread.h"
+#include "scenegraph/render_stats.h"
+#include "scenegraph/view_overlay.h"
+#include "scenegraph/well_annotations.h"
+#include "scenegraph/well_scene.h"
+
+namespace caliper3d::scenegraph {
+
+namespace {
+
+// A viewer's camera seen by a picture of another shape: a copy with the picture's aspect
+// (the viewer keeps the camera's aspect to its window), and the examiner viewer's headlight.
+SoSeparator* makeRenderRoot(SoNode* scene, const SoCamera& camera, int width, int height) {
+    auto* root = new SoSeparator;
+    auto* copy = static_cast<SoCamera*>(camera.copy());
+    copy->aspectRatio = static_cast<float>(width) / static_cast<float>(height);
+    root->addChild(copy);
+    SbVec3f look;
+    copy->orientation.getValue().multVec(SbVec3f(0.0f, 0.0f, -1.0f), look);
+    look.normalize();
+    auto* light = new SoDirectionalLight;
+    light->direction = look;
+    root->addChild(light);
+    root->addChild(scene);
+    return root;
+}
+
+double msSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
+
+}  // namespace
+
+Picture::Picture() = default;
+Picture::~Picture() = default;
+Picture::Picture(Picture&&) noexcept = default;
+Picture& Picture::operator=(Picture&&) noexcept = default;
+
+std::vector<PictureWell> pictureWells(
+    const std::vector<std::shared_ptr<const reconstruction::WellGeometry>>& geometries) {
+    std::vector<PictureWell> wells;
+    for (const auto& geometry : geometries) {
+        auto scene = std::make_shared<WellScene>();
+        scene->buildAll(*geometry);
+        wells.push_back({geometry, std::move(scene)});
+    }
+    return wells;
+}
+
+Picture drawPicture(const std::vector<PictureWell>& wells, const PictureRequest& request) {
+    assertMainThread("drawPicture");
+    const auto start = std::chrono::steady_clock::now();
+    const int width = request.width, height = request.height;
+    auto* scene = new SoSeparator;
+    for (const PictureWell& well : wells) {
+        scene->addChild(well.scene->root());
+        if (request.unloggedPath)
+            if (SoSeparator* above = makeUnloggedPath(*well.geometry)) scene->addChild(above);
+    }
+    Picture out;
+    if (request.camera)
+        out.root = makeRef(makeRenderRoot(scene, *request.camera, width, height));
+    else if (request.pose)
+        out.root = makeRef(makeRenderRoot(scene, *request.pose));
+    else
+        out.root = makeRef(makeRenderRoot(scene, request.view, width, height));
+    SoSeparator* root = out.root.get();
+    // Depth ticks, labels and each well's name for this camera (no part in its framing).
+    if (const SoCamera* camera = findCamera(root))
+        for (const PictureWell& well : wells) {
+            AnnotationView view =
+                pictureAnnotationView(*camera, width, height, request.top_m, request.bottom_m);
+            view.radialExaggeration = request.radialExaggeration;
+            view.tickMarks = request.tickMarks;
+            root->addChild(makeWellAnnotations(*well.geometry, view));
+        }
+    out.overlay = std::make_unique<ViewOverlay>();
+    std::vector<std::string> caption = request.caption;
+    caption.push_back(exaggerationCaption(request.radialExaggeration));
+    out.overlay->setCaption(caption);
+    root->addChild(out.overlay->root());
+    out.refinedSegments = refineForCamera(wells, root, height, request.pixelTolerance);
+    if (request.legend) root->addChild(makeColourLegend(*request.legend));
+    OffscreenRenderer renderer;
+    out.image = renderer.render(root, width, height, kBackgroundColour);
+    out.render_ms = msSince(start);
+    if (request.stats) {
+        out.frame_ms = renderer.timeFrames(root, width, height, kBackgroundColour, 5);
+        out.trianglesDrawn = trianglesDrawn(root, width, height);
+    }
+    return out;
+}
+
+std::size_t refineForView(const std::vector<PictureWell>& wells, const glm::vec3& eye,
+                          const LodView& view) {
+    std::size_t refined = 0;
+    for (const PictureWell& picture : wells) {
+        WellScene& well = *picture.scene;
+        const reconstruction::WellGeometry& geometry = *picture.geometry;
+        well.setLodView(view);
+        const std::vector<DetailRequest> wanted = well.wantedDetail(eye);
+        std::vector<reconstruction::SegmentMesh> meshes(wanted.size());
+        // Meshes on two threads (they read the immutable geometry only); nodes on this one.
+        auto build = [&](std::size_t from) {
+            for (std::size_t i = from; i < wanted.size(); i += 2)
+                meshes[i] = reconstruction::buildSegmentLevels(geometry, wanted[i].segment,
+                                                               wanted[i].level, wanted[i].heldFrom);
+        };
+        std::thread helper(build, 1);
+        build(0);
+        helper.join();
+        for (const reconstruction::SegmentMesh& mesh : meshes) well.attachFinerLevels(mesh);
+        refined += wanted.size();
+    }
+    return refined;
+}
+
+std::size_t refineForCamera(const std::vector<PictureWell>& wells, SoNode* renderRoot, int height,
+                            float pixelTolerance) {
+    auto* camera = dynamic_cast<SoPerspectiveCamera*>(findCamera(renderRoot));
+    if (!camera) return 0;
+    const SbVec3f eye = camera->position.getValue();
+    LodView view = lodViewFor(height, camera->heightAngle.getValue(), pixelTolerance);
+    view.visibility_m = fogVisibility(renderRoot);
+    return refineForView(wells, glm::vec3(eye[0], eye[1], eye[2]), view);
+}
+
+}  // namespace caliper3d::scenegraph

@@ -1,0 +1,54 @@
+#include "scenegraph/well_view.h"
+
+#include <Inventor/nodes/SoGroup.h>
+#include <Inventor/nodes/SoSeparator.h>
+#include <Inventor/nodes/SoSwitch.h>
+
+#include "scenegraph/main_thread.h"
+#include "scenegraph/well_annotations.h"
+#include "scenegraph/well_scene.h"
+
+namespace caliper3d::scenegraph {
+
+WellView::WellView(SoGroup* parent)
+    : m_parent(parent), m_shown(makeRef(new SoSwitch)), m_scene(std::make_unique<WellScene>()) {
+    assertMainThread("WellView");
+    m_shown->whichChild = SO_SWITCH_ALL;
+    m_shown->addChild(m_scene->root());
+    m_parent->addChild(m_shown.get());
+}
+
+WellView::~WellView() {
+    assertMainThread("WellView");
+    const int at = m_parent->findChild(m_shown.get());
+    if (at >= 0) m_parent->removeChild(at);
+}
+
+void WellView::setVisible(bool visible) {
+    m_shown->whichChild = visible ? SO_SWITCH_ALL : SO_SWITCH_NONE;
+}
+
+bool WellView::visible() const {
+    return m_shown->whichChild.getValue() != SO_SWITCH_NONE;
+}
+
+void WellView::annotate(const reconstruction::WellGeometry& geometry, double radialExaggeration) {
+    assertMainThread("WellView");
+    SoSeparator* annotations = makeWholeWellAnnotations(geometry, radialExaggeration);
+    if (m_annotations)
+        m_shown->replaceChild(m_annotations, annotations);
+    else
+        m_shown->addChild(annotations);
+    m_annotations = annotations;
+}
+
+void WellView::rebuild(const reconstruction::WellGeometry& geometry, double radialExaggeration) {
+    assertMainThread("WellView");
+    auto scene = std::make_unique<WellScene>();
+    scene->buildAll(geometry);
+    m_shown->replaceChild(m_scene->root(), scene->root());
+    m_scene = std::move(scene);
+    annotate(geometry, radialExaggeration);  // the tick marks stand off the wall as now drawn
+}
+
+}  // namespace caliper3d::scenegraph

@@ -1,0 +1,54 @@
+#pragma once
+
+#include <memory>
+
+#include "scenegraph/node_ref.h"
+
+class SoGroup;
+class SoSeparator;
+class SoSwitch;
+
+namespace caliper3d::reconstruction {
+class WellGeometry;
+}
+
+namespace caliper3d::scenegraph {
+
+class WellScene;
+
+// The nodes one shown well owns (FreeCAD's view provider): a switch that shows or hides it,
+// its WellScene, and its annotations (depth ticks, labels, name, the path above the log).
+//
+//   parent
+//     shown: SoSwitch
+//       WellScene::root()
+//       annotations (once the well is placed)
+//
+// The switch is added under `parent` on construction and removed on destruction. Main thread
+// only.
+class WellView {
+public:
+    explicit WellView(SoGroup* parent);
+    ~WellView();
+    WellView(const WellView&) = delete;
+    WellView& operator=(const WellView&) = delete;
+
+    WellScene& scene() const { return *m_scene; }
+    SoSwitch* shown() const { return m_shown.get(); }
+    void setVisible(bool visible);
+    bool visible() const;
+
+    // Adds (or replaces) the annotations for `geometry` as drawn at `radialExaggeration`.
+    void annotate(const reconstruction::WellGeometry& geometry, double radialExaggeration);
+    // A new scene in place of the one shown, every segment's coarse levels built here (a
+    // restyled geometry), and its annotations.
+    void rebuild(const reconstruction::WellGeometry& geometry, double radialExaggeration);
+
+private:
+    SoGroup* m_parent = nullptr;
+    NodeRef<SoSwitch> m_shown;
+    std::unique_ptr<WellScene> m_scene;
+    SoSeparator* m_annotations = nullptr;  // a child of m_shown
+};
+
+}  // namespace caliper3d::scenegraph

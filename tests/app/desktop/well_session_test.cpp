@@ -1,0 +1,156 @@
+// The wells shown, with no window: opening, adding, restyling, showing and hiding, cancelling,
+// all through WellSession and read back from the DeskModel, the only store.
+#include "app/desktop/well_session.h"
+
+#include <fstream>
+
+#include <gtest/gtest.h>
+#include <QSignalSpy>
+
+#include <Inventor/nodes/SoSeparator.h>
+#include <Inventor/nodes/SoSwitch.h>
+
+#include "app/desktop/desk_model.h"
+#include "desktop_test_support.h"
+
+using namespace caliper3d;
+
+namespace {
+
+class WellSessionTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        if (!test::ensureGuiApplication()) GTEST_SKIP() << "no display (run under xvfb-run)";
+    }
+    static app::LoadOptions eightAndAHalfInch() {
+        app::LoadOptions options;
+        options.read.bitSize_mm = 215.9;
+        return options;
+    }
+    static QString path(const std::filesystem::path& p) {
+        return QString::fromStdString(p.string());
+    }
+};
+
+TEST_F(WellSessionTest, OpensAWellIntoTheModelAndTheScene) {
+    const auto log = test::syntheticLog("example", 60.0, 0.1);
+    app::DeskModel model;
+    app::WellSession session(model, nullptr);
+    QSignalSpy loaded(&session, &app::WellSession::allWellsLoaded);
+    QSignalSpy analysed(&session, &app::WellSession::wellAnalysed);
+    const int id = session.openWell(path(log), eightAndAHalfInch());
+    ASSERT_EQ(model.wellCount(), 1);
+    EXPECT_EQ(model.well(0).id, id);
+    EXPECT_EQ(model.well(0).source.path, log.string());
+    EXPECT_TRUE(session.loading());
+    ASSERT_TRUE(test::waitUntil([&] { return analysed.count() == 1; }, 120000))
+        << "the well did not load and analyse";
+    EXPECT_EQ(loaded.count(), 1);
+    EXPECT_FALSE(session.loading());
+    EXPECT_FALSE(session.progress().busy);
+    const app::DeskWell& well = model.well(0);
+    ASSERT_NE(well.geometry, nullptr);
+    ASSERT_NE(well.analysis, nullptr);
+    EXPECT_EQ(well.geometry->table().rowCount(), 601u);  // 0-60 m every 0.1 m
+    ASSERT_TRUE(well.options.read.bitSize_mm.has_value());
+    EXPECT_DOUBLE_EQ(*well.options.read.bitSize_mm, 215.9);
+    EXPECT_EQ(session.geometry(0), well.geometry);
+    // One switch under the scene's root, showing the well's scene and annotations.
+    ASSERT_EQ(session.sceneRoot()->getNumChildren(), 1);
+    auto* shown = dynamic_cast<SoSwitch*>(session.sceneRoot()->getChild(0));
+    ASSERT_NE(shown, nullptr);
+    EXPECT_EQ(shown->getNumChildren(), 2);
+    ASSERT_NE(session.legend(), nullptr);
+    EXPECT_EQ(session.legend()->title, "radius - bit radius");
+    // The model's current well is the one loaded, at its first row.
+    EXPECT_EQ(model.currentWell(), 0);
+    EXPECT_DOUBLE_EQ(model.currentDepth_m(), well.geometry->table().depth_m.front());
+}
+
+TEST_F(WellSessionTest, RestylesAndHidesAWellThroughTheModel) {
+    const auto log = test::syntheticLog("example", 60.0, 0.1);
+    app::DeskModel model;
+    app::WellSession session(model, nullptr);
+    session.openWell(path(log), eightAndAHalfInch());
+    ASSERT_TRUE(
+        test::waitUntil([&] { return model.wellCount() == 1 && model.well(0).analysis; }, 120000));
+    const auto before = model.well(0).geometry;
+    QSignalSpy look(&session, &app::WellSession::lookChanged);
+    reconstruction::ColourRequest byClass;
+    byClass.quantity = "class";
+    ASSERT_TRUE(session.restyle(20.0, byClass));
+    EXPECT_GE(look.count(), 1);
+    const app::DeskWell& well = model.well(0);
+    EXPECT_NE(well.geometry, before);  // a new geometry, the same rows: nothing read again
+    EXPECT_EQ(well.geometry->table().rowCount(), before->table().rowCount());
+    EXPECT_DOUBLE_EQ(well.options.radialExaggeration, 20.0);
+    EXPECT_EQ(well.options.colour.quantity, "class");
+    EXPECT_DOUBLE_EQ(session.look().radialExaggeration, 20.0);
+    ASSERT_NE(session.legend(), nullptr);
+    EXPECT_EQ(session.legend()->title, "class");
+
+    auto* shown = dynamic_cast<SoSwitch*>(session.sceneRoot()->getChild(0));
+    ASSERT_NE(shown, nullptr);
+    session.setWellVisible(0, false);
+    EXPECT_FALSE(model.well(0).visible);
+    EXPECT_EQ(shown->whichChild.getValue(), SO_SWITCH_NONE);
+    session.setWellVisible(0, true);
+    EXPECT_TRUE(model.well(0).visible);
+    EXPECT_EQ(shown->whichChild.getValue(), SO_SWITCH_ALL);
+
+    // An unknown curve leaves the well as it was, and says why.
+    QSignalSpy status(&session, &app::WellSession::status);
+    reconstruction::ColourRequest bogus;
+    bogus.quantity = "porosity";
+    EXPECT_FALSE(session.restyle(1.0, bogus));
+    EXPECT_EQ(model.well(0).geometry, well.geometry);
+    ASSERT_GE(status.count(), 1);
+    EXPECT_NE(status.last().at(0).toString().indexOf("cannot colour by 'porosity'"), -1);
+}
+
+TEST_F(WellSessionTest, CancelRemovesOnlyTheWellsStillLoading) {
+    const auto small = test::syntheticLog("example", 60.0, 0.1);
+    const auto large = test::syntheticLog("example", 4000.0, 0.01);
+    app::DeskModel model;
+    app::WellSession session(model, nullptr);
+    const int first = session.openWell(path(small), eightAndAHalfInch());
+    ASSERT_TRUE(test::waitUntil([&] { return !session.loading(); }, 120000));
+    QSignalSpy cancelled(&session, &app::WellSession::loadCancelled);
+    const int second = session.addWell(path(large), eightAndAHalfInch());
+    EXPECT_NE(first, second);
+    ASSERT_EQ(model.wellCount(), 2);
+    ASSERT_EQ(session.sceneRoot()->getNumChildren(), 2);
+    ASSERT_TRUE(test::waitUntil([&] { return session.progress().fraction > 0.0; }, 20000));
+    EXPECT_TRUE(session.progress().busy);
+    EXPECT_TRUE(session.progress().text.startsWith("Reading "))
+        << session.progress().text.toStdString();
+    session.cancelLoading();
+    EXPECT_EQ(cancelled.count(), 1);
+    EXPECT_FALSE(session.loading());
+    EXPECT_FALSE(session.progress().busy);
+    // The loaded well stays, under its id, in the model and in the scene.
+    ASSERT_EQ(model.wellCount(), 1);
+    EXPECT_EQ(model.well(0).id, first);
+    EXPECT_EQ(model.indexOf(second), -1);
+    EXPECT_EQ(session.sceneRoot()->getNumChildren(), 1);
+    EXPECT_EQ(session.wellSources().size(), 1u);
+    EXPECT_TRUE(test::waitUntil([&] { return session.retiredLoadsRunning() == 0; }, 5000));
+}
+
+TEST_F(WellSessionTest, AFailedWellSaysWhichFileAndLine) {
+    const auto bad = test::scratch("session_bad.txt");
+    { std::ofstream(bad) << "1 2 3 4 5 6 7 8 9 10\n2 2 3\n3 2 3 4 5 6 7 8 9 10\n"; }
+    app::DeskModel model;
+    app::WellSession session(model, nullptr);
+    QSignalSpy failed(&session, &app::WellSession::wellFailed);
+    session.openWell(path(bad), {});
+    ASSERT_TRUE(test::waitUntil([&] { return failed.count() == 1; }, 30000));
+    EXPECT_EQ(failed.first().at(0).toString(), "session_bad.txt");
+    EXPECT_TRUE(failed.first().at(1).toString().contains(path(bad) + ":2"))
+        << failed.first().at(1).toString().toStdString();
+    ASSERT_EQ(model.wellCount(), 1);
+    EXPECT_FALSE(model.well(0).error.isEmpty());
+    EXPECT_FALSE(session.loading());
+}
+
+}  // namespace
