@@ -3,17 +3,25 @@
 #include <stdexcept>
 
 #include <Inventor/nodes/SoSeparator.h>
+#include <QFile>
 #include <QImage>
 
+#include "io/atomic_output.h"
 #include "scenegraph/node_ref.h"
 
 namespace caliper3d::app {
 
+void savePng(const QImage& image, const std::string& path) {
+    io::AtomicOutput output(path);
+    if (!image.save(QFile::decodeName(output.path().c_str()), "PNG"))
+        throw std::runtime_error(path + ": cannot write the PNG file");
+    output.commit();
+}
+
 void savePng(const scenegraph::RenderedImage& image, const std::string& path) {
     const QImage picture(image.rgba.data(), image.width, image.height, image.width * 4,
                          QImage::Format_RGBA8888);
-    if (!picture.save(QString::fromStdString(path), "PNG"))
-        throw std::runtime_error(path + ": cannot write the PNG file");
+    savePng(picture, path);
 }
 
 namespace detail {

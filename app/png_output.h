@@ -5,6 +5,7 @@
 #include "scenegraph/camera_setup.h"
 #include "scenegraph/offscreen_renderer.h"
 
+class QImage;
 class SoNode;
 
 namespace caliper3d::app {
@@ -16,8 +17,10 @@ scenegraph::RenderedImage renderToPng(SoNode* scene, const std::string& path, in
 scenegraph::RenderedImage renderToPng(SoNode* scene, const std::string& path, int width, int height,
                                       const scenegraph::CameraPose& pose);
 
-// Saves an image as PNG; throws std::runtime_error naming the file.
+// Saves an image as PNG, whole or not at all (io/atomic_output.h: a failed or killed run
+// leaves the previous picture); throws std::runtime_error naming the file.
 void savePng(const scenegraph::RenderedImage& image, const std::string& path);
+void savePng(const QImage& image, const std::string& path);
 
 namespace detail {
 scenegraph::RenderedImage renderRootToPng(SoNode* root, const std::string& path, int width,

@@ -4,6 +4,7 @@
 #include <QDialog>
 #include <QDialogButtonBox>
 #include <QDir>
+#include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
@@ -24,6 +25,7 @@
 #include "app/desktop/picture_renderer.h"
 #include "app/desktop/report_job.h"
 #include "app/main_window.h"
+#include "app/png_output.h"
 
 namespace caliper3d::app {
 
@@ -248,16 +250,22 @@ void FileMenu::savePicture() {
     if (path.isEmpty()) return;
     const std::optional<QSize> size = askPictureSize(&m_window, viewer->getGLWidget()->size());
     if (!size) return;
+    QImage image;
     try {
         // The offscreen renderer's EGL context cannot be made current on this thread while the
         // viewer's GLX context is: release it (the viewer makes it current again to draw).
         if (auto* gl = qobject_cast<QGLWidget*>(viewer->getGLWidget())) gl->doneCurrent();
-        const QImage image =
+        image =
             renderPicture(viewer->getSceneGraph(), *viewer->getCamera(), m_window.legend(), *size);
-        if (!image.save(path, "PNG")) throw std::runtime_error("cannot write the file");
-        status(QString("Wrote %1 (%2 x %3)").arg(path).arg(size->width()).arg(size->height()));
     } catch (const std::exception& e) {
         QMessageBox::warning(&m_window, "Save picture failed", path + ": " + e.what());
+        return;
+    }
+    try {
+        savePng(image, QFile::encodeName(path).toStdString());  // its message names the file
+        status(QString("Wrote %1 (%2 x %3)").arg(path).arg(size->width()).arg(size->height()));
+    } catch (const std::exception& e) {
+        QMessageBox::warning(&m_window, "Save picture failed", QString::fromLocal8Bit(e.what()));
     }
 }
 
