@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <ostream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -10,6 +11,7 @@
 #include "app/commands.h"
 #include "app/input_options.h"
 #include "app/verb_parser.h"
+#include "io/atomic_output.h"
 #include "io/column_text_writer.h"
 #include "io/las_writer.h"
 #include "io/number_parsing.h"
@@ -31,9 +33,9 @@ void writeField(const std::string& folder, std::size_t wells, double length, dou
         std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(std::sqrt(double(wells)))));
     const int digits = std::max(3, static_cast<int>(std::to_string(wells - 1).size()));
     const std::string manifestPath = (fs::path(folder) / "manifest.csv").string();
-    std::FILE* manifest = std::fopen(manifestPath.c_str(), "wb");
-    if (!manifest) throw std::runtime_error(manifestPath + ": cannot open for writing");
-    std::fputs("file,verb,wellhead\n", manifest);
+    io::AtomicOutput manifestFile(manifestPath);
+    std::ostream& manifest = manifestFile.stream();
+    manifest << "file,verb,wellhead\n";
     std::size_t sections = 0;
     for (std::size_t w = 0; w < wells; ++w) {
         const std::string& profile = profiles[w % profiles.size()];
@@ -47,10 +49,12 @@ void writeField(const std::string& folder, std::size_t wells, double length, dou
         io::writeLasFile((fs::path(folder) / name).string(), table);
         sections += table.rowCount();
         const std::size_t gridColumn = w % columns, gridRow = w / columns;
-        std::fprintf(manifest, "%s,report,\"%.1f,%.1f,0\"\n", name,
-                     25.0 * static_cast<double>(gridColumn), 25.0 * static_cast<double>(gridRow));
+        char line[160];
+        std::snprintf(line, sizeof line, "%s,report,\"%.1f,%.1f,0\"\n", name,
+                      25.0 * static_cast<double>(gridColumn), 25.0 * static_cast<double>(gridRow));
+        manifest << line;
     }
-    if (std::fclose(manifest) != 0) throw std::runtime_error(manifestPath + ": write failed");
+    manifestFile.commit();
     std::printf("wrote %zu wells (%zu sections, %.1f m each) and %s\n", wells, sections, length,
                 manifestPath.c_str());
 }

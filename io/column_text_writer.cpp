@@ -1,9 +1,9 @@
 #include "io/column_text_writer.h"
 
 #include <charconv>
-#include <fstream>
-#include <stdexcept>
 #include <vector>
+
+#include "io/atomic_output.h"
 
 namespace caliper3d::io {
 
@@ -70,10 +70,9 @@ void writeColumnText(std::ostream& out, const SectionTable& table, LengthUnit ra
 
 void writeColumnTextFile(const std::string& path, const SectionTable& table,
                          LengthUnit radiusUnit) {
-    std::ofstream out(path, std::ios::binary);
-    if (!out) throw std::runtime_error(path + ": cannot open file for writing");
-    writeColumnText(out, table, radiusUnit);
-    if (!out) throw std::runtime_error(path + ": write failed");
+    AtomicOutput file(path);
+    writeColumnText(file.stream(), table, radiusUnit);
+    file.commit();
 }
 
 }  // namespace caliper3d::io

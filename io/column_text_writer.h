@@ -16,6 +16,7 @@ namespace caliper3d::io {
 // back to the same table.
 void writeColumnText(std::ostream& out, const SectionTable& table,
                      LengthUnit radiusUnit = LengthUnit::Inch);
+// The same to a file, whole or not at all (io/atomic_output.h).
 void writeColumnTextFile(const std::string& path, const SectionTable& table,
                          LengthUnit radiusUnit = LengthUnit::Inch);
 

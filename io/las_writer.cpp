@@ -3,8 +3,9 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <stdexcept>
+
+#include "io/atomic_output.h"
 
 namespace caliper3d::io {
 
@@ -145,10 +146,9 @@ void writeLas(std::ostream& out, const SectionTable& t, const LasWriteOptions& o
 
 void writeLasFile(const std::string& path, const SectionTable& table,
                   const LasWriteOptions& options) {
-    std::ofstream out(path, std::ios::binary);
-    if (!out) throw std::runtime_error(path + ": cannot open file for writing");
-    writeLas(out, table, options);
-    if (!out) throw std::runtime_error(path + ": write failed");
+    AtomicOutput file(path);
+    writeLas(file.stream(), table, options);
+    file.commit();
 }
 
 }  // namespace caliper3d::io

@@ -52,6 +52,8 @@ void writeLasColumns(std::ostream& out, std::size_t rows, const std::vector<LasC
 // taken for a common null). Throws std::invalid_argument for a depth that is
 // not finite.
 void writeLas(std::ostream& out, const SectionTable& table, const LasWriteOptions& options = {});
+// The same to a file, whole or not at all (io/atomic_output.h); throws std::runtime_error naming
+// the file when it cannot be written.
 void writeLasFile(const std::string& path, const SectionTable& table,
                   const LasWriteOptions& options = {});
 

@@ -15,6 +15,7 @@
 #include <Inventor/nodes/SoSeparator.h>
 #include <Inventor/nodes/SoVertexProperty.h>
 
+#include "io/atomic_output.h"
 #include "reconstruction/well_geometry.h"
 #include "scenegraph/main_thread.h"
 #include "scenegraph/node_ref.h"
@@ -29,23 +30,27 @@ void* growBuffer(void* buffer, std::size_t size) {
     return std::realloc(buffer, size);
 }
 
-// An Open Inventor file being written, node after node. With gzip, through Coin's own file;
-// otherwise into memory, flushed to the file after each node: Coin writes a file a value at a
-// time, each its own stdio call, 5-6 times slower than the text it replaces (25 times for
-// binary). The buffer and the file are released however the writing ends.
+// An Open Inventor file being written, node after node, into a temporary beside it that
+// close() renames over it (io::AtomicOutput: a failed or killed export leaves the previous
+// file). With gzip, through Coin's own file; otherwise into memory, flushed to the file after
+// each node: Coin writes a file a value at a time, each its own stdio call, 5-6 times slower
+// than the text it replaces (25 times for binary). The buffer and the file are released, and
+// the temporary removed, however the writing ends.
 class IvFileWriter {
 public:
-    IvFileWriter(const std::string& path, const IvExportOptions& options) : m_path(path) {
+    IvFileWriter(const std::string& path, const IvExportOptions& options)
+        : m_path(path), m_output(path) {
         m_out.setBinary(options.binary ? TRUE : FALSE);
         if (options.gzip) {
             // Compression must be chosen before openFile(), or Coin ignores it.
             if (!m_out.setCompression("GZIP", 0.6f))
                 throw std::runtime_error(path + ": this Coin build cannot write compressed files");
-            if (!m_out.openFile(path.c_str()))
+            if (!m_out.openFile(m_output.path().c_str()))
                 throw std::runtime_error(path + ": cannot open file for writing");
+            m_coinFile = true;
             return;
         }
-        m_file = std::fopen(path.c_str(), "wb");
+        m_file = std::fopen(m_output.path().c_str(), "wb");
         if (!m_file) throw std::runtime_error(path + ": cannot open file for writing");
         m_out.setBuffer(std::malloc(1u << 20), 1u << 20, &growBuffer);
     }
@@ -54,6 +59,7 @@ public:
             std::free(buffer().first);
             std::fclose(m_file);
         }
+        if (m_coinFile) m_out.closeFile();  // before m_output removes the file
     }
     IvFileWriter(const IvFileWriter&) = delete;
     IvFileWriter& operator=(const IvFileWriter&) = delete;
@@ -68,15 +74,17 @@ public:
 
     // Throws std::runtime_error naming the file when it could not be written.
     void close() {
-        if (!m_file) {
+        if (m_coinFile) {
             m_out.closeFile();
-            return;
+            m_coinFile = false;
+        } else {
+            std::free(buffer().first);
+            const bool closed = std::fclose(m_file) == 0;
+            m_file = nullptr;
+            if (!closed || !m_ok)
+                throw std::runtime_error(m_path + ": cannot write the file (disk full?)");
         }
-        std::free(buffer().first);
-        const bool closed = std::fclose(m_file) == 0;
-        m_file = nullptr;
-        if (!closed || !m_ok)
-            throw std::runtime_error(m_path + ": cannot write the file (disk full?)");
+        m_output.commit();
     }
 
 private:
@@ -88,8 +96,10 @@ private:
     }
 
     std::string m_path;
+    io::AtomicOutput m_output;  // declared before the file and SoOutput: they close first
     SoOutput m_out;
     std::FILE* m_file = nullptr;
+    bool m_coinFile = false;  // m_out has a file open (gzip)
     bool m_ok = true;
 };
 

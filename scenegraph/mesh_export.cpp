@@ -19,6 +19,7 @@
 #include <assimp/Exporter.hpp>
 #include <glm/vec3.hpp>
 
+#include "io/atomic_output.h"
 #include "reconstruction/mesh/lod_levels.h"
 #include "reconstruction/mesh/mesh.h"
 #include "reconstruction/well_geometry.h"
@@ -38,7 +39,9 @@ public:
     virtual void beginWell(const std::string& name) = 0;
     virtual void add(const reconstruction::Mesh& mesh, const MeshTriangles& written,
                      const std::string& name) = 0;
-    virtual void write(const std::string& path) = 0;
+    // Writes the file at `path`; errors name `shownAs` (the file the user asked for, which
+    // `path`, a temporary beside it, replaces once written).
+    virtual void write(const std::string& path, const std::string& shownAs) = 0;
 };
 
 namespace {
@@ -183,19 +186,19 @@ public:
         m_model.nodes.push_back(std::move(node));
     }
 
-    void write(const std::string& path) override {
+    void write(const std::string& path, const std::string& shownAs) override {
         // The writer copies the buffer into the file's binary chunk: without the room the
         // buffer grew into, the peak is twice the buffer, not three times.
         m_model.buffers.front().data.shrink_to_fit();
         std::ofstream file(path, std::ios::binary);
-        if (!file) throw std::runtime_error(path + ": cannot open file for writing");
+        if (!file) throw std::runtime_error(shownAs + ": cannot open file for writing");
         // Through a stream the library opens nothing itself, and its stream's state tells
         // whether every byte was written (the library does not check).
         tinygltf::TinyGLTF gltf;
         const bool serialised = gltf.WriteGltfSceneToStream(&m_model, file, false, true);
         file.close();
         if (!serialised || !file)
-            throw std::runtime_error(path + ": cannot write the file (disk full?)");
+            throw std::runtime_error(shownAs + ": cannot write the file (disk full?)");
     }
 
 private:
@@ -288,7 +291,7 @@ public:
         m_meshes.push_back(std::move(out));
     }
 
-    void write(const std::string& path) override {
+    void write(const std::string& path, const std::string& shownAs) override {
         aiScene scene;  // owns, and frees, everything handed to it below
         scene.mRootNode = new aiNode("caliper3d");
         scene.mNumMaterials = 1;
@@ -316,7 +319,7 @@ public:
 
         Assimp::Exporter exporter;
         if (exporter.Export(&scene, exporterId(), path.c_str()) != AI_SUCCESS)
-            throw std::runtime_error(path + ": cannot write the file (" +
+            throw std::runtime_error(shownAs + ": cannot write the file (" +
                                      exporter.GetErrorString() + ")");
     }
 
@@ -496,7 +499,11 @@ void MeshFileWriter::write(const std::string& path) {
     std::unique_ptr<Sink> sink = std::exchange(m_sink, makeSink(m_format, m_binary));
     m_counts = MeshExportCounts();
     m_wellStarted = false;
-    sink->write(path);
+    // The libraries write a path of their own: a temporary beside the file, renamed over it
+    // once whole, so that a failed or killed export leaves the previous file.
+    io::AtomicOutput output(path);
+    sink->write(output.path(), path);
+    output.commit();
 }
 
 }  // namespace caliper3d::scenegraph

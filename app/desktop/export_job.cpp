@@ -1,18 +1,17 @@
 #include "app/desktop/export_job.h"
 
-#include <QDir>
 #include <QFile>
-#include <QFileInfo>
+#include <QProcessEnvironment>
 #include <QRegularExpression>
+
+#include "io/atomic_output.h"
 
 namespace caliper3d::app {
 
 ExportJob::ExportJob(QString program, const std::vector<WellSource>& wells,
                      const LoadOptions& options, QString output, QObject* parent)
     : QObject(parent), m_program(std::move(program)), m_output(std::move(output)) {
-    const QFileInfo out(m_output);
-    m_partial = out.dir().filePath("~" + out.fileName());  // same extension: same format
-    m_arguments = exportArguments(wells, options, m_partial);
+    m_arguments = exportArguments(wells, options, m_output);
     connect(&m_process, &QProcess::readyReadStandardError, this, &ExportJob::readErrors);
     connect(&m_process, qOverload<int, QProcess::ExitStatus>(&QProcess::finished), this,
             &ExportJob::ended);
@@ -23,6 +22,12 @@ ExportJob::ExportJob(QString program, const std::vector<WellSource>& wells,
     });
     // The child's summary lines are not shown; only stderr is read.
     m_process.setStandardOutputFile(QProcess::nullDevice());
+    // An export writes a file and opens no window: without a display to name, the child cannot
+    // connect to the window's X server (nor fail when that server refuses a connection).
+    QProcessEnvironment environment = QProcessEnvironment::systemEnvironment();
+    environment.remove("DISPLAY");
+    environment.remove("WAYLAND_DISPLAY");
+    m_process.setProcessEnvironment(environment);
 }
 
 ExportJob::~ExportJob() {
@@ -32,6 +37,7 @@ ExportJob::~ExportJob() {
 void ExportJob::start() {
     m_clock.start();
     m_process.start(m_program, m_arguments);
+    m_childPid = m_process.processId();  // set once forked, before it has started
 }
 
 bool ExportJob::running() const {
@@ -41,6 +47,9 @@ bool ExportJob::running() const {
 void ExportJob::cancel() {
     if (!running()) return;
     m_cancelled = true;
+    // SIGTERM lets the child remove its temporary file on its way out.
+    m_process.terminate();
+    if (m_process.waitForFinished(3000)) return;
     m_process.kill();
     m_process.waitForFinished(5000);
 }
@@ -71,27 +80,20 @@ void ExportJob::readErrors() {
 void ExportJob::ended(int exitCode, QProcess::ExitStatus status) {
     readErrors();
     if (!m_pending.trimmed().isEmpty()) m_errors << m_pending.trimmed();
-    bool ok = !m_cancelled && status == QProcess::NormalExit && exitCode == 0;
-    if (ok) {
-        QFile::remove(m_output);
-        if (!QFile::rename(m_partial, m_output)) {
-            ok = false;
-            m_errors << "cannot rename " + m_partial + " to " + m_output;
-        }
-    }
-    if (!ok) QFile::remove(m_partial);  // a partial file is not a scene
+    const bool ok = !m_cancelled && status == QProcess::NormalExit && exitCode == 0;
+    // A child killed or crashed could not remove its temporary; one that failed has.
+    if (!ok && m_childPid > 0)
+        io::removeTemporaries(QFile::encodeName(m_output).toStdString(), m_childPid);
     if (m_cancelled)
         emit finished(false, m_output + ": export cancelled; nothing written");
     else if (ok)
         emit finished(true, m_output);
     else
-        emit finished(
-            false,
-            m_output + ": export failed" +
-                (status == QProcess::CrashExit ? QString(" (the export process crashed)")
-                                               : QString(" (exit status %1)").arg(exitCode)) +
-                (m_errors.isEmpty() ? QString()
-                                    : ":\n" + m_errors.join("\n").replace(m_partial, m_output)));
+        emit finished(false, m_output + ": export failed" +
+                                 (status == QProcess::CrashExit
+                                      ? QString(" (the export process crashed)")
+                                      : QString(" (exit status %1)").arg(exitCode)) +
+                                 (m_errors.isEmpty() ? QString() : ":\n" + m_errors.join("\n")));
 }
 
 }  // namespace caliper3d::app

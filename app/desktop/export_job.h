@@ -13,9 +13,9 @@ namespace caliper3d::app {
 // One export run by a child `caliper3d export ... --progress` (the same binary), so the
 // window's Coin graph is never touched off the main thread and the window stays responsive:
 // the child reads the well and writes the file on its own. Its "progress DONE/TOTAL steps"
-// lines on stderr become progress(); cancel() kills it and removes the partial file. The child
-// writes beside the output under a partial name, renamed over the output once complete, so a
-// cancelled or failed export leaves an existing file as it was.
+// lines on stderr become progress(); cancel() stops it. The child writes the output as every
+// verb does (io/atomic_output.h): into a temporary beside it, renamed over it once complete, so
+// a cancelled or failed export leaves an existing file as it was, and no temporary.
 class ExportJob : public QObject {
     Q_OBJECT
 
@@ -27,12 +27,11 @@ public:
     ~ExportJob() override;
 
     void start();
-    // Kills the child and removes the partial file; finished(false, "cancelled") follows.
+    // Stops the child (SIGTERM, which removes its temporary; SIGKILL if it does not end within
+    // seconds, its temporary then removed here); finished(false, "cancelled") follows.
     void cancel();
     bool running() const;
     const QString& output() const { return m_output; }
-    // Where the child writes until it is done: the output's folder, "~" before its name.
-    const QString& partial() const { return m_partial; }
     const QStringList& arguments() const { return m_arguments; }
     qint64 elapsed_ms() const { return m_clock.isValid() ? m_clock.elapsed() : 0; }
 
@@ -52,8 +51,8 @@ private:
     QString m_program;
     QStringList m_arguments;
     QString m_output;
-    QString m_partial;
     QProcess m_process;
+    qint64 m_childPid = 0;  // names the child's temporary file
     QElapsedTimer m_clock;
     QString m_pending;     // a stderr line not ended yet
     QStringList m_errors;  // the child's stderr, progress lines left out

@@ -4,6 +4,7 @@
 #include <QDialog>
 #include <QDialogButtonBox>
 #include <QDir>
+#include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
@@ -259,7 +260,7 @@ void FileMenu::savePicture() {
         writePicture(path, *size);
         status(QString("Wrote %1 (%2 x %3)").arg(path).arg(size->width()).arg(size->height()));
     } catch (const std::exception& e) {
-        QMessageBox::warning(&m_window, "Save picture failed", path + ": " + e.what());
+        QMessageBox::warning(&m_window, "Save picture failed", QString::fromLocal8Bit(e.what()));
     }
 }
 
@@ -267,9 +268,14 @@ void FileMenu::writePicture(const QString& path, QSize size) {
     // The offscreen renderer's EGL context cannot be made current on this thread while the
     // viewer's GLX context is: release it (the viewer makes it current again to draw).
     if (auto* gl = qobject_cast<QGLWidget*>(m_viewer.getGLWidget())) gl->doneCurrent();
-    const scenegraph::Picture picture =
-        drawWindowPicture(m_session, *m_viewer.getCamera(), size.width(), size.height());
-    scenegraph::writePng(picture.image, path.toStdString());
+    const std::string file = QFile::encodeName(path).toStdString();
+    scenegraph::Picture picture;
+    try {
+        picture = drawWindowPicture(m_session, *m_viewer.getCamera(), size.width(), size.height());
+    } catch (const std::exception& e) {
+        throw std::runtime_error(file + ": " + e.what());
+    }
+    scenegraph::writePng(picture.image, file);  // whole or not at all; its message names the file
 }
 
 void FileMenu::saveReport() {

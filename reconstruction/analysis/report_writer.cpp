@@ -2,12 +2,12 @@
 
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "io/atomic_output.h"
 #include "io/las_writer.h"
 
 namespace caliper3d::reconstruction {
@@ -195,10 +195,9 @@ std::string formatAnalysisSummary(const WellAnalysis& a) {
 
 void writeSectionReport(const std::string& path, const WellAnalysis& a,
                         const ReportOptions& options) {
-    std::ofstream out(path, std::ios::binary);
-    if (!out) throw std::runtime_error(path + ": cannot open for writing");
-    writeSectionReport(out, a, options);
-    if (!out) throw std::runtime_error(path + ": write failed");
+    io::AtomicOutput file(path);
+    writeSectionReport(file.stream(), a, options);
+    file.commit();
 }
 
 void writeAnalysisLas(std::ostream& out, const WellAnalysis& a, const ReportOptions& options,
@@ -272,17 +271,15 @@ void writeAnalysisLas(std::ostream& out, const WellAnalysis& a, const ReportOpti
 
 void writeAnalysisLas(const std::string& path, const WellAnalysis& a, const ReportOptions& options,
                       const std::string& wellName) {
-    std::ofstream out(path, std::ios::binary);
-    if (!out) throw std::runtime_error(path + ": cannot open for writing");
-    writeAnalysisLas(out, a, options, wellName);
-    if (!out) throw std::runtime_error(path + ": write failed");
+    io::AtomicOutput file(path);
+    writeAnalysisLas(file.stream(), a, options, wellName);
+    file.commit();
 }
 
 void writeZoneReport(const std::string& path, const WellAnalysis& a) {
-    std::ofstream out(path, std::ios::binary);
-    if (!out) throw std::runtime_error(path + ": cannot open for writing");
-    writeZoneReport(out, a);
-    if (!out) throw std::runtime_error(path + ": write failed");
+    io::AtomicOutput file(path);
+    writeZoneReport(file.stream(), a);
+    file.commit();
 }
 
 }  // namespace caliper3d::reconstruction

@@ -67,7 +67,8 @@ void writeZoneReport(std::ostream& out, const WellAnalysis& analysis);
 // lines. Warnings are not in it: reconstruction::warnAnalysis counts them.
 std::string formatAnalysisSummary(const WellAnalysis& analysis);
 
-// The same to files; throw std::runtime_error naming the file when it cannot be written.
+// The same to files, each whole or not at all (io/atomic_output.h: a run killed midway leaves
+// the previous file); throw std::runtime_error naming the file when it cannot be written.
 void writeSectionReport(const std::string& path, const WellAnalysis& analysis,
                         const ReportOptions& options = {});
 void writeZoneReport(const std::string& path, const WellAnalysis& analysis);

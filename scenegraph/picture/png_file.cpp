@@ -6,6 +6,8 @@
 
 #include <png.h>
 
+#include "io/atomic_output.h"
+
 namespace caliper3d::scenegraph {
 
 namespace {
@@ -24,7 +26,9 @@ void writePng(const RenderedImage& image, const std::string& path) {
     if (image.width <= 0 || image.height <= 0 ||
         image.rgba.size() != static_cast<std::size_t>(image.width) * image.height * 4)
         throw std::runtime_error(path + ": no picture to write");
-    File file(std::fopen(path.c_str(), "wb"), &std::fclose);
+    // Whole or not at all: a killed or failed write leaves the previous picture.
+    io::AtomicOutput output(path);
+    File file(std::fopen(output.path().c_str(), "wb"), &std::fclose);
     if (!file) throw std::runtime_error(path + ": cannot write the PNG file");
     png_image png{};
     png.version = PNG_IMAGE_VERSION;
@@ -33,8 +37,9 @@ void writePng(const RenderedImage& image, const std::string& path) {
     png.format = PNG_FORMAT_RGBA;
     if (!png_image_write_to_stdio(&png, file.get(), 0, image.rgba.data(), 0, nullptr))
         throw pngError(path, png, "cannot write the PNG file");
-    if (std::fflush(file.get()) != 0 || std::ferror(file.get()))
+    if (std::fflush(file.get()) != 0 || std::ferror(file.get()) || std::fclose(file.release()) != 0)
         throw std::runtime_error(path + ": cannot write the PNG file");
+    output.commit();
 }
 
 RenderedImage readPng(const std::string& path) {

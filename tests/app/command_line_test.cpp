@@ -1,5 +1,7 @@
+#include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <assimp/scene.h>
 #include <gtest/gtest.h>
@@ -184,4 +186,34 @@ TEST(CommandLineTest, InfoShowsDepthReferenceLocationAndHoleAzimuth) {
           "depth ref: KB, elevation 449.00 m from EREF", "lat/long:  56.934500, -111.205400",
           "UWI:       1AA063409108W400", "hole azi:  from HAZI"})
         EXPECT_NE(r.output.find(shown), std::string::npos) << shown << "\n" << r.output;
+}
+
+TEST(CommandLineTest, VerbsThatOpenNoWindowRunWhereNoDisplayCanBeReached) {
+    // Only view opens a window. With Qt told to use X and a display named that no server
+    // answers, every other verb still does its work: none connects to a display at all.
+    const std::string noDisplay = "env -u WAYLAND_DISPLAY DISPLAY=:31999 QT_QPA_PLATFORM=xcb";
+    const auto folder = caliper3d::test::scratch("no_display");
+    std::filesystem::create_directories(folder);
+    const std::string log = (folder / "well.las").string();
+    const std::string iv = (folder / "well.iv").string();
+    { std::ofstream(folder / "manifest.csv") << "file,verb\nwell.las,report\n"; }
+    const std::vector<std::string> runs = {
+        "synth -o " + log + " --length 20 --step 0.1",
+        "info " + log,
+        "report " + log + " -o " + (folder / "well.csv").string() + " --zones " +
+            (folder / "zones.csv").string() + " --las " + (folder / "report.las").string(),
+        "export " + log + " -o " + iv,
+        "export " + log + " -o " + (folder / "well.glb").string(),
+        "render " + log + " -o " + (folder / "well.png").string() + " --width 64 --height 48",
+        "batch " + (folder / "manifest.csv").string() + " -o " + (folder / "batch").string() + "/",
+    };
+    for (const std::string& arguments : runs) {
+        const CommandRun r = caliper3d::test::runCaliper3dStderr(arguments, noDisplay);
+        EXPECT_EQ(r.status, 0) << arguments << ":\n" << r.output;
+        EXPECT_EQ(r.output.find("display"), std::string::npos) << arguments << ":\n" << r.output;
+    }
+    std::ifstream in(iv);
+    std::string header;
+    std::getline(in, header);
+    EXPECT_EQ(header.rfind("#Inventor V2.1", 0), 0U) << header;
 }

@@ -12,8 +12,10 @@
 #include <Inventor/nodes/SoSeparator.h>
 
 #include "desk_test_support.h"
+#include "io/atomic_output.h"
 #include "io/column_text_writer.h"
 #include "reconstruction/synthetic/synthetic_well.h"
+#include "scenegraph/main_thread.h"
 
 using namespace caliper3d;
 
@@ -54,6 +56,15 @@ Outcome run(app::ExportJob& job, int ms, const std::function<void()>& onProgress
     return out;
 }
 
+// The temporaries of `target` in its folder (an export writes one, then renames it).
+std::vector<std::string> temporariesOf(const std::filesystem::path& target) {
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(target.parent_path()))
+        if (io::isTemporaryOf(entry.path().filename().string(), target.filename().string()))
+            names.push_back(entry.path().string());
+    return names;
+}
+
 }  // namespace
 
 TEST(ExportJobTest, ReadsProgressLines) {
@@ -68,7 +79,8 @@ TEST(ExportJobTest, ReadsProgressLines) {
 }
 
 TEST(ExportJobTest, WritesAReadableIvThroughTheChildProcess) {
-    CALIPER3D_REQUIRE_GUI();
+    const test::EventLoopApplication application;
+    scenegraph::initCoin();  // to read the file back
     const std::string log = writeWell("export_job.txt", 30.0, 0.05);
     const auto out = test::scratch("export_job.iv");
     std::filesystem::remove(out);
@@ -82,7 +94,7 @@ TEST(ExportJobTest, WritesAReadableIvThroughTheChildProcess) {
     ASSERT_TRUE(outcome.ok) << outcome.message.toStdString();
     ASSERT_FALSE(outcome.progress.empty());
     EXPECT_EQ(outcome.progress.back().first, outcome.progress.back().second);
-    EXPECT_FALSE(std::filesystem::exists(job.partial().toStdString()));
+    EXPECT_TRUE(temporariesOf(out).empty());
 
     SoInput input;
     ASSERT_TRUE(input.openFile(out.c_str()));
@@ -94,7 +106,7 @@ TEST(ExportJobTest, WritesAReadableIvThroughTheChildProcess) {
 }
 
 TEST(ExportJobTest, CancelStopsTheChildAndLeavesNoFile) {
-    CALIPER3D_REQUIRE_GUI();
+    const test::EventLoopApplication application;
     const std::string log = writeWell("export_cancel.txt", 400.0, 0.01);
     const auto out = test::scratch("export_cancel.glb");
     std::filesystem::remove(out);
@@ -110,11 +122,11 @@ TEST(ExportJobTest, CancelStopsTheChildAndLeavesNoFile) {
     EXPECT_TRUE(outcome.message.contains("cancelled")) << outcome.message.toStdString();
     EXPECT_FALSE(job.running());
     EXPECT_FALSE(std::filesystem::exists(out));
-    EXPECT_FALSE(std::filesystem::exists(job.partial().toStdString()));
+    EXPECT_TRUE(temporariesOf(out).empty());
 }
 
 TEST(ExportJobTest, AFailedExportNamesTheFileAndLeavesTheOldOneAsItWas) {
-    CALIPER3D_REQUIRE_GUI();
+    const test::EventLoopApplication application;
     const auto bad = test::scratch("export_bad.txt");
     std::ofstream(bad) << "{\"not\": \"a log\"}\n";
     const auto out = test::scratch("export_bad.iv");
@@ -132,4 +144,38 @@ TEST(ExportJobTest, AFailedExportNamesTheFileAndLeavesTheOldOneAsItWas) {
     std::string first;
     std::getline(in, first);
     EXPECT_EQ(first, "old");
+    EXPECT_TRUE(temporariesOf(out).empty());
+}
+
+TEST(ExportJobTest, TheChildIsGivenNoDisplay) {
+    // The export only writes a file: without DISPLAY the child can neither open the window's
+    // display nor fail where that display refuses a connection. A script stands in for the
+    // program and writes down the environment it was given.
+    const test::EventLoopApplication application;
+    const std::string log = writeWell("export_env.txt", 10.0, 0.1);
+    const auto script = test::scratch("export_env.sh");
+    const auto seen = test::scratch("export_env_seen.txt");
+    std::filesystem::remove(seen);
+    std::ofstream(script) << "#!/bin/sh\nenv > '" << seen.string() << "'\n";
+    std::filesystem::permissions(script, std::filesystem::perms::owner_all);
+    const QByteArray display = qgetenv("DISPLAY");
+    qputenv("DISPLAY", ":31999");
+    qputenv("WAYLAND_DISPLAY", "wayland-31999");
+    app::ExportJob job(QString::fromStdString(script.string()), {{log, "", {}}}, {},
+                       QString::fromStdString(test::scratch("export_env.iv").string()));
+    qunsetenv("WAYLAND_DISPLAY");
+    if (display.isNull())
+        qunsetenv("DISPLAY");
+    else
+        qputenv("DISPLAY", display);
+    const Outcome outcome = run(job, 60000);
+    ASSERT_TRUE(outcome.ended);
+    std::ifstream in(seen);
+    ASSERT_TRUE(in) << "the script did not run: " << outcome.message.toStdString();
+    int lines = 0;
+    for (std::string line; std::getline(in, line); ++lines) {
+        EXPECT_NE(line.rfind("DISPLAY=", 0), 0U) << line;
+        EXPECT_NE(line.rfind("WAYLAND_DISPLAY=", 0), 0U) << line;
+    }
+    EXPECT_GT(lines, 0);
 }

@@ -29,7 +29,7 @@ TEST(ReportJobTest, NamesTheZoneTableBesideTheSectionReport) {
 }
 
 TEST(ReportJobTest, WritesTheReportCommandsFilesOnAWorker) {
-    CALIPER3D_REQUIRE_GUI();
+    const test::EventLoopApplication application;  // a worker and a queued call: no window
     auto table = std::make_shared<const io::SectionTable>(
         reconstruction::makeSyntheticWell(reconstruction::syntheticProfile("example", 20.0, 0.1)));
     const reconstruction::WellGeometry geometry(table, reconstruction::GeometryOptions{});
@@ -61,7 +61,7 @@ TEST(ReportJobTest, WritesTheReportCommandsFilesOnAWorker) {
 }
 
 TEST(ReportJobTest, AnUnwritableFileIsReportedByName) {
-    CALIPER3D_REQUIRE_GUI();
+    const test::EventLoopApplication application;  // a worker and a queued call: no window
     auto table = std::make_shared<const io::SectionTable>(
         reconstruction::makeSyntheticWell(reconstruction::syntheticProfile("example", 5.0, 0.1)));
     const reconstruction::WellGeometry geometry(table, reconstruction::GeometryOptions{});
