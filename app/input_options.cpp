@@ -67,12 +67,14 @@ std::vector<WellSource> wellSourcesFrom(const QCommandLineParser& parser,
 
 void rejectInapplicable(const QCommandLineParser& parser, const std::string& verb,
                         std::initializer_list<OptionEffect> effects, const std::string& why) {
-    for (const WellOption& option : wellOptions())
-        if (option.group == OptionGroup::Reading &&
-            std::find(effects.begin(), effects.end(), option.effect) != effects.end() &&
-            parser.isSet(option.name))
-            throw UsageError("caliper3d " + verb + ": --" + option.name +
-                             " does not apply: " + why);
+    const auto given =
+        std::find_if(wellOptions().begin(), wellOptions().end(), [&](const WellOption& option) {
+            return option.group == OptionGroup::Reading &&
+                   std::find(effects.begin(), effects.end(), option.effect) != effects.end() &&
+                   parser.isSet(option.name);
+        });
+    if (given != wellOptions().end())
+        throw UsageError("caliper3d " + verb + ": --" + given->name + " does not apply: " + why);
 }
 
 void addSummaryOption(QCommandLineParser& parser) {

@@ -188,7 +188,7 @@ const std::vector<std::string>& manifestColumns() {
         std::vector<std::string> columns = {"file", "verb", "output"};
         for (const WellOption& option : wellOptions())
             if (!option.column.empty()) columns.push_back(option.column);
-        columns.push_back("options");
+        columns.emplace_back("options");
         return columns;
     }();
     return kColumns;

@@ -91,14 +91,12 @@ std::string bitSizeText(double mm) {
     return fixed(mm, 1) + " mm (" + fixed(mm / 25.4, 3) + " in)";
 }
 
-// Each row in the order `caliper3d VERB --help` lists them; the messages are the command
-// line's (tests check them).
-std::vector<WellOption> makeTable() {
-    std::vector<WellOption> rows;
-    rows.reserve(32);  // each row is finished through a reference before the next is added
-    auto add = [&rows](const char* name, const char* valueName, OptionGroup group, const char* help,
-                       Parse parse, Format format) -> WellOption& {
-        WellOption& row = rows.emplace_back();
+// The rows under construction; a row is finished through the reference add returns.
+struct Rows {
+    std::vector<WellOption> list;
+    WellOption& add(const char* name, const char* valueName, OptionGroup group, const char* help,
+                    Parse parse, Format format) {
+        WellOption& row = list.emplace_back();
         row.name = name;
         row.valueName = valueName;
         row.group = group;
@@ -106,10 +104,14 @@ std::vector<WellOption> makeTable() {
         row.parse = parse;
         row.format = format;
         return row;
-    };
-    using G = OptionGroup;
+    }
+    WellOption& back() { return list.back(); }
+};
+using G = OptionGroup;
 
-    WellOption& arms = add(
+// Which curves hold the arms, and in which units.
+void curveRows(Rows& rows) {
+    WellOption& arms = rows.add(
         "arms", "N", G::Reading, "Number of caliper arms in a column-text file (default 6).",
         [](const std::string& t, WellSource&, LoadOptions& o) {
             o.read.armCount = wholeNumber(t, "arms", io::kMinArms, io::kMaxArms);
@@ -126,7 +128,7 @@ std::vector<WellOption> makeTable() {
     arms.blank = "6";
     arms.columnTextOnly = true;
 
-    WellOption& depthUnit = add(
+    WellOption& depthUnit = rows.add(
         "depth-unit", "m|ft", G::Reading,
         "Depth unit: m or ft (default: the file's; m for column text).",
         [](const std::string& t, WellSource&, LoadOptions& o) {
@@ -139,7 +141,7 @@ std::vector<WellOption> makeTable() {
     depthUnit.field = "Depth unit";
     depthUnit.blank = "the file's";
 
-    WellOption& radiusUnit = add(
+    WellOption& radiusUnit = rows.add(
         "radius-unit", "in|mm|cm", G::Reading,
         "Radius unit: in, mm or cm (default: the file's; in for column text).",
         [](const std::string& t, WellSource&, LoadOptions& o) {
@@ -152,7 +154,7 @@ std::vector<WellOption> makeTable() {
     radiusUnit.field = "Radius unit";
     radiusUnit.blank = "the file's";
 
-    WellOption& radii = add(
+    WellOption& radii = rows.add(
         "radii", "MNEM,...", G::Reading,
         "Curves holding the arm radii, in arm order (e.g. RAD1,RAD2,...).",
         [](const std::string& t, WellSource&, LoadOptions& o) {
@@ -174,7 +176,7 @@ std::vector<WellOption> makeTable() {
     radii.blank = "detected";
     radii.blankFor = [](const io::LogInfo& info) { return "detected: " + info.armSource; };
 
-    WellOption& diameters = add(
+    WellOption& diameters = rows.add(
         "diameters", "MNEM,...", G::Reading,
         "Curves holding opposite-pad diameters (e.g. C1,C2; one, e.g. CALI, for a two-pad tool).",
         [](const std::string& t, WellSource&, LoadOptions& o) {
@@ -188,8 +190,11 @@ std::vector<WellOption> makeTable() {
     diameters.column = "diameters";
     diameters.field = "Diameter curves";
     diameters.blank = "detected";
+}
 
-    WellOption& rowStep = add(
+// How a file is read: its rows, nulls and bit size.
+void fileRows(Rows& rows) {
+    WellOption& rowStep = rows.add(
         "row-step", "METRES", G::Reading,
         "Depth step per row of a radii-only text file, metres (default 0.01).",
         [](const std::string& t, WellSource&, LoadOptions& o) {
@@ -202,26 +207,26 @@ std::vector<WellOption> makeTable() {
         });
     rowStep.columnTextOnly = true;
 
-    add(
-        "nulls", "declared|common", G::Reading,
-        "Null values: declared (the file's NULL) or common (also -999.25, -9999, 9999, ERR, "
-        "dashes; default).",
-        [](const std::string& t, WellSource&, LoadOptions& o) {
-            if (t == "declared")
-                o.read.nullPolicy = io::NullPolicy::Declared;
-            else if (t == "common")
-                o.read.nullPolicy = io::NullPolicy::Common;
-            else
-                throw UsageError("--nulls: expected 'declared' or 'common', found '" + t + "'");
-        },
-        [](const WellSource&, const LoadOptions& o) -> std::optional<std::string> {
-            if (o.read.nullPolicy == kDefaults.read.nullPolicy) return std::nullopt;
-            return o.read.nullPolicy == io::NullPolicy::Declared ? "declared" : "common";
-        })
+    rows.add(
+            "nulls", "declared|common", G::Reading,
+            "Null values: declared (the file's NULL) or common (also -999.25, -9999, 9999, ERR, "
+            "dashes; default).",
+            [](const std::string& t, WellSource&, LoadOptions& o) {
+                if (t == "declared")
+                    o.read.nullPolicy = io::NullPolicy::Declared;
+                else if (t == "common")
+                    o.read.nullPolicy = io::NullPolicy::Common;
+                else
+                    throw UsageError("--nulls: expected 'declared' or 'common', found '" + t + "'");
+            },
+            [](const WellSource&, const LoadOptions& o) -> std::optional<std::string> {
+                if (o.read.nullPolicy == kDefaults.read.nullPolicy) return std::nullopt;
+                return o.read.nullPolicy == io::NullPolicy::Declared ? "declared" : "common";
+            })
         .choices = {"declared", "common"};
     rows.back().value = OptionValue::Choice;
 
-    WellOption& bitSize = add(
+    WellOption& bitSize = rows.add(
         "bit-size", "VALUE[in|mm]", G::Reading,
         "Bit size, e.g. 8.5in or 215.9mm (a bare number is inches).",
         [](const std::string& t, WellSource&, LoadOptions& o) {
@@ -241,22 +246,25 @@ std::vector<WellOption> makeTable() {
             text += " to " + bitSizeText(info.bitSizeMax_mm);
         return text;
     };
+}
 
-    add(
-        "points", "M", G::Reading, "Points per section of the closed spline (default 48).",
-        [](const std::string& t, WellSource&, LoadOptions& o) {
-            o.splinePoints = wholeNumber(t, "points", 3, 1024);
-        },
-        [](const WellSource&, const LoadOptions& o) -> std::optional<std::string> {
-            if (o.splinePoints == kDefaults.splinePoints) return std::nullopt;
-            return std::to_string(o.splinePoints);
-        })
+// How the well is reconstructed and drawn.
+void geometryRows(Rows& rows) {
+    rows.add(
+            "points", "M", G::Reading, "Points per section of the closed spline (default 48).",
+            [](const std::string& t, WellSource&, LoadOptions& o) {
+                o.splinePoints = wholeNumber(t, "points", 3, 1024);
+            },
+            [](const WellSource&, const LoadOptions& o) -> std::optional<std::string> {
+                if (o.splinePoints == kDefaults.splinePoints) return std::nullopt;
+                return std::to_string(o.splinePoints);
+            })
         .value = OptionValue::Count;
     rows.back().minCount = 3;
     rows.back().maxCount = 1024;
     rows.back().effect = OptionEffect::Geometry;
 
-    add(
+    rows.add(
         "segment-length", "METRES", G::Reading,
         "Length of one level-of-detail segment in metres (default 1).",
         [](const std::string& t, WellSource&, LoadOptions& o) {
@@ -270,7 +278,7 @@ std::vector<WellOption> makeTable() {
         });
     rows.back().effect = OptionEffect::Picture;
 
-    add(
+    rows.add(
         "shape-tolerance", "MM", G::Reading,
         "Level of detail: a coarse level leaves a section out only while its neighbours "
         "interpolate every arm within this many millimetres (coarser levels 4 and 16 times "
@@ -287,7 +295,7 @@ std::vector<WellOption> makeTable() {
         });
     rows.back().effect = OptionEffect::Picture;
 
-    add(
+    rows.add(
         "exaggerate", "F", G::Reading,
         "Draw radii F times larger around the true path (display only; default 1; render "
         "chooses one for its picture).",
@@ -302,7 +310,7 @@ std::vector<WellOption> makeTable() {
         });
     rows.back().effect = OptionEffect::Picture;
 
-    add(
+    rows.add(
         "steep-inclination", "DEG", G::Reading,
         "Above this inclination (degrees) arm 1 is placed from RB when the log has it "
         "(default 15).",
@@ -317,7 +325,7 @@ std::vector<WellOption> makeTable() {
         });
     rows.back().effect = OptionEffect::Geometry;
 
-    add(
+    rows.add(
         "tool-reach", "LENGTH", G::Reading,
         "Arm readings beyond this radius (e.g. 10in, 254mm) are stuck or spurious and are "
         "interpolated from the neighbouring arms (default: no limit).",
@@ -329,8 +337,11 @@ std::vector<WellOption> makeTable() {
             return exact(o.toolReach_mm) + "mm";
         });
     rows.back().effect = OptionEffect::Geometry;
+}
 
-    add(
+// What the wall is coloured by.
+void colourRows(Rows& rows) {
+    rows.add(
         "colour-by", "NAME", G::Colour,
         "Colour the wall by: departure (radius - bit radius, the default; diverging map, "
         "grey at bit size), diameter (equivalent), ellipticity, class (the report's classes), "
@@ -345,30 +356,33 @@ std::vector<WellOption> makeTable() {
         });
     rows.back().effect = OptionEffect::Picture;
 
-    add(
-        "colour-range", "LO,HI", G::Colour,
-        "The values at the colour map's ends, e.g. -10,40 (default: +-25 mm for departure, the "
-        "2nd to 98th percentile of the well for the others).",
-        [](const std::string& t, WellSource&, LoadOptions& o) {
-            const std::size_t comma = t.find(',');
-            double lo = 0.0, hi = 0.0;
-            if (comma == std::string::npos || t.find(',', comma + 1) != std::string::npos ||
-                !io::parseNumber(trimmed(t.substr(0, comma)), lo) ||
-                !io::parseNumber(trimmed(t.substr(comma + 1)), hi) || !std::isfinite(lo) ||
-                !std::isfinite(hi) || !(lo < hi))
-                throw UsageError(
-                    "--colour-range: expected LO,HI with LO below HI, e.g. -10,40; got '" + t +
-                    "'");
-            o.colour.range = std::make_pair(lo, hi);
-        },
-        [](const WellSource&, const LoadOptions& o) -> std::optional<std::string> {
-            if (!o.colour.range) return std::nullopt;
-            return exact(o.colour.range->first) + "," + exact(o.colour.range->second);
-        })
+    rows.add(
+            "colour-range", "LO,HI", G::Colour,
+            "The values at the colour map's ends, e.g. -10,40 (default: +-25 mm for departure, the "
+            "2nd to 98th percentile of the well for the others).",
+            [](const std::string& t, WellSource&, LoadOptions& o) {
+                const std::size_t comma = t.find(',');
+                double lo = 0.0, hi = 0.0;
+                if (comma == std::string::npos || t.find(',', comma + 1) != std::string::npos ||
+                    !io::parseNumber(trimmed(t.substr(0, comma)), lo) ||
+                    !io::parseNumber(trimmed(t.substr(comma + 1)), hi) || !std::isfinite(lo) ||
+                    !std::isfinite(hi) || !(lo < hi))
+                    throw UsageError(
+                        "--colour-range: expected LO,HI with LO below HI, e.g. -10,40; got '" + t +
+                        "'");
+                o.colour.range = std::make_pair(lo, hi);
+            },
+            [](const WellSource&, const LoadOptions& o) -> std::optional<std::string> {
+                if (!o.colour.range) return std::nullopt;
+                return exact(o.colour.range->first) + "," + exact(o.colour.range->second);
+            })
         .value = OptionValue::CommaList;
     rows.back().effect = OptionEffect::Picture;
+}
 
-    WellOption& survey = add(
+// Where each well is: its survey and wellhead.
+void perWellRows(Rows& rows) {
+    WellOption& survey = rows.add(
         "survey", "FILE", G::PerWell,
         "Deviation survey (MD, inclination, azimuth) for the well path instead of the log's "
         "DEVI/HAZI; once per FILE, in order.",
@@ -383,7 +397,7 @@ std::vector<WellOption> makeTable() {
     survey.field = "Survey";
     survey.blank = "none: the path from the log's DEVI/HAZI";
 
-    WellOption& wellhead = add(
+    WellOption& wellhead = rows.add(
         "wellhead", "E,N,ELEV", G::PerWell,
         "Wellhead easting, northing and elevation of the depth reference in metres (e.g. "
         "512300,6801200,25.5); once per FILE, in order. The first well's wellhead is the scene "
@@ -399,8 +413,19 @@ std::vector<WellOption> makeTable() {
     wellhead.column = "wellhead";
     wellhead.field = "Wellhead";
     wellhead.blank = "E,N,ELEV in metres, e.g. 512300,6801200,25.5 (none: origin)";
+}
 
-    return rows;
+// Each row in the order `caliper3d VERB --help` lists them; the messages are the command
+// line's (tests check them).
+std::vector<WellOption> makeTable() {
+    Rows rows;
+    rows.list.reserve(32);  // a row is finished through a reference before the next is added
+    curveRows(rows);
+    fileRows(rows);
+    geometryRows(rows);
+    colourRows(rows);
+    perWellRows(rows);
+    return rows.list;
 }
 
 }  // namespace
