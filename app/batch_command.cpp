@@ -100,13 +100,14 @@ bool startVerb(RowRun& run, const BatchSettings& settings, pid_t& pid) {
         const fs::path folder = fs::path(output).parent_path();
         if (!output.empty() && !folder.empty()) fs::create_directories(folder);
         std::vector<std::string> args = {verb};
+        // Each well's analysis threads within its share of the cores. Given before the row's
+        // own options: the verb's parser takes an option's last value, so a --threads among
+        // them wins.
+        if (verb == "report")
+            args.insert(args.end(), {"--threads", std::to_string(settings.threadsPerWell)});
         const std::vector<std::string> verbArgs =
             verbArguments(row, verb, output, (settings.scratch / run.stem()).string() + ".jsonl");
         args.insert(args.end(), verbArgs.begin(), verbArgs.end());
-        // Each well's analysis threads within its share of the cores.
-        if (verb == "report" &&
-            std::find(row.options.begin(), row.options.end(), "--threads") == row.options.end())
-            args.insert(args.end(), {"--threads", std::to_string(settings.threadsPerWell)});
         const fs::path base = settings.scratch / run.stem();
         const QString name = QString::fromStdString(args.front());
         QStringList qtArgs;

@@ -35,17 +35,12 @@ std::vector<std::string> verbArguments(const ManifestRow& row, const std::string
         args.emplace_back(name);
         args.push_back(value);
     };
-    if (verb != "info") {
-        option("-o", output);
-        option("--survey", row.survey);
-        option("--wellhead", row.wellhead);
+    if (verb != "info") option("-o", output);
+    for (const WellOption& well : wellOptions()) {
+        const auto cell = row.wellOptions.find(well.name);
+        if (cell != row.wellOptions.end() && takes(verb, well.group))
+            option((std::string("--") + well.name).c_str(), cell->second);
     }
-    option("--bit-size", row.bitSize);
-    option("--radii", row.radii);
-    option("--diameters", row.diameters);
-    option("--arms", row.arms);
-    option("--depth-unit", row.depthUnit);
-    option("--radius-unit", row.radiusUnit);
     args.insert(args.end(), row.options.begin(), row.options.end());
     option("--summary", summary);
     return args;

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "app/well_option_table.h"
+
 namespace caliper3d::app {
 
 // One well of a batch manifest (docs/formats.md, "Batch manifests"). Paths are as resolved
@@ -15,7 +17,9 @@ struct ManifestRow {
     std::string file;
     std::vector<std::string> verbs;  // each run in turn on the file
     std::string output;              // a file, a folder ("out/") or a pattern; empty: batch -o
-    std::string survey, wellhead, bitSize, radii, diameters, arms, depthUnit, radiusUnit;
+    // The cells of the columns that are options of the table (app/well_option_table.h), by
+    // option name; empty cells left out, paths resolved. The verb parses them.
+    OptionTexts wellOptions;
     std::vector<std::string> options;  // further arguments for every verb of the row
     std::string problem;               // why the row cannot run; empty: it can
 };
@@ -27,6 +31,9 @@ struct Manifest {
 
 // The verbs a manifest row may run.
 const std::vector<std::string>& batchVerbs();
+// The manifest's columns (and JSON keys): file, verb, output, a column for each option of the
+// table that has one, options.
+const std::vector<std::string>& manifestColumns();
 
 // Reads a CSV manifest (a header row naming the columns, then one well a row; '#' lines and
 // blank lines skipped; fields with commas in double quotes) or a JSON one (a name ending
@@ -39,7 +46,8 @@ Manifest readManifest(const std::string& path);
 Manifest parseManifest(const std::string& path, std::istream& in);
 
 // The arguments of "caliper3d VERB ..." for `row` (the verb not included), writing `output`
-// (ignored by info) and the summary line to `summary`.
+// (ignored by info) and the summary line to `summary`: the row's option cells the verb takes,
+// then its further options.
 std::vector<std::string> verbArguments(const ManifestRow& row, const std::string& verb,
                                        const std::string& output, const std::string& summary);
 

@@ -2,6 +2,7 @@
 #include <cstdlib>
 
 #include <optional>
+#include <string>
 
 #include <QFileInfo>
 #include <QString>
@@ -9,12 +10,13 @@
 
 #include "app/commands.h"
 #include "app/console_messages.h"
+#include "app/well_option_table.h"
 
 namespace caliper3d::app {
 
 namespace {
 const char kVerbs[] = "view, info, export, render, report, synth, batch";
-const char kUsage[] =
+const char kUsageHead[] =
     "usage: caliper3d [VERB] [OPTIONS] FILE...\n"
     "  (no verb)                         GUI on the bundled example well; with no display,\n"
     "                                    renders it to out/example.png and out/example.iv\n"
@@ -33,13 +35,14 @@ const char kUsage[] =
     "  batch MANIFEST [-o DIR/ -j N --row K]   one well a row (CSV or JSON), each in its own\n"
     "                                    process; batch --merge OUT.jsonl IN... joins summaries\n"
     "many files: -o DIR/ or -o 'out/{stem}.csv' writes one output per FILE (export and render\n"
-    "        with one -o FILE draw them in one scene); --summary FILE.jsonl: a JSON line each\n"
-    "common: --arms N --depth-unit m|ft --radius-unit in|mm|cm --bit-size VALUE[in|mm]\n"
-    "        --radii MNEM,... --diameters MNEM,... --nulls declared|common --row-step METRES\n"
-    "        --survey FILE --wellhead E,N,ELEV (once per FILE) --steep-inclination DEG\n"
-    "        --tool-reach LENGTH --points M --segment-length METRES --shape-tolerance MM "
-    "--exaggerate F\n"
+    "        with one -o FILE draw them in one scene); --summary FILE.jsonl: a JSON line each\n";
+const char kUsageTail[] =
     "Run 'caliper3d help VERB' (or 'caliper3d VERB --help') for a verb's options.\n";
+
+// The well's options come from their table, so a new one is listed without an edit here.
+std::string usage() {
+    return kUsageHead + optionsUsage() + kUsageTail;
+}
 }  // namespace
 
 namespace {
@@ -75,7 +78,7 @@ int runCommandLine(int argc, char** argv) {
     if (auto status = runVerb(verb, args, argc, argv)) return *status;
     if (verb == "-h" || verb == "--help" || verb == "help") {
         if (args.isEmpty()) {
-            std::fputs(kUsage, stdout);
+            std::fputs(usage().c_str(), stdout);
             return kExitOk;
         }
         if (auto status = runVerb(args.front(), {"--help"}, argc, argv)) return *status;
@@ -89,7 +92,7 @@ int runCommandLine(int argc, char** argv) {
     }
     if (looksLikeAFile(verb)) return runView(argc, argv, QStringList(verb) + args);
     std::fprintf(stderr, "caliper3d: unknown verb '%s' (the verbs are %s), and no such file\n%s",
-                 verb.toLocal8Bit().constData(), kVerbs, kUsage);
+                 verb.toLocal8Bit().constData(), kVerbs, usage().c_str());
     return kExitUsage;
 }
 

@@ -20,9 +20,7 @@ int runInfo(const QStringList& args) {
         addInputOptions(verb.parser());
         addSummaryOption(verb.parser());
         if (!verb.parse(args, 1)) return kExitOk;
-        rejectInapplicable(verb.parser(), "info",
-                           {"points", "segment-length", "shape-tolerance", "exaggerate",
-                            "steep-inclination", "tool-reach"},
+        rejectInapplicable(verb.parser(), "info", {OptionEffect::Geometry, OptionEffect::Picture},
                            "info describes the file as read; these shape the 3D reconstruction");
         const LoadOptions options = inputOptionsFrom(verb.parser());
         int failures = 0;

@@ -1,13 +1,12 @@
 #pragma once
 
 #include <initializer_list>
-#include <optional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <QCommandLineParser>
 
+#include "app/well_option_table.h"
 #include "io/diagnostics.h"
 #include "io/log_reader.h"
 #include "io/section_table.h"
@@ -17,41 +16,33 @@
 
 namespace caliper3d::app {
 
-// The command line fills the library's load settings (reconstruction/load):
-// this file only parses options into them.
-using reconstruction::LoadOptions;
-using reconstruction::WellSource;
+// The command line fills the library's load settings (reconstruction/load): the options
+// and their parsing are the rows of app/well_option_table.h; these functions register and
+// read each group of them.
 
-// Thrown for bad command-line usage (exit status 2).
-struct UsageError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
-
+// The Reading options (curves, units, bit size, geometry settings).
 void addInputOptions(QCommandLineParser& parser);
-// --colour-by NAME and --colour-range LO,HI, for the verbs that draw (view, render, export).
+// The Colour options (--colour-by NAME, --colour-range LO,HI), for the verbs that draw
+// (view, render, export).
 void addColourOptions(QCommandLineParser& parser);
-// Throws UsageError on a malformed range; an unknown NAME is found when a well is loaded
-// (the names of its extra curves are valid too).
-reconstruction::ColourRequest colourRequestFrom(const QCommandLineParser& parser);
-// Throws UsageError on a malformed value.
-LoadOptions inputOptionsFrom(const QCommandLineParser& parser);
-// Throws UsageError when any of `names` was given to `verb`, which cannot use
-// it (`why` says so: an option that is silently ignored misleads).
-void rejectInapplicable(const QCommandLineParser& parser, const std::string& verb,
-                        std::initializer_list<const char*> names, const std::string& why);
-// A length such as "8.5in", "215.9mm" or "21.59cm" (a bare number is inches),
-// in millimetres; throws UsageError naming `option` unless it is positive.
-double parseLength_mm(const std::string& text, const std::string& option);
-
-// Adds --survey FILE and --wellhead E,N,ELEV, each given once per well in
+// The PerWell options (--survey FILE, --wellhead E,N,ELEV), each given once per well in
 // the order of the files (or not at all).
 void addWellSourceOptions(QCommandLineParser& parser);
-// Pairs `files` with the --survey and --wellhead values; throws UsageError
-// when their counts differ from the number of files or a value is malformed.
+
+// The Reading options given; throws UsageError on a malformed value.
+LoadOptions inputOptionsFrom(const QCommandLineParser& parser);
+// The Colour options given. Throws UsageError on a malformed range; an unknown NAME is found
+// when a well is loaded (the names of its extra curves are valid too).
+reconstruction::ColourRequest colourRequestFrom(const QCommandLineParser& parser);
+// Pairs `files` with the PerWell options' values; throws UsageError when their counts
+// differ from the number of files or a value is malformed.
 std::vector<WellSource> wellSourcesFrom(const QCommandLineParser& parser,
                                         const std::vector<std::string>& files);
-// "E,N,ELEV" in metres; throws UsageError.
-reconstruction::Wellhead parseWellhead(const std::string& text);
+
+// Throws UsageError when a Reading option with one of `effects` was given to `verb`, which
+// cannot use it (`why` says so: an option that is silently ignored misleads).
+void rejectInapplicable(const QCommandLineParser& parser, const std::string& verb,
+                        std::initializer_list<OptionEffect> effects, const std::string& why);
 
 // --summary FILE.jsonl: one JSON line per input (app/input_summary.h).
 void addSummaryOption(QCommandLineParser& parser);

@@ -19,10 +19,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The manifest's columns (and JSON keys), in the order the user guide lists them.
-const std::vector<std::string> kColumns = {"file",     "verb",       "output",      "survey",
-                                           "wellhead", "bit_size",   "radii",       "diameters",
-                                           "arms",     "depth_unit", "radius_unit", "options"};
+bool isColumn(const std::string& name) {
+    const std::vector<std::string>& columns = manifestColumns();
+    return std::find(columns.begin(), columns.end(), name) != columns.end();
+}
 
 std::string trim(const std::string& text) {
     const auto first = text.find_first_not_of(" \t\r");
@@ -79,14 +79,12 @@ void fillRow(ManifestRow& row, const std::map<std::string, std::string>& field,
     row.verbs = words(get("verb"));
     if (row.verbs.empty()) row.verbs = {"report"};
     row.output = resolved(get("output"), folder);
-    row.survey = resolved(get("survey"), folder);
-    row.wellhead = get("wellhead");
-    row.bitSize = get("bit_size");
-    row.radii = get("radii");
-    row.diameters = get("diameters");
-    row.arms = get("arms");
-    row.depthUnit = get("depth_unit");
-    row.radiusUnit = get("radius_unit");
+    for (const WellOption& option : wellOptions()) {
+        if (option.column.empty()) continue;
+        std::string cell = get(option.column.c_str());
+        if (option.value == OptionValue::Path) cell = resolved(cell, folder);
+        if (!cell.empty()) row.wellOptions[option.name] = cell;
+    }
     row.options = words(get("options"));
     if (row.file.empty()) row.problem = "no file given";
     for (const std::string& verb : row.verbs)
@@ -108,7 +106,7 @@ Manifest readCsvManifest(const std::string& path, std::istream& in) {
         if (header.empty()) {
             for (std::string& name : fields) {
                 std::transform(name.begin(), name.end(), name.begin(), ::tolower);
-                if (std::find(kColumns.begin(), kColumns.end(), name) == kColumns.end())
+                if (!isColumn(name))
                     throw io::ParseError(path, lineNumber, 0, "unknown column '" + name + "'");
             }
             if (std::find(fields.begin(), fields.end(), "file") == fields.end())
@@ -133,13 +131,16 @@ Manifest readCsvManifest(const std::string& path, std::istream& in) {
 }
 
 // A JSON value as the manifest's text: strings as they are, numbers as written, arrays
-// joined (by commas for a wellhead, by spaces for verbs and options).
+// joined (by commas for an option whose value is a comma list, a wellhead or curve names;
+// by spaces for verbs and options).
 std::string jsonText(const std::string& key, const nlohmann::json& value) {
     if (value.is_string()) return value.get<std::string>();
     if (value.is_array()) {
         std::string out;
+        const auto option = std::find_if(wellOptions().begin(), wellOptions().end(),
+                                         [&key](const WellOption& o) { return o.column == key; });
         const char* separator =
-            key == "wellhead" || key == "radii" || key == "diameters" ? "," : " ";
+            option != wellOptions().end() && option->value == OptionValue::CommaList ? "," : " ";
         for (const nlohmann::json& item : value)
             out += (out.empty() ? "" : separator) + jsonText(key, item);
         return out;
@@ -170,8 +171,7 @@ Manifest readJsonManifest(const std::string& path, std::istream& in) {
             row.problem = "expected an object with a \"file\"";
         } else {
             for (const auto& [key, value] : item.items()) {
-                if (std::find(kColumns.begin(), kColumns.end(), key) == kColumns.end())
-                    throw io::ParseError(path, 0, 0, "unknown key '" + key + "'");
+                if (!isColumn(key)) throw io::ParseError(path, 0, 0, "unknown key '" + key + "'");
                 named[key] = jsonText(key, value);
             }
             fillRow(row, named, folder);
@@ -182,6 +182,17 @@ Manifest readJsonManifest(const std::string& path, std::istream& in) {
 }
 
 }  // namespace
+
+const std::vector<std::string>& manifestColumns() {
+    static const std::vector<std::string> kColumns = [] {
+        std::vector<std::string> columns = {"file", "verb", "output"};
+        for (const WellOption& option : wellOptions())
+            if (!option.column.empty()) columns.push_back(option.column);
+        columns.emplace_back("options");
+        return columns;
+    }();
+    return kColumns;
+}
 
 const std::vector<std::string>& batchVerbs() {
     static const std::vector<std::string> kVerbs = {"info", "report", "render", "export"};

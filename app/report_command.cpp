@@ -238,7 +238,7 @@ InputSummary reportWell(const WellSource& well, const ReportSettings& settings,
 bool reportSettings(VerbParser& verb, ReportSettings& settings) {
     const QCommandLineParser& p = verb.parser();
     if (!applyRules(p, settings.analysis.rules)) return false;
-    rejectInapplicable(p, "report", {"exaggerate", "segment-length", "shape-tolerance"},
+    rejectInapplicable(p, "report", {OptionEffect::Picture},
                        "they shape the 3D picture, and the report measures the log");
     settings.load = inputOptionsFrom(p);
     settings.report.step_m = nonNegative(verb, "step");

@@ -36,6 +36,12 @@ struct RoleOverrides {
     std::vector<std::string> radii;
     std::vector<std::string> diameters;
 };
+inline bool operator==(const RoleOverrides& a, const RoleOverrides& b) {
+    return a.radii == b.radii && a.diameters == b.diameters;
+}
+inline bool operator!=(const RoleOverrides& a, const RoleOverrides& b) {
+    return !(a == b);
+}
 
 // Indices into a curve list, -1 when absent.
 struct CurveRoles {

@@ -39,5 +39,15 @@ struct ReadOptions {
     RoleOverrides roles;
     std::optional<double> bitSize_mm;  // overrides the file's BS
 };
+// Two wells read alike: the window compares the options its wells were opened with.
+inline bool operator==(const ReadOptions& a, const ReadOptions& b) {
+    return a.armCount == b.armCount && a.depthUnit == b.depthUnit && a.radiusUnit == b.radiusUnit &&
+           a.allowRadiiOnly == b.allowRadiiOnly && a.rowStep_m == b.rowStep_m &&
+           a.nullPolicy == b.nullPolicy && a.depthOrder == b.depthOrder && a.roles == b.roles &&
+           a.bitSize_mm == b.bitSize_mm;
+}
+inline bool operator!=(const ReadOptions& a, const ReadOptions& b) {
+    return !(a == b);
+}
 
 }  // namespace caliper3d::io

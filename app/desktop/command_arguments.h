@@ -9,14 +9,11 @@
 namespace caliper3d::app {
 
 // The window's wells turned back into the command line that loads them the same way, so a
-// child `caliper3d export` (or a recent file) reads them as the window did. Pure functions:
-// parseWellArguments(wellArguments(w, o)) gives back w and o.
+// child `caliper3d export` reads them as the window did: each option of the table
+// (app/well_option_table.h) that differs from its default, to full precision. Pure
+// functions: parseWellArguments(wellArguments(w, o)) gives back w and o.
 
-// The load options (addInputOptions, addColourOptions) as arguments: every option the
-// command line has, defaults included, numbers to full precision.
-QStringList loadOptionArguments(const LoadOptions& options);
-
-// loadOptionArguments, --survey and --wellhead once per file, then "--" and the files. Throws
+// The options, the PerWell ones once per file, then "--" and the files. Throws
 // std::invalid_argument when only some of the wells have a survey (or a wellhead): the
 // command line takes them for every file or for none.
 QStringList wellArguments(const std::vector<WellSource>& wells, const LoadOptions& options);

@@ -4,18 +4,46 @@
 
 #include <QMainWindow>
 #include <QSettings>
+#include <QStringList>
+#include <QVariantMap>
 
 namespace caliper3d::app {
 
 namespace {
 const char* const kRecent = "recentFiles";
 const char* const kPath = "path";
+const char* const kOptions = "options";
+// Earlier versions kept the command line that opened the file: "--NAME VALUE ... -- FILE".
 const char* const kArguments = "arguments";
 const char* const kLastFolder = "lastFolder";
 const char* const kGeometry = "window/geometry";
 const char* const kState = "window/state";
 // Bumped when the docks change so much that an old layout should not be restored.
 constexpr int kLayoutVersion = 1;
+
+OptionTexts fromMap(const QVariantMap& map) {
+    OptionTexts out;
+    for (auto it = map.begin(); it != map.end(); ++it)
+        out[it.key().toStdString()] = it.value().toString().toStdString();
+    return out;
+}
+
+QVariantMap toMap(const OptionTexts& options) {
+    QVariantMap out;
+    for (const auto& [name, text] : options)
+        out.insert(QString::fromStdString(name), QString::fromStdString(text));
+    return out;
+}
+
+// An earlier version's arguments as texts: the "--NAME VALUE" pairs before "--". A name the
+// table does not know is kept, so that opening it fails and the Open dialog is shown instead.
+OptionTexts fromArguments(const QStringList& arguments) {
+    OptionTexts out;
+    for (int i = 0;
+         i + 1 < arguments.size() && arguments[i].startsWith("--") && arguments[i] != "--"; i += 2)
+        out[arguments[i].mid(2).toStdString()] = arguments[i + 1].toStdString();
+    return out;
+}
 }  // namespace
 
 DeskSettings::DeskSettings() : m_settings(std::make_unique<QSettings>("caliper3d", "caliper3d")) {}
@@ -27,8 +55,10 @@ QList<DeskSettings::Recent> DeskSettings::recentFiles() const {
     const int size = m_settings->beginReadArray(kRecent);
     for (int i = 0; i < size && out.size() < kMaxRecent; ++i) {
         m_settings->setArrayIndex(i);
-        Recent recent{m_settings->value(kPath).toString(),
-                      m_settings->value(kArguments).toStringList()};
+        Recent recent{m_settings->value(kPath).toString(), {}};
+        recent.options = m_settings->contains(kOptions)
+                             ? fromMap(m_settings->value(kOptions).toMap())
+                             : fromArguments(m_settings->value(kArguments).toStringList());
         if (!recent.path.isEmpty()) out << recent;
     }
     m_settings->endArray();
@@ -41,7 +71,7 @@ void DeskSettings::writeRecent(const QList<Recent>& list) {
     for (int i = 0; i < list.size(); ++i) {
         m_settings->setArrayIndex(i);
         m_settings->setValue(kPath, list[i].path);
-        m_settings->setValue(kArguments, list[i].arguments);
+        m_settings->setValue(kOptions, toMap(list[i].options));
     }
     m_settings->endArray();
     m_settings->sync();

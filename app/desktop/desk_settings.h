@@ -4,7 +4,8 @@
 
 #include <QList>
 #include <QString>
-#include <QStringList>
+
+#include "app/well_option_table.h"
 
 class QMainWindow;
 class QSettings;
@@ -19,11 +20,11 @@ class DeskSettings {
 public:
     static constexpr int kMaxRecent = 10;
 
-    // A file opened, and the command-line arguments that load it as it was opened
-    // (OpenWellDialog's openArguments: options, "--", the file).
+    // A file opened, and the options it was opened with (the Open dialog's texts by option
+    // name, app/well_option_table.h).
     struct Recent {
         QString path;
-        QStringList arguments;
+        OptionTexts options;
     };
 
     DeskSettings();

@@ -126,7 +126,7 @@ bool FileMenu::openFile(const QString& path, bool add) {
         m_session.addWell(chosen.wells.front(), chosen.options);
     else
         m_session.openWell(chosen.wells.front(), chosen.options);
-    m_settings.addRecent({path, openArguments(dialog.choices())});
+    m_settings.addRecent({path, dialog.choices().options});
     m_settings.setLastFolder(QFileInfo(path).absolutePath());
     fillRecent();
     return true;
@@ -140,10 +140,7 @@ void FileMenu::openRecent(const DeskSettings::Recent& recent) {
         return;
     }
     try {
-        ParsedWells parsed = parseWellArguments(recent.arguments);
-        if (parsed.wells.size() != 1) throw UsageError("expected one file");
-        parsed.options.radialExaggeration = m_session.look().radialExaggeration;
-        parsed.options.colour = m_session.look().colour;
+        const ParsedWells parsed = openRequestFrom({recent.path, recent.options}, m_session.look());
         m_session.openWell(parsed.wells.front(), parsed.options);
         m_settings.addRecent(recent);
     } catch (const std::exception& e) {
@@ -192,8 +189,7 @@ bool FileMenu::exportTo(const QString& path) {
     const DeskModel& model = m_session.model();
     LoadOptions options = model.well(0).options;
     bool same = true;
-    for (int i = 1; i < model.wellCount(); ++i)
-        same = same && loadOptionArguments(model.well(i).options) == loadOptionArguments(options);
+    for (int i = 1; i < model.wellCount(); ++i) same = same && model.well(i).options == options;
     try {
         if (!same) throw std::invalid_argument("the wells were opened with different options");
         m_export = std::make_unique<ExportJob>(m_program, wells, options, path);

@@ -2,23 +2,12 @@
 
 namespace caliper3d::app {
 
-QStringList openArguments(const OpenChoices& choices) {
-    QStringList out{"--arms", QString::number(choices.arms)};
-    auto add = [&out](const char* option, const QString& value) {
-        if (!value.trimmed().isEmpty()) out << option << value.trimmed();
-    };
-    add("--radii", choices.radii);
-    add("--diameters", choices.diameters);
-    add("--depth-unit", choices.depthUnit);
-    add("--radius-unit", choices.radiusUnit);
-    add("--bit-size", choices.bitSize);
-    add("--survey", choices.survey);
-    add("--wellhead", choices.wellhead);
-    return out << "--" << choices.path;  // "--": a file named "-x" is a file
-}
-
 ParsedWells openRequestFrom(const OpenChoices& choices, const LoadOptions& look) {
-    ParsedWells out = parseWellArguments(openArguments(choices));
+    ParsedWells out;
+    WellSource well;
+    well.path = choices.path.toStdString();
+    applyOptionTexts(choices.options, well, out.options);
+    out.wells = {well};
     out.options.radialExaggeration = look.radialExaggeration;
     out.options.colour = look.colour;
     return out;

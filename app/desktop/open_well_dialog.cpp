@@ -41,13 +41,19 @@ QString bitSizeText(const io::LogInfo& info) {
     return one(info.bitSize_mm);
 }
 
-// A unit box: "the file's" first (no option), then the units the option takes.
-QComboBox* unitBox(const QStringList& units, const QString& chosen, QWidget* parent) {
-    auto* box = new QComboBox(parent);
-    box->addItem("the file's", QString());
-    for (const QString& unit : units) box->addItem(unit, unit);
-    box->setCurrentIndex(std::max(0, box->findData(chosen)));
-    return box;
+// The widget's objectName: the option's name in camelCase ("bit-size": "bitSize").
+QString objectNameOf(const WellOption& option) {
+    QString name;
+    bool upper = false;
+    for (const QChar c : QString(option.name)) {
+        if (c == '-') {
+            upper = true;
+            continue;
+        }
+        name += upper ? c.toUpper() : c;
+        upper = false;
+    }
+    return name;
 }
 
 }  // namespace
@@ -59,24 +65,27 @@ OpenWellDialog::OpenWellDialog(const QString& path, const LoadOptions& look, QWi
     resize(720, 680);
     buildDetected();
     buildForm();
-    const OpenChoices start = initial.value_or(OpenChoices{});
-    m_radii->setText(start.radii);
-    m_diameters->setText(start.diameters);
-    m_arms->setValue(start.arms);
-    m_depthUnit->setCurrentIndex(std::max(0, m_depthUnit->findData(start.depthUnit)));
-    m_radiusUnit->setCurrentIndex(std::max(0, m_radiusUnit->findData(start.radiusUnit)));
-    m_bitSize->setText(start.bitSize);
-    m_survey->setText(start.survey);
-    m_wellhead->setText(start.wellhead);
+    // A recent file's texts; one without a field here is kept for choices() as it was.
+    m_unshown = initial ? initial->options : OptionTexts();
+    for (const Field& field : m_fields) {
+        const auto given = m_unshown.find(field.option->name);
+        field.setText(given == m_unshown.end() ? QString() : QString::fromStdString(given->second));
+        if (given != m_unshown.end()) m_unshown.erase(given);
+    }
     m_again = new QTimer(this);
     m_again->setSingleShot(true);
     m_again->setInterval(kDescribeDelay_ms);
     connect(m_again, &QTimer::timeout, this, &OpenWellDialog::describe);
-    for (QLineEdit* edit : {m_radii, m_diameters, m_bitSize, m_survey, m_wellhead})
-        connect(edit, &QLineEdit::textEdited, m_again, qOverload<>(&QTimer::start));
-    for (QComboBox* box : {m_depthUnit, m_radiusUnit})
-        connect(box, qOverload<int>(&QComboBox::activated), m_again, qOverload<>(&QTimer::start));
-    connect(m_arms, qOverload<int>(&QSpinBox::valueChanged), m_again, qOverload<>(&QTimer::start));
+    for (const Field& field : m_fields) {
+        if (field.edit)
+            connect(field.edit, &QLineEdit::textEdited, m_again, qOverload<>(&QTimer::start));
+        if (field.box)
+            connect(field.box, qOverload<int>(&QComboBox::activated), m_again,
+                    qOverload<>(&QTimer::start));
+        if (field.spin)
+            connect(field.spin, qOverload<int>(&QSpinBox::valueChanged), m_again,
+                    qOverload<>(&QTimer::start));
+    }
     describe();
 }
 
@@ -108,48 +117,63 @@ void OpenWellDialog::buildDetected() {
     layout->addWidget(m_error);
 }
 
+QWidget* OpenWellDialog::Field::widget() const {
+    if (edit) return edit;
+    if (box) return box;
+    return spin;
+}
+
+QString OpenWellDialog::Field::text() const {
+    if (edit) return edit->text().trimmed();
+    if (box) return box->currentData().toString();
+    return QString::number(spin->value());
+}
+
+void OpenWellDialog::Field::setText(const QString& text) const {
+    if (edit) edit->setText(text);
+    if (box) box->setCurrentIndex(std::max(0, box->findData(text)));
+    // A count is never empty: its blank is the default it starts from.
+    if (spin)
+        spin->setValue(text.isEmpty() ? QString::fromStdString(option->blank).toInt()
+                                      : text.toInt());
+}
+
+// A field for each option of the table that names one, in the table's order.
 void OpenWellDialog::buildForm() {
     auto* form = new QFormLayout;
-    m_radii = new QLineEdit(this);
-    m_radii->setObjectName("radii");
-    m_radii->setToolTip(
-        "Curves holding the arm radii, in arm order (as --radii): R1,R2,... or "
-        "one LAS 3 array NAME[]; empty: detected");
-    form->addRow("Radius curves", m_radii);
-    m_diameters = new QLineEdit(this);
-    m_diameters->setObjectName("diameters");
-    m_diameters->setToolTip("Curves holding opposite-pad diameters (as --diameters): C1,C2");
-    form->addRow("Diameter curves", m_diameters);
-    m_arms = new QSpinBox(this);
-    m_arms->setObjectName("arms");
-    m_arms->setRange(io::kMinArms, io::kMaxArms);
-    m_arms->setToolTip("Radii per line of a column-text file (as --arms)");
-    form->addRow("Arms (column text)", m_arms);
-    m_depthUnit = unitBox({"m", "ft"}, QString(), this);
-    m_depthUnit->setObjectName("depthUnit");
-    form->addRow("Depth unit", m_depthUnit);
-    m_radiusUnit = unitBox({"in", "mm", "cm"}, QString(), this);
-    m_radiusUnit->setObjectName("radiusUnit");
-    form->addRow("Radius unit", m_radiusUnit);
-    m_bitSize = new QLineEdit(this);
-    m_bitSize->setObjectName("bitSize");
-    m_bitSize->setToolTip(
-        "Overrides the log's bit size: 8.5in, 215.9mm (a bare number is "
-        "inches); empty: the log's own");
-    form->addRow("Bit size", m_bitSize);
-    auto* survey = new QHBoxLayout;
-    m_survey = new QLineEdit(this);
-    m_survey->setObjectName("survey");
-    m_survey->setPlaceholderText("none: the path from the log's DEVI/HAZI");
-    auto* browse = new QPushButton("Browse...", this);
-    connect(browse, &QPushButton::clicked, this, &OpenWellDialog::browseSurvey);
-    survey->addWidget(m_survey, 1);
-    survey->addWidget(browse);
-    form->addRow("Survey", survey);
-    m_wellhead = new QLineEdit(this);
-    m_wellhead->setObjectName("wellhead");
-    m_wellhead->setPlaceholderText("E,N,ELEV in metres, e.g. 512300,6801200,25.5 (none: origin)");
-    form->addRow("Wellhead", m_wellhead);
+    for (const WellOption& option : wellOptions()) {
+        if (option.field.empty()) continue;
+        Field field;
+        field.option = &option;
+        const QString blank = QString::fromStdString(option.blank);
+        if (option.value == OptionValue::Choice) {
+            field.box = new QComboBox(this);
+            field.box->addItem(blank, QString());
+            for (const std::string& choice : option.choices)
+                field.box->addItem(QString::fromStdString(choice), QString::fromStdString(choice));
+        } else if (option.value == OptionValue::Count) {
+            field.spin = new QSpinBox(this);
+            field.spin->setRange(option.minCount, option.maxCount);
+        } else {
+            field.edit = new QLineEdit(this);
+            field.edit->setPlaceholderText(blank);
+        }
+        QWidget* widget = field.widget();
+        widget->setObjectName(objectNameOf(option));
+        widget->setToolTip(QString("%1 (as --%2)").arg(option.help, option.name));
+        const QString label = QString::fromStdString(option.field);
+        if (option.value == OptionValue::Path) {
+            auto* row = new QHBoxLayout;
+            auto* browse = new QPushButton("Browse...", this);
+            connect(browse, &QPushButton::clicked, this, [this, field] { this->browse(field); });
+            row->addWidget(widget, 1);
+            row->addWidget(browse);
+            form->addRow(label, row);
+        } else {
+            form->addRow(label, widget);
+        }
+        m_fields.push_back(field);
+    }
     auto* layout = static_cast<QVBoxLayout*>(this->layout());
     layout->addLayout(form);
     m_buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
@@ -162,16 +186,11 @@ void OpenWellDialog::buildForm() {
 }
 
 OpenChoices OpenWellDialog::choices() const {
-    OpenChoices c;
-    c.path = m_path;
-    c.radii = m_radii->text().trimmed();
-    c.diameters = m_diameters->text().trimmed();
-    c.arms = m_arms->value();
-    c.depthUnit = m_depthUnit->currentData().toString();
-    c.radiusUnit = m_radiusUnit->currentData().toString();
-    c.bitSize = m_bitSize->text().trimmed();
-    c.survey = m_survey->text().trimmed();
-    c.wellhead = m_wellhead->text().trimmed();
+    OpenChoices c{m_path, m_unshown};
+    for (const Field& field : m_fields) {
+        const QString text = field.text();
+        if (!text.isEmpty()) c.options[field.option->name] = text.toStdString();
+    }
     return c;
 }
 
@@ -179,10 +198,15 @@ void OpenWellDialog::describe() {
     m_again->stop();
     m_info.reset();
     try {
-        const OpenChoices chosen = choices();
-        m_request = openRequestFrom(chosen, m_look);
-        if (!chosen.survey.isEmpty() && !QFileInfo(chosen.survey).isFile())
-            throw std::runtime_error(chosen.survey.toStdString() + ": no such survey file");
+        m_request = openRequestFrom(choices(), m_look);
+        // A file named in a field is checked here, before the log is read.
+        for (const Field& field : m_fields)
+            if (field.option->value == OptionValue::Path && !field.text().isEmpty() &&
+                !QFileInfo(field.text()).isFile())
+                throw std::runtime_error((field.text() + ": no such " +
+                                          QString::fromStdString(field.option->field).toLower() +
+                                          " file")
+                                             .toStdString());
         // The log as read with these options, but its own bit size: the override is shown in
         // its field, the log's beside it.
         io::ReadOptions read = m_request.options.read;
@@ -232,12 +256,13 @@ void OpenWellDialog::showInfo() {
         summary += QString("<br>&nbsp;&nbsp;... and %1 more")
                        .arg(info.diagnostics.warningCount - kWarningsShown);
     m_summary->setText(summary);
-    m_radii->setPlaceholderText("detected: " + text(info.armSource));
-    // The arm count is read from column text only; a LAS names its curves.
-    m_arms->setEnabled(info.format.rfind("LAS", 0) != 0);
-    m_bitSize->setPlaceholderText(std::isfinite(info.bitSize_mm)
-                                      ? "the log's: " + bitSizeText(info)
-                                      : "none in the log: e.g. 8.5in or 215.9mm");
+    for (const Field& field : m_fields) {
+        // The arm count is read from column text only; a LAS names its curves.
+        if (field.option->columnTextOnly)
+            field.widget()->setEnabled(info.format.rfind("LAS", 0) != 0);
+        if (field.edit && field.option->blankFor)
+            field.edit->setPlaceholderText(QString::fromStdString(field.option->blankFor(info)));
+    }
     m_curves->setRowCount(static_cast<int>(info.curves.size()));
     for (std::size_t i = 0; i < info.curves.size(); ++i) {
         const io::CurveInfo& c = info.curves[i];
@@ -267,12 +292,12 @@ bool OpenWellDialog::acceptable() const {
     return m_buttons->button(QDialogButtonBox::Ok)->isEnabled();
 }
 
-void OpenWellDialog::browseSurvey() {
-    const QString path =
-        QFileDialog::getOpenFileName(this, "Deviation survey", QFileInfo(m_path).absolutePath(),
-                                     "Surveys (*.txt *.csv *.las *.LAS *.dat);;All files (*)");
+void OpenWellDialog::browse(const Field& field) {
+    const QString path = QFileDialog::getOpenFileName(
+        this, QString::fromStdString(field.option->field), QFileInfo(m_path).absolutePath(),
+        "Surveys (*.txt *.csv *.las *.LAS *.dat);;All files (*)");
     if (path.isEmpty()) return;
-    m_survey->setText(path);
+    field.setText(path);
     describe();
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include <QDialog>
 
@@ -19,7 +20,8 @@ namespace caliper3d::app {
 
 // File > Open and Add: what `caliper3d info` detects in a file (format, rows, depth range,
 // arms, each curve and its role, units, the log's bit size, the well's name), and the
-// options a user may set for it (curve roles, units, bit size, survey, wellhead), which map to
+// options a user may set for it: a field for each option of the table that names one
+// (app/well_option_table.h: curve roles, units, bit size, survey, wellhead), which map to
 // the well's load options through openRequestFrom. The file is described again with the
 // options as they change, so a wrong curve name or unit shows here, with OK disabled, and not
 // as a failed load. A file that cannot be read shows its file, line and reason.
@@ -46,11 +48,22 @@ public:
     void describe();
 
 private:
+    // One option's widget: a line edit, a combo box (Choice) or a spin box (Count).
+    struct Field {
+        const WellOption* option = nullptr;
+        QLineEdit* edit = nullptr;
+        QComboBox* box = nullptr;
+        QSpinBox* spin = nullptr;
+        QWidget* widget() const;
+        QString text() const;
+        void setText(const QString& text) const;
+    };
+
     void buildForm();
     void buildDetected();
     void showInfo();
     void showError(const QString& message);
-    void browseSurvey();
+    void browse(const Field& field);
 
     QString m_path;
     LoadOptions m_look;
@@ -59,14 +72,8 @@ private:
     QLabel* m_summary = nullptr;
     QTableWidget* m_curves = nullptr;
     QLabel* m_error = nullptr;
-    QLineEdit* m_radii = nullptr;
-    QLineEdit* m_diameters = nullptr;
-    QSpinBox* m_arms = nullptr;
-    QComboBox* m_depthUnit = nullptr;
-    QComboBox* m_radiusUnit = nullptr;
-    QLineEdit* m_bitSize = nullptr;
-    QLineEdit* m_survey = nullptr;
-    QLineEdit* m_wellhead = nullptr;
+    std::vector<Field> m_fields;
+    OptionTexts m_unshown;  // options of the initial choices without a field here, kept
     QDialogButtonBox* m_buttons = nullptr;
     QTimer* m_again = nullptr;  // describes the file again once the edits pause
 };

@@ -18,6 +18,12 @@ struct ColourRequest {
     std::string quantity = "departure";
     std::optional<std::pair<double, double>> range;
 };
+inline bool operator==(const ColourRequest& a, const ColourRequest& b) {
+    return a.quantity == b.quantity && a.range == b.range;
+}
+inline bool operator!=(const ColourRequest& a, const ColourRequest& b) {
+    return !(a == b);
+}
 
 // The report's per-section values a colouring may need, kept compact (three floats a row
 // instead of the whole analysis), so a window computes them once and recolours from them.

@@ -51,6 +51,16 @@ GeometryOptions wellGeometryOptions(const WellSource& source, const LoadOptions&
     return geometry;
 }
 
+bool operator==(const LoadOptions& a, const LoadOptions& b) {
+    return a.read == b.read && a.splinePoints == b.splinePoints &&
+           a.segmentLength_m == b.segmentLength_m && a.shapeTolerance_mm == b.shapeTolerance_mm &&
+           a.radialExaggeration == b.radialExaggeration && a.colour == b.colour &&
+           a.steepInclination_deg == b.steepInclination_deg && a.toolReach_mm == b.toolReach_mm &&
+           a.minValidArmFraction == b.minValidArmFraction &&
+           a.geometryWarnings == b.geometryWarnings && a.cancel == b.cancel &&
+           a.readThreads == b.readThreads;
+}
+
 LoadedWell loadWell(const WellSource& source, const LoadOptions& options, const Wellhead& origin) {
     LoadedWell out;
     const GeometryOptions geometry = wellGeometryOptions(source, options, origin, &out.diagnostics);

@@ -26,6 +26,12 @@ struct WellSource {
     std::string surveyPath;  // empty: the path comes from the log's own DEVI/HAZI
     std::optional<Wellhead> wellhead;
 };
+inline bool operator==(const WellSource& a, const WellSource& b) {
+    return a.path == b.path && a.surveyPath == b.surveyPath && a.wellhead == b.wellhead;
+}
+inline bool operator!=(const WellSource& a, const WellSource& b) {
+    return !(a == b);
+}
 
 // How a well is read and reconstructed: the reader's options and the geometry
 // settings every verb and the window share (design section 8, "common").
@@ -53,6 +59,12 @@ struct LoadOptions {
     // read at once, each in its own process (caliper3d batch -j 2).
     int readThreads = 2;
 };
+// Every field, the cancel token by identity: two wells loaded alike compare equal, so the
+// window can tell whether its wells share one set of options without formatting them.
+bool operator==(const LoadOptions& a, const LoadOptions& b);
+inline bool operator!=(const LoadOptions& a, const LoadOptions& b) {
+    return !(a == b);
+}
 
 // A loaded well: its table, its geometry (path and frames; segments are built
 // on demand), and every warning met on the way, in order: the survey's (and

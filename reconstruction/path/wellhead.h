@@ -12,6 +12,13 @@ struct Wellhead {
     double northing_m = 0.0;
     double elevation_m = 0.0;
 };
+inline bool operator==(const Wellhead& a, const Wellhead& b) {
+    return a.easting_m == b.easting_m && a.northing_m == b.northing_m &&
+           a.elevation_m == b.elevation_m;
+}
+inline bool operator!=(const Wellhead& a, const Wellhead& b) {
+    return !(a == b);
+}
 
 // Offset of `well` from the scene origin `origin` (the first wellhead) in the
 // analysis frame: north, east, and down (a higher wellhead has a negative

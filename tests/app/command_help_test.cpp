@@ -6,6 +6,7 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include "app/well_option_table.h"
 #include "cli_run.h"
 #include "test_support.h"
 
@@ -64,6 +65,21 @@ std::filesystem::path exampleLog() {
 }
 
 }  // namespace
+
+TEST(CommandHelpTest, EveryOptionOfTheTableIsInTheHelpOfEachVerbThatTakesIt) {
+    for (const std::string verb : {"view", "info", "export", "render", "report"}) {
+        const CommandRun help = stdoutOf("help " + verb);
+        ASSERT_EQ(help.status, 0) << help.output;
+        for (const caliper3d::app::WellOption& option : caliper3d::app::wellOptions()) {
+            const std::string listed =
+                std::string("--") + option.name + " <" + option.valueName + ">";
+            EXPECT_EQ(help.output.find(listed) != std::string::npos,
+                      caliper3d::app::takes(verb, option.group))
+                << verb << " " << listed << "\n"
+                << help.output;
+        }
+    }
+}
 
 TEST(CommandHelpTest, HelpAloneAndHelpOfAnUnknownVerb) {
     const CommandRun usage = stdoutOf("help");

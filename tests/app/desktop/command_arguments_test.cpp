@@ -68,6 +68,17 @@ TEST(CommandArgumentsTest, WellsAndOptionsRoundTripThroughTheCommandLineParser) 
     ASSERT_TRUE(b.colour.range);
     EXPECT_EQ(b.colour.range->first, o.colour.range->first);
     EXPECT_EQ(b.colour.range->second, o.colour.range->second);
+    EXPECT_TRUE(b == o) << "the options compare equal by value";
+    EXPECT_EQ(back.wells, wells);
+}
+
+TEST(CommandArgumentsTest, DefaultOptionsAreLeftOffTheCommandLine) {
+    const QStringList args = app::wellArguments({{"w.las", "", {}}}, {});
+    EXPECT_EQ(args, (QStringList{"--", "w.las"}));
+    app::LoadOptions o;
+    o.read.bitSize_mm = 215.9;
+    EXPECT_EQ(app::wellArguments({{"w.las", "", {}}}, o),
+              (QStringList{"--bit-size", "215.9mm", "--", "w.las"}));
 }
 
 TEST(CommandArgumentsTest, DefaultsRoundTripWithoutOptionalValues) {

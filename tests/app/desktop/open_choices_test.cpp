@@ -38,13 +38,13 @@ TEST(OpenChoicesTest, TakesOnlyTheLookFromTheWellsShown) {
 TEST(OpenChoicesTest, GivesTheChosenOptions) {
     app::OpenChoices choices;
     choices.path = "/data/w.txt";
-    choices.radii = " RAD1, RAD2 ,RAD3 ";
-    choices.depthUnit = "ft";
-    choices.radiusUnit = "mm";
-    choices.bitSize = "6.125in";
-    choices.arms = 3;
-    choices.survey = "/data/w-survey.csv";
-    choices.wellhead = "512300,6801200,25.5";
+    choices.options = {{"radii", " RAD1, RAD2 ,RAD3 "},
+                       {"depth-unit", "ft"},
+                       {"radius-unit", "mm"},
+                       {"bit-size", "6.125in"},
+                       {"arms", "3"},
+                       {"survey", "/data/w-survey.csv"},
+                       {"wellhead", "512300,6801200,25.5"}};
     const app::ParsedWells r = app::openRequestFrom(choices, exampleLook());
     EXPECT_EQ(r.options.read.roles.radii, (std::vector<std::string>{"RAD1", "RAD2", "RAD3"}));
     EXPECT_EQ(r.options.read.depthUnit, io::LengthUnit::Foot);
@@ -62,18 +62,20 @@ TEST(OpenChoicesTest, GivesTheChosenOptions) {
 TEST(OpenChoicesTest, MalformedChoicesFailWithTheCommandLinesMessage) {
     app::OpenChoices choices;
     choices.path = "w.las";
-    choices.bitSize = "eight";
+    choices.options["bit-size"] = "eight";
     try {
         app::openRequestFrom(choices, {});
         FAIL() << "no error";
     } catch (const app::UsageError& e) {
         EXPECT_NE(std::string(e.what()).find("--bit-size"), std::string::npos) << e.what();
     }
-    choices.bitSize.clear();
-    choices.wellhead = "1,2";
+    choices.options["bit-size"].clear();
+    choices.options["wellhead"] = "1,2";
     EXPECT_THROW(app::openRequestFrom(choices, {}), app::UsageError);
-    choices.wellhead.clear();
-    choices.radii = "ONLYONE";
+    choices.options["wellhead"].clear();
+    choices.options["radii"] = "ONLYONE";
+    EXPECT_THROW(app::openRequestFrom(choices, {}), app::UsageError);
+    choices.options = {{"no-such-option", "1"}};
     EXPECT_THROW(app::openRequestFrom(choices, {}), app::UsageError);
 }
 

@@ -95,7 +95,8 @@ TEST(OpenWellDialogTest, PrefillsALasFilesOwnBitSizeAndNameAndMapsAnOverride) {
     EXPECT_NEAR(*dialog.request().options.read.bitSize_mm, 165.1, 1e-9);
     EXPECT_EQ(dialog.request().options.read.radiusUnit, io::LengthUnit::Millimetre);
     EXPECT_NEAR(dialog.info()->bitSize_mm, 156.0, 1e-9) << "the log's, shown beside the override";
-    EXPECT_EQ(dialog.choices().bitSize, "6.5in");
+    EXPECT_EQ(dialog.choices().options.at("bit-size"), "6.5in");
+    EXPECT_EQ(dialog.choices().options.at("radius-unit"), "mm");
 }
 
 TEST(OpenWellDialogTest, ACurveThatIsNotThereDisablesOkAndSaysWhich) {
@@ -154,4 +155,22 @@ TEST(OpenWellDialogTest, PrefillsTheRealStarLog) {
     EXPECT_EQ(dialog.info()->arms, 6);
     EXPECT_NEAR(dialog.info()->bitSize_mm, 156.0, 0.05);
     EXPECT_FALSE(dialog.request().options.read.bitSize_mm) << "the example's 8.5 in came in";
+}
+
+TEST(OpenWellDialogTest, StartsFromARecentFilesChoicesAndGivesThemBack) {
+    CALIPER3D_REQUIRE_GUI();
+    const auto path = test::scratch("dialog_recent.txt");
+    io::writeColumnTextFile(path.string(), syntheticTable(io::kNaN));
+    const QString file = QString::fromStdString(path.string());
+    const app::OpenChoices recent{
+        file, {{"bit-size", "6.5in"}, {"depth-unit", "ft"}, {"arms", "6"}, {"nulls", "declared"}}};
+    app::OpenWellDialog dialog(file, {}, nullptr, recent);
+    EXPECT_EQ(dialog.findChild<QLineEdit*>("bitSize")->text(), "6.5in");
+    EXPECT_EQ(dialog.findChild<QComboBox*>("depthUnit")->currentData().toString(), "ft");
+    EXPECT_EQ(dialog.findChild<QComboBox*>("radiusUnit")->currentData().toString(), "");
+    // Every field the table gives the dialog, and an option without a field kept as it was.
+    EXPECT_EQ(dialog.choices().options, recent.options);
+    ASSERT_TRUE(dialog.request().options.read.bitSize_mm);
+    EXPECT_NEAR(*dialog.request().options.read.bitSize_mm, 165.1, 1e-9);
+    EXPECT_EQ(dialog.request().options.read.nullPolicy, io::NullPolicy::Declared);
 }
