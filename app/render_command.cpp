@@ -175,7 +175,7 @@ int renderPicture(const std::vector<WellSource>& sources, const RenderSettings& 
         request.tickMarks = false;
         char eye[64];
         std::snprintf(eye, sizeof eye, "eye at MD %.2f m", at);
-        request.caption.push_back(eye);
+        request.caption.emplace_back(eye);
     } else {
         request.view = *r.view;
         // The path above each log is part of the picture when it shows the whole well.

@@ -275,6 +275,7 @@ QString WellSession::warningsText() const {
 
 std::vector<WellSource> WellSession::wellSources() const {
     std::vector<WellSource> out;
+    out.reserve(static_cast<std::size_t>(m_model.wellCount()));
     for (int i = 0; i < m_model.wellCount(); ++i) out.push_back(m_model.well(i).source);
     return out;
 }
