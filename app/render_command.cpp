@@ -181,9 +181,11 @@ int renderPicture(const std::vector<WellSource>& sources, const RenderSettings& 
         // The path above each log is part of the picture when it shows the whole well.
         request.unloggedPath = !plan.depth;
     }
-    const scenegraph::Picture picture = scenegraph::drawPicture(scene.pictureWells(), request);
-    const double firstPicture_ms =
+    const double beforePicture_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const scenegraph::Picture picture = scenegraph::drawPicture(scene.pictureWells(), request);
+    // Up to the first picture read back: the frames timed for --stats come after it.
+    const double firstPicture_ms = beforePicture_ms + picture.render_ms;
     scenegraph::writePng(picture.image, out);
     if (r.stats)
         std::printf(

@@ -70,7 +70,7 @@ struct Picture {
     NodeRef<SoSeparator> root;
     std::unique_ptr<ViewOverlay> overlay;  // lives as long as the root it is drawn in
     std::size_t refinedSegments = 0;       // finer levels built for this camera
-    double render_ms = 0.0;                // the first frame, read back
+    double render_ms = 0.0;  // from the call to the first frame read back (scene, detail, draw)
     // With PictureRequest::stats: the mean of 5 frames drawn after it, and the triangles drawn.
     double frame_ms = std::numeric_limits<double>::quiet_NaN();
     std::size_t trianglesDrawn = 0;
