@@ -67,6 +67,31 @@ void aimCamera(SoCamera* camera, ViewDirection view, const SbVec3f& centre) {
     camera->pointAt(centre, up);
 }
 
+namespace {
+
+// A light shining along `camera`'s view, like the examiner viewer's headlight.
+SoDirectionalLight* headlight(const SoCamera& camera) {
+    SbVec3f look;
+    camera.orientation.getValue().multVec(SbVec3f(0.0f, 0.0f, -1.0f), look);
+    look.normalize();
+    auto* light = new SoDirectionalLight;
+    light->direction = look;
+    return light;
+}
+
+}  // namespace
+
+SoSeparator* makeRenderRoot(SoNode* scene, const SoCamera& camera, int width, int height) {
+    assertMainThread("makeRenderRoot");
+    auto* root = new SoSeparator;
+    auto* copy = static_cast<SoCamera*>(camera.copy());
+    copy->aspectRatio = static_cast<float>(width) / static_cast<float>(height);
+    root->addChild(copy);
+    root->addChild(headlight(*copy));
+    root->addChild(scene);
+    return root;
+}
+
 SoSeparator* makeRenderRoot(SoNode* scene, ViewDirection view, int width, int height) {
     assertMainThread("makeRenderRoot");
     const SbViewportRegion viewport(static_cast<short>(width), static_cast<short>(height));
@@ -78,14 +103,11 @@ SoSeparator* makeRenderRoot(SoNode* scene, ViewDirection view, int width, int he
     auto* root = new SoSeparator;
     auto* camera = new SoPerspectiveCamera;
     aimCamera(camera, view, centre);
-    // A light shining along the view, like the viewer's headlight.
     SbVec3f look;
     camera->orientation.getValue().multVec(SbVec3f(0.0f, 0.0f, -1.0f), look);
     look.normalize();
-    auto* light = new SoDirectionalLight;
-    light->direction = look;
     root->addChild(camera);
-    root->addChild(light);
+    root->addChild(headlight(*camera));
     root->addChild(scene);
     // Back off until every corner of the bounding box is inside the view
     // frustum: tighter than SoCamera::viewAll's bounding sphere for a long, thin

@@ -41,6 +41,9 @@ void frameFrom(SoCamera* camera, SoNode* root, const SbViewportRegion& viewport,
 // A root ready to render: perspective camera framing `scene` from `view`
 // for the given aspect ratio, a light from the camera, then the scene.
 SoSeparator* makeRenderRoot(SoNode* scene, ViewDirection view, int width, int height);
+// A viewer's camera seen by a picture of another shape: a copy of `camera` with the picture's
+// aspect (a viewer keeps its camera's aspect to its window), its headlight, then the scene.
+SoSeparator* makeRenderRoot(SoNode* scene, const SoCamera& camera, int width, int height);
 
 // The scene's background, on screen and in pictures (RGB, 0-1); the fog fades into it.
 constexpr float kBackgroundColour[3] = {0.11f, 0.13f, 0.17f};

@@ -5,7 +5,6 @@
 
 #include <glm/vec3.hpp>
 
-#include <Inventor/nodes/SoDirectionalLight.h>
 #include <Inventor/nodes/SoPerspectiveCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
 
@@ -21,23 +20,6 @@
 namespace caliper3d::scenegraph {
 
 namespace {
-
-// A viewer's camera seen by a picture of another shape: a copy with the picture's aspect
-// (the viewer keeps the camera's aspect to its window), and the examiner viewer's headlight.
-SoSeparator* makeRenderRoot(SoNode* scene, const SoCamera& camera, int width, int height) {
-    auto* root = new SoSeparator;
-    auto* copy = static_cast<SoCamera*>(camera.copy());
-    copy->aspectRatio = static_cast<float>(width) / static_cast<float>(height);
-    root->addChild(copy);
-    SbVec3f look;
-    copy->orientation.getValue().multVec(SbVec3f(0.0f, 0.0f, -1.0f), look);
-    look.normalize();
-    auto* light = new SoDirectionalLight;
-    light->direction = look;
-    root->addChild(light);
-    root->addChild(scene);
-    return root;
-}
 
 double msSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
