@@ -22,6 +22,14 @@ inline std::filesystem::path scratch(const std::string& name) {
     return dir / name;
 }
 
+// An empty scratch folder of its own (what a test left there before is removed).
+inline std::filesystem::path freshScratchFolder(const std::string& name) {
+    const std::filesystem::path dir = scratch(name);
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
 }  // namespace caliper3d::test
 
 // Skips the current test when a reference data file is absent.

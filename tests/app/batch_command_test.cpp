@@ -20,14 +20,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A fresh scratch folder for one test.
-fs::path freshFolder(const std::string& name) {
-    const fs::path dir = scratch(name);
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
-}
-
 std::string synth(const fs::path& file, const std::string& profile, double length = 100.0) {
     const CommandRun r = runCaliper3d("synth -o " + file.string() + " --profile " + profile +
                                       " --length " + std::to_string(length) + " --step 0.1");
@@ -80,7 +72,7 @@ fs::path badLineLog(const fs::path& dir) {
 }  // namespace
 
 TEST(BatchCommandTest, RunsTheGoodRowsAndGivesEachBadRowItsReason) {
-    const fs::path dir = freshFolder("batch_bad_rows");
+    const fs::path dir = caliper3d::test::freshScratchFolder("batch_bad_rows");
     synth(dir / "A.las", "example");
     synth(dir / "B.txt", "keyseat");
     badLineLog(dir);
@@ -119,7 +111,7 @@ TEST(BatchCommandTest, RunsTheGoodRowsAndGivesEachBadRowItsReason) {
 
 TEST(BatchCommandTest, SummaryLinesHoldTheReportsNumbers) {
     // The example profile over 100 m: a breakout at 20-26.7 m and a washout at 50-53.3 m.
-    const fs::path dir = freshFolder("batch_numbers");
+    const fs::path dir = caliper3d::test::freshScratchFolder("batch_numbers");
     synth(dir / "E.las", "example");
     writeText(dir / "m.json",
               "{\"wells\": [{\"file\": \"E.las\", \"verb\": [\"report\"], \"wellhead\": [0, 0, "
@@ -153,7 +145,7 @@ TEST(BatchCommandTest, SummaryLinesHoldTheReportsNumbers) {
 TEST(BatchCommandTest, AJsonManifestThatIsNotAManifestIsRefusedNamingIt) {
     // A number too large for a double is JSON's out_of_range, not a syntax error (found by
     // fuzz_batch_manifest): refused with the manifest's name like any bad JSON.
-    const fs::path dir = freshFolder("batch_bad_json");
+    const fs::path dir = caliper3d::test::freshScratchFolder("batch_bad_json");
     writeText(dir / "m.json", "{\"wells\": [{\"file\": \"a.las\", \"bit_size\": 1e99999}]}");
     const CommandRun r =
         runCaliper3d("batch " + (dir / "m.json").string() + " -o " + (dir / "out").string() + "/");
@@ -164,7 +156,7 @@ TEST(BatchCommandTest, AJsonManifestThatIsNotAManifestIsRefusedNamingIt) {
 }
 
 TEST(BatchCommandTest, RowRunsOnlyThatRowCountedFromZero) {
-    const fs::path dir = freshFolder("batch_row");
+    const fs::path dir = caliper3d::test::freshScratchFolder("batch_row");
     const CommandRun field = runCaliper3d("synth --field 3 --length 50 -o " + dir.string() + "/");
     ASSERT_EQ(field.status, 0) << field.output;
     const std::string manifest = (dir / "manifest.csv").string();
@@ -183,7 +175,7 @@ TEST(BatchCommandTest, RowRunsOnlyThatRowCountedFromZero) {
 }
 
 TEST(BatchCommandTest, RowRangeRunsThatBlockAndStopsAtTheManifestsEnd) {
-    const fs::path dir = freshFolder("batch_row_range");
+    const fs::path dir = caliper3d::test::freshScratchFolder("batch_row_range");
     ASSERT_EQ(runCaliper3d("synth --field 5 --length 30 -o " + dir.string() + "/").status, 0);
     const std::string manifest = (dir / "manifest.csv").string();
     // Rows 3 to 9 of 5: a cluster array's last block of 7 rows, cut at the last row.
@@ -203,7 +195,7 @@ TEST(BatchCommandTest, RowRangeRunsThatBlockAndStopsAtTheManifestsEnd) {
 }
 
 TEST(BatchCommandTest, TwoJobsGiveTheSameOutputsAsOne) {
-    const fs::path dir = freshFolder("batch_jobs");
+    const fs::path dir = caliper3d::test::freshScratchFolder("batch_jobs");
     ASSERT_EQ(runCaliper3d("synth --field 6 --length 60 -o " + dir.string() + "/").status, 0);
     const std::string manifest = (dir / "manifest.csv").string();
     for (const char* jobs : {"1", "2"}) {
@@ -227,7 +219,7 @@ TEST(BatchCommandTest, TwoJobsGiveTheSameOutputsAsOne) {
 }
 
 TEST(BatchCommandTest, MergeConcatenatesTheSummariesInRowOrder) {
-    const fs::path dir = freshFolder("batch_merge");
+    const fs::path dir = caliper3d::test::freshScratchFolder("batch_merge");
     ASSERT_EQ(runCaliper3d("synth --field 3 --length 50 -o " + dir.string() + "/").status, 0);
     const std::string manifest = (dir / "manifest.csv").string();
     std::string parts;
@@ -255,7 +247,7 @@ TEST(BatchCommandTest, MergeConcatenatesTheSummariesInRowOrder) {
 }
 
 TEST(BatchCommandTest, ProgressIsSilentWhenStderrIsNotATerminal) {
-    const fs::path dir = freshFolder("batch_progress");
+    const fs::path dir = caliper3d::test::freshScratchFolder("batch_progress");
     ASSERT_EQ(runCaliper3d("synth --field 2 --length 30 -o " + dir.string() + "/").status, 0);
     const std::string args =
         "batch " + (dir / "manifest.csv").string() + " -o " + (dir / "out").string() + "/";
@@ -277,7 +269,7 @@ TEST(BatchCommandTest, ProgressIsSilentWhenStderrIsNotATerminal) {
 }
 
 TEST(ManyInputsTest, ReportWritesOneReportPerFileWhereTheFolderOrPatternSays) {
-    const fs::path dir = freshFolder("many_report");
+    const fs::path dir = caliper3d::test::freshScratchFolder("many_report");
     const std::string a = synth(dir / "A.las", "example");
     const std::string b = synth(dir / "B.txt", "washout");
     const CommandRun folder = runCaliper3d("report " + a + " " + b + " -o " + (dir / "f").string() +
@@ -299,7 +291,7 @@ TEST(ManyInputsTest, ReportWritesOneReportPerFileWhereTheFolderOrPatternSays) {
 }
 
 TEST(ManyInputsTest, ExportWritesOneFilePerInputOrOneSceneForAll) {
-    const fs::path dir = freshFolder("many_export");
+    const fs::path dir = caliper3d::test::freshScratchFolder("many_export");
     const std::string a = synth(dir / "A.las", "example", 30.0);
     const std::string b = synth(dir / "B.txt", "circle", 30.0);
     const CommandRun each = runCaliper3d("export " + a + " " + b + " -o " + (dir / "e").string() +
@@ -322,7 +314,7 @@ TEST(ManyInputsTest, ExportWritesOneFilePerInputOrOneSceneForAll) {
 }
 
 TEST(ManyInputsTest, RenderDrawsOnePicturePerInputWithAPattern) {
-    const fs::path dir = freshFolder("many_render");
+    const fs::path dir = caliper3d::test::freshScratchFolder("many_render");
     const std::string a = synth(dir / "A.las", "example", 30.0);
     const std::string b = synth(dir / "B.txt", "circle", 30.0);
     const CommandRun r = runCaliper3d("render " + a + " " + b + " -o '" + (dir / "p").string() +
@@ -339,7 +331,7 @@ TEST(ManyInputsTest, RenderDrawsOnePicturePerInputWithAPattern) {
 }
 
 TEST(ManyInputsTest, InfoSummaryGivesRowsAndDepthsAndTheReadersReason) {
-    const fs::path dir = freshFolder("many_info");
+    const fs::path dir = caliper3d::test::freshScratchFolder("many_info");
     const std::string a = synth(dir / "A.las", "example", 30.0);
     const fs::path bad = badLineLog(dir);
     const CommandRun r =

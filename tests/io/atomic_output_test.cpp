@@ -25,10 +25,7 @@ namespace {
 
 // A folder of its own for each test, so that "no temporary left" can look at all of it.
 fs::path freshFolder(const std::string& name) {
-    const fs::path folder = caliper3d::test::scratch("atomic_output") / name;
-    fs::remove_all(folder);
-    fs::create_directories(folder);
-    return folder;
+    return caliper3d::test::freshScratchFolder("atomic_output/" + name);
 }
 
 std::string readText(const fs::path& file) {
