@@ -49,7 +49,16 @@ int runInfo(const QStringList& args) {
                 summary.top_m = info.top_m;
                 summary.bottom_m = info.bottom_m;
                 summary.addWarnings(info.diagnostics);
-                if (!info.survey) {
+                if (!info.survey && info.arms == 0) {
+                    // Described, but no verb can draw it: say why and fail.
+                    ++failures;
+                    const std::string why =
+                        "no caliper curve recognised: name the curves with --radii or "
+                        "--diameters";
+                    std::printf("caliper:   none recognised\n");
+                    std::fprintf(stderr, "caliper3d info: %s: %s\n", file.c_str(), why.c_str());
+                    summary.error = InputError{file, 0, why};
+                } else if (!info.survey) {
                     std::printf(
                         "caliper:   %zu of %zu sections measured (at least %d of %d arms valid)\n",
                         measured, info.rows, needed, arms);

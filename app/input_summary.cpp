@@ -1,6 +1,7 @@
 #include "app/input_summary.h"
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <stdexcept>
 #include <system_error>
@@ -44,6 +45,8 @@ void InputSummary::addAnalysis(const reconstruction::WellAnalysis& analysis) {
     for (const reconstruction::Zone& zone : analysis.zones)
         ++zonesByClass[std::string(reconstruction::className(zone.kind))];
     volume = analysis.volume;
+    breakouts = analysis.breakouts;
+    unorientedSections = analysis.unorientedSections;
 }
 
 nlohmann::ordered_json toJson(const InputSummary& s) {
@@ -78,6 +81,20 @@ nlohmann::ordered_json toJson(const InputSummary& s) {
                               {"cement", v.cement_m3},
                               {"gauge_cement", v.gaugeCement_m3},
                               {"uncovered_m", v.uncovered_m}};
+    }
+    if (s.breakouts) {
+        // An azimuth that is not known is null, never a number from an assumed north.
+        auto angle = [](double deg) {
+            return std::isfinite(deg) ? nlohmann::ordered_json(deg) : nlohmann::ordered_json();
+        };
+        const reconstruction::BreakoutSummary& b = *s.breakouts;
+        line["breakouts"] = {{"zones", b.zoneCount},
+                             {"combined_m", b.combinedLength_m},
+                             {"mean_azimuth_deg", angle(b.meanAzimuth_deg)},
+                             {"circular_sd_deg", angle(b.circularSd_deg)},
+                             {"shmax_azimuth_deg", angle(b.shmaxAzimuth_deg)},
+                             {"wsm_quality", std::string(1, b.quality)}};
+        line["unoriented_sections"] = s.unorientedSections;
     }
     line["warnings"] = s.warningCount;
     line["warning_messages"] = s.warnings;

@@ -12,6 +12,7 @@
 
 #include "io/diagnostics.h"
 #include "reconstruction/analysis/hole_volume.h"
+#include "reconstruction/analysis/zone_detection.h"
 
 namespace caliper3d::reconstruction {
 struct WellAnalysis;
@@ -44,6 +45,10 @@ struct InputSummary {
     std::optional<std::size_t> zones;
     std::map<std::string, std::size_t> zonesByClass;
     std::optional<reconstruction::HoleVolume> volume;
+    // The breakouts' azimuths (null where unknown: no orientation) and how many sections had
+    // no orientation.
+    std::optional<reconstruction::BreakoutSummary> breakouts;
+    std::size_t unorientedSections = 0;
     std::size_t warningCount = 0;
     std::vector<std::string> warnings;  // the first kKeptWarnings, formatted as printed
     double seconds = 0.0;

@@ -14,6 +14,8 @@
 #include "app/progress_display.h"
 #include "app/verb_parser.h"
 #include "io/number_parsing.h"
+#include "io/picks_reader.h"
+#include "reconstruction/analysis/pick_comparison.h"
 #include "reconstruction/analysis/report_writer.h"
 #include "reconstruction/analysis/rule_settings.h"
 #include "reconstruction/analysis/well_analysis.h"
@@ -223,6 +225,15 @@ InputSummary reportWell(const WellSource& well, const ReportSettings& settings,
                  result.noDataSections, diagnostics.warningCount,
                  well.surveyPath.empty() ? "" : (", path from " + well.surveyPath).c_str());
     std::fputs(reconstruction::formatAnalysisSummary(result).c_str(), info);
+    if (!well.picksPath.empty()) {
+        // Image-log picks beside the caliper's zones (docs/analysis.md, "Picks").
+        io::PickFile picks = io::readPicks(well.picksPath);
+        diagnostics.merge(picks.diagnostics);
+        std::fputs(
+            reconstruction::formatPicksComparison(reconstruction::comparePicks(picks.picks, result))
+                .c_str(),
+            info);
+    }
     printWarnings(diagnostics);
     for (const std::string& written : {to.sections, to.zones, to.las})
         if (!written.empty() && written != "-") {

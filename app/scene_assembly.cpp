@@ -14,10 +14,12 @@
 #include <Inventor/nodes/SoSeparator.h>
 
 #include "io/parse_error.h"
+#include "io/picks_reader.h"
 #include "reconstruction/load/load_well.h"
 #include "reconstruction/mesh/lod_levels.h"
 #include "reconstruction/well_geometry.h"
 #include "scenegraph/colour_legend.h"
+#include "scenegraph/pick_markers.h"
 #include "scenegraph/render_stats.h"
 #include "scenegraph/well_scene.h"
 
@@ -44,12 +46,17 @@ AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOpt
     std::vector<std::shared_ptr<const reconstruction::WellGeometry>> loaded;
     std::vector<std::string> files;
     std::vector<io::Diagnostics> diagnostics;
-    std::vector<std::size_t> loadedInput;  // each loaded well's place in out.inputs
+    std::vector<std::size_t> loadedInput;      // each loaded well's place in out.inputs
+    std::vector<std::vector<io::Pick>> picks;  // each loaded well's image-log picks
     for (const WellSource& well : wells) {
         InputSummary& input = out.inputs.emplace_back();
         input.file = well.path;
         try {
             reconstruction::LoadedWell one = reconstruction::loadWell(well, options, origin);
+            io::PickFile wellPicks;
+            if (!well.picksPath.empty()) wellPicks = io::readPicks(well.picksPath);
+            one.diagnostics.merge(wellPicks.diagnostics);
+            picks.push_back(std::move(wellPicks.picks));
             loaded.push_back(one.geometry);
             files.push_back(well.path);
             const std::vector<double>& md = one.table->depth_m;
@@ -85,6 +92,8 @@ AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOpt
         out.geometries.push_back(geometry);
         out.scenes.push_back(scene);
         out.root->addChild(scene->root());
+        if (!picks[w].empty())
+            out.root->addChild(scenegraph::makePickMarkers(*geometry, picks[w], exaggeration));
         ++out.wells;
         std::printf("%s: %zu sections, %zu segments, %zu triangles at full detail, %zu warnings\n",
                     files[w].c_str(), geometry->table().rowCount(), scene->segmentCount(),

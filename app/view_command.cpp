@@ -121,7 +121,7 @@ int runDefault(int argc, char** argv) {
         return kExitBadInput;
     }
     if (haveDisplay())  // at the example's breakout, where every view has something to show
-        return showWindow(argc, argv, {WellSource{example, {}, {}}}, exampleOptions(),
+        return showWindow(argc, argv, {WellSource{example, {}, {}, {}}}, exampleOptions(),
                           kExampleBreakout_m);
     try {
         scenegraph::initCoin();

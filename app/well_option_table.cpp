@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 
+#include "io/curve_roles.h"
 #include "io/number_parsing.h"
 #include "io/section_table.h"
 #include "io/units.h"
@@ -90,6 +91,37 @@ std::optional<std::string> unlessDefault(double value, double byDefault) {
 std::string bitSizeText(double mm) {
     return fixed(mm, 1) + " mm (" + fixed(mm / 25.4, 3) + " in)";
 }
+
+// One orientation curve named by --NAME (a member of RoleOverrides): a single curve name,
+// or "none" where the log has no usable such curve.
+template <std::string io::RoleOverrides::*Member, const char* Name>
+void parseCurveName(const std::string& text, WellSource&, LoadOptions& o) {
+    const std::string name = trimmed(text);
+    if (name.empty() || name.find_first_of(", \t") != std::string::npos)
+        throw UsageError(std::string("--") + Name +
+                         ": expected one curve name (or 'none'), found '" + text + "'");
+    o.read.roles.*Member = name;
+}
+
+template <std::string io::RoleOverrides::*Member>
+std::optional<std::string> formatCurveName(const WellSource&, const LoadOptions& o) {
+    const std::string& name = o.read.roles.*Member;
+    if (name.empty()) return std::nullopt;
+    return name;
+}
+
+// The curve the reader chose for `role`, as the Open dialog's placeholder.
+template <io::CurveRole Role>
+std::string detectedCurve(const io::LogInfo& info) {
+    for (const io::CurveInfo& c : info.curves)
+        if (c.role == io::roleName(Role)) return "detected: " + c.mnemonic;
+    return "none in the log";
+}
+
+constexpr char kPadAzimuth[] = "pad-azimuth";
+constexpr char kRelativeBearing[] = "relative-bearing";
+constexpr char kInclination[] = "inclination";
+constexpr char kHoleAzimuth[] = "hole-azimuth";
 
 // The rows under construction; a row is finished through the reference add returns.
 struct Rows {
@@ -190,6 +222,47 @@ void curveRows(Rows& rows) {
     diameters.column = "diameters";
     diameters.field = "Diameter curves";
     diameters.blank = "detected";
+
+    using io::RoleOverrides;
+    WellOption& padAzimuth =
+        rows.add(kPadAzimuth, "MNEM|none", G::Reading,
+                 "Curve holding the pad-1 azimuth (e.g. P1AZ, IAP1); none: leave it out.",
+                 parseCurveName<&RoleOverrides::padAzimuth, kPadAzimuth>,
+                 formatCurveName<&RoleOverrides::padAzimuth>);
+    padAzimuth.column = "pad_azimuth";
+    padAzimuth.field = "Pad-1 azimuth curve";
+    padAzimuth.blank = "detected";
+    padAzimuth.blankFor = detectedCurve<io::CurveRole::PadAzimuth>;
+
+    WellOption& bearing =
+        rows.add(kRelativeBearing, "MNEM|none", G::Reading,
+                 "Curve holding pad 1's relative bearing (e.g. RB, IRBR); none: leave it out.",
+                 parseCurveName<&RoleOverrides::relativeBearing, kRelativeBearing>,
+                 formatCurveName<&RoleOverrides::relativeBearing>);
+    bearing.column = "relative_bearing";
+    bearing.field = "Relative bearing curve";
+    bearing.blank = "detected";
+    bearing.blankFor = detectedCurve<io::CurveRole::RelativeBearing>;
+
+    WellOption& inclination =
+        rows.add(kInclination, "MNEM|none", G::Reading,
+                 "Curve holding the hole's inclination (e.g. DEVI, ITLT); none: leave it out.",
+                 parseCurveName<&RoleOverrides::deviation, kInclination>,
+                 formatCurveName<&RoleOverrides::deviation>);
+    inclination.column = "inclination";
+    inclination.field = "Inclination curve";
+    inclination.blank = "detected";
+    inclination.blankFor = detectedCurve<io::CurveRole::Deviation>;
+
+    WellOption& holeAzimuth =
+        rows.add(kHoleAzimuth, "MNEM|none", G::Reading,
+                 "Curve holding the hole's azimuth (e.g. HAZI, IAZT); none: leave it out.",
+                 parseCurveName<&RoleOverrides::holeAzimuth, kHoleAzimuth>,
+                 formatCurveName<&RoleOverrides::holeAzimuth>);
+    holeAzimuth.column = "hole_azimuth";
+    holeAzimuth.field = "Hole azimuth curve";
+    holeAzimuth.blank = "detected";
+    holeAzimuth.blankFor = detectedCurve<io::CurveRole::HoleAzimuth>;
 }
 
 // How a file is read: its rows, nulls and bit size.
@@ -396,6 +469,21 @@ void perWellRows(Rows& rows) {
     survey.column = "survey";
     survey.field = "Survey";
     survey.blank = "none: the path from the log's DEVI/HAZI";
+
+    WellOption& picks = rows.add(
+        "picks", "FILE", G::PerWell,
+        "Breakouts picked on an image log (depth, azimuth, type: LAS or delimited text), shown "
+        "beside the caliper's zones; once per FILE, in order.",
+        [](const std::string& t, WellSource& w, LoadOptions&) { w.picksPath = t; },
+        [](const WellSource& w, const LoadOptions&) -> std::optional<std::string> {
+            if (w.picksPath.empty()) return std::nullopt;
+            return w.picksPath;
+        });
+    picks.value = OptionValue::Path;
+    picks.effect = OptionEffect::Geometry;
+    picks.column = "picks";
+    picks.field = "Image-log picks";
+    picks.blank = "none";
 
     WellOption& wellhead = rows.add(
         "wellhead", "E,N,ELEV", G::PerWell,

@@ -27,7 +27,7 @@ int main(int argc, char** argv) {
     {
         // How soon the first segment reaches the queue (the window attaches it on its next tick).
         const auto opened = Clock::now();
-        WellLoadPipeline pipeline(WellSource{argv[1], {}, {}}, LoadOptions{}, Wellhead{});
+        WellLoadPipeline pipeline(WellSource{argv[1], {}, {}, {}}, LoadOptions{}, Wellhead{});
         pipeline.start();
         double firstStretch = -1.0, firstSegment = -1.0, whole = -1.0, finished = -1.0;
         auto since = [&] {
@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
     }
     std::printf("| cancel after (ms) | stopped while | cancel to stop (ms) |\n|---|---|---|\n");
     for (int delay : delays) {
-        WellLoadPipeline pipeline(WellSource{argv[1], {}, {}}, LoadOptions{}, Wellhead{});
+        WellLoadPipeline pipeline(WellSource{argv[1], {}, {}, {}}, LoadOptions{}, Wellhead{});
         pipeline.start();
         std::this_thread::sleep_for(std::chrono::milliseconds(delay));
         const auto cancelled = Clock::now();

@@ -48,7 +48,7 @@ int main(int argc, char** argv) {
     scenegraph::initCoin();
     const auto start = Clock::now();
     const reconstruction::LoadedWell loaded =
-        reconstruction::loadWell(reconstruction::WellSource{argv[1], {}, {}}, {});
+        reconstruction::loadWell(reconstruction::WellSource{argv[1], {}, {}, {}}, {});
     std::printf("loaded %s: %zu sections in %.0f ms\n", argv[1], loaded.table->rowCount(),
                 msSince(start));
     // The first new look also warms the allocator and Coin: it is timed again after.

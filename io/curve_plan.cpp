@@ -42,8 +42,13 @@ void CurvePlan::mapRow(const double* raw, SectionTable& out) const {
         out.radius_mm.push_back(raw[armColumn[static_cast<std::size_t>(k)]] *
                                 armScale[static_cast<std::size_t>(k)]);
     std::vector<double>* angles[4] = {&out.p1az_deg, &out.devi_deg, &out.hazi_deg, &out.rb_deg};
-    for (int a = 0; a < 4; ++a)
-        if (angleColumn[a] >= 0) angles[a]->push_back(raw[angleColumn[a]] * angleScale[a]);
+    for (int a = 0; a < 4; ++a) {
+        if (angleColumn[a] < 0) continue;
+        double v = raw[angleColumn[a]] * angleScale[a];
+        if ((a == 0 || a == 3) && arm1FromPad1_deg != 0.0 && std::isfinite(v))
+            v = std::fmod(v + arm1FromPad1_deg, 360.0);
+        angles[a]->push_back(v);
+    }
     if (bitSizeColumn >= 0)
         out.bitSize_mm.push_back(raw[bitSizeColumn] * bitSizeScale);
     else if (!std::isnan(bitSizeConstant))
@@ -153,6 +158,10 @@ private:
         } else {
             m_info.armSource =
                 "none: no caliper curves found (name them with --radii or --diameters)";
+            m_diagnostics.warn(m_file, 0,
+                               "no caliper curve recognised: name the arm radii with --radii or "
+                               "the pad-pair diameters with --diameters (the curves and their "
+                               "descriptions are listed by caliper3d info)");
         }
         m_plan.armCount = static_cast<int>(m_plan.armColumn.size());
         if (m_plan.armCount == 1)
@@ -176,7 +185,19 @@ private:
         }
         m_info.armSource = "diameters";
         for (int c : m_roles.diameters) m_info.armSource += " " + spec(c).mnemonic;
-        m_info.armSource += " (pad pairs; the tool is taken as centred)";
+        if (m_roles.toolPads > 2 * pairs && m_roles.armsAligned) {
+            char offset[96];
+            std::snprintf(offset, sizeof offset,
+                          " (pad pairs of a tool with %d pads, arm 1 %.0f deg", m_roles.toolPads,
+                          m_roles.arm1FromPad1_deg);
+            m_info.armSource += offset;
+            m_info.armSource += " clockwise of pad 1; the tool is taken as centred)";
+            m_plan.arm1FromPad1_deg = m_roles.arm1FromPad1_deg;
+        } else if (!m_roles.armsAligned) {
+            m_info.armSource += " (X-Y calipers; the tool is taken as centred)";
+        } else {
+            m_info.armSource += " (pad pairs; the tool is taken as centred)";
+        }
         m_diagnostics.warn(
             m_file, spec(m_roles.diameters.front()).line,
             "radii from opposite-pad diameters: each pad pair is taken as centred on the tool");
@@ -188,6 +209,16 @@ private:
         for (int a = 0; a < 4; ++a) {
             const int c = angleRoles[a];
             if (c < 0) continue;
+            if ((a == 0 || a == 3) && !m_roles.armsAligned && !m_roles.diameters.empty()) {
+                // X-Y calipers: where pad 1 points says nothing of where they point.
+                m_unplacedAngles.push_back(c);
+                m_diagnostics.warn(m_file, spec(c).line,
+                                   spec(c).mnemonic +
+                                       " not used: the calipers' bearing from pad 1 is not "
+                                       "known, so the sections have no orientation (azimuths "
+                                       "unknown)");
+                continue;
+            }
             const double scale = angleScaleOf(spec(c).unit);
             if (!std::isfinite(scale))
                 throw ParseError(m_file, spec(c).line, 0,
@@ -235,11 +266,18 @@ private:
             const bool secondDepth =
                 std::find(m_plan.otherDepthColumns.begin(), m_plan.otherDepthColumns.end(),
                           static_cast<int>(c)) != m_plan.otherDepthColumns.end();
-            m_info.curves.push_back({col.mnemonic, col.unit,
-                                     col.text      ? "text (skipped)"
-                                     : secondDepth ? "second depth (checked against the index)"
-                                                   : std::string(roleName(role)),
-                                     0});
+            const bool unplaced = std::find(m_unplacedAngles.begin(), m_unplacedAngles.end(),
+                                            static_cast<int>(c)) != m_unplacedAngles.end();
+            const bool unusedCaliper =
+                std::find(m_roles.unusedCalipers.begin(), m_roles.unusedCalipers.end(),
+                          static_cast<int>(c)) != m_roles.unusedCalipers.end();
+            std::string roleText = col.text        ? "text (skipped)"
+                                   : secondDepth   ? "second depth (checked against the index)"
+                                   : unplaced      ? "orientation (not used: calipers not placed)"
+                                   : unusedCaliper ? "caliper (not used for the arms)"
+                                                   : std::string(roleName(role));
+            m_info.curves.push_back(
+                {col.mnemonic, col.unit, std::move(roleText), 0, col.description});
             if (role == CurveRole::Other && !col.text &&
                 guessRole(col.mnemonic).role != CurveRole::Depth)
                 m_plan.extraColumns.push_back(static_cast<int>(c));
@@ -254,6 +292,7 @@ private:
     Diagnostics& m_diagnostics;
     CurveRoles m_roles;
     CurvePlan m_plan;
+    std::vector<int> m_unplacedAngles;  // pad azimuth and RB left out: calipers not placed
 };
 
 }  // namespace

@@ -38,6 +38,9 @@ struct CurvePlan {
     int angleColumn[4] = {-1, -1, -1, -1};  // P1AZ, DEVI, HAZI, RB
     double angleScale[4] = {1.0, 1.0, 1.0, 1.0};
     std::array<std::string, 4> angleName;  // the mnemonics, for messages
+    // Added to the pad-1 azimuth and the relative bearing, so that the table holds arm 1's:
+    // the angle from pad 1 to arm 1 (45 degrees for pairs 2-6 and 4-8 of an eight-pad tool).
+    double arm1FromPad1_deg = 0.0;
     int bitSizeColumn = -1;
     double bitSizeScale = 1.0;
     double bitSizeConstant = kNaN;  // from a parameter or an override

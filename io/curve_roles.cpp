@@ -67,9 +67,68 @@ std::string_view roleName(CurveRole role) {
     return "other";
 }
 
+const std::vector<MnemonicEntry>& mnemonicTable() {
+    using R = CurveRole;
+    static const std::vector<MnemonicEntry> table = {
+        {"DEPT", false, {R::Depth}, "every LAS (the index)"},
+        {"DEPTH", false, {R::Depth}, "LAS, column text"},
+        {"MD", false, {R::Depth}, "column text, survey exports"},
+        {"TDEP", false, {R::Depth}, "DLIS-converted logs (Schlumberger)"},
+        // Pad-pair diameters: pair k joins pads k and k + pads/2.
+        {"C1", false, {R::Diameter, 1}, "Schlumberger FMI, FMS, OBMI, HDT/SHDT dipmeters"},
+        {"C2", false, {R::Diameter, 2}, "Schlumberger FMI, FMS, OBMI, HDT/SHDT dipmeters"},
+        {"C3", false, {R::Diameter, 3}, "six-arm calipers"},
+        {"C13", false, {R::Diameter, 1, 4}, "four-pad dipmeters (pads 1-3)"},
+        {"C24", false, {R::Diameter, 2, 4}, "four-pad dipmeters (pads 2-4)"},
+        // Two perpendicular calipers whose bearing from pad 1 the file does not give.
+        {"IECX", false, {R::Diameter, 1, 4, false}, "Weatherford CMI (MIE caliper X)"},
+        {"IECY", false, {R::Diameter, 2, 4, false}, "Weatherford CMI (MIE caliper Y)"},
+        {"CALX", false, {R::Diameter, 1, 4, false}, "X-Y calipers"},
+        {"CALY", false, {R::Diameter, 2, 4, false}, "X-Y calipers"},
+        // The one diameter of two-arm tools: arm 0, used only when nothing else is a caliper.
+        {"HCAL", false, {R::Diameter}, "Schlumberger HRLA/HNGS (high-resolution caliper)"},
+        {"CALI", false, {R::Diameter}, "most vendors (caliper)"},
+        {"CAL", false, {R::Diameter}, "most vendors (caliper)"},
+        {"CALS", false, {R::Diameter}, "sonic caliper"},
+        {"CAL1", false, {R::Diameter}, "numbered calipers of a tool string (first)"},
+        {"CAL2", false, {R::Diameter}, "numbered calipers of a tool string (second)"},
+        {"CAL3", false, {R::Diameter}, "numbered calipers of a tool string (third)"},
+        {"CALD", false, {R::Diameter}, "density caliper"},
+        {"CLDC", false, {R::Diameter}, "Halliburton density caliper"},
+        {"CALN", false, {R::Diameter}, "neutron caliper"},
+        {"LCAL", false, {R::Diameter}, "Schlumberger Platform Express caliper"},
+        {"CALA", false, {R::Diameter}, "Baker Atlas caliper"},
+        // Orientation.
+        {"P1AZ", false, {R::PadAzimuth}, "Schlumberger FMI, FMS, OBMI, UBI"},
+        {"P1AZ_", true, {R::PadAzimuth}, "Schlumberger, with a tool suffix (P1AZ_FBST)"},
+        {"AZST", true, {R::PadAzimuth}, "Baker STAR imager (AZSTQH)"},
+        {"IAP1", false, {R::PadAzimuth}, "Weatherford CMI (azimuth of reference, pad 1)"},
+        {"RB", true, {R::RelativeBearing}, "Schlumberger (RB), Baker STAR (RBSTQH)"},
+        {"IRBR", false, {R::RelativeBearing}, "Weatherford CMI"},
+        {"DEVI", false, {R::Deviation}, "Schlumberger GPIT"},
+        {"DEV", true, {R::Deviation}, "DEVIM, Baker DEVSTQH, DEVIATION"},
+        {"INC", false, {R::Deviation}, "surveys, LWD"},
+        {"INCL", false, {R::Deviation}, "surveys, LWD"},
+        {"INCLIN", false, {R::Deviation}, "surveys"},
+        {"INCLINATION", false, {R::Deviation}, "surveys, LAS 3.0"},
+        {"ITLT", false, {R::Deviation}, "Weatherford CMI (borehole tilt)"},
+        {"HAZ", true, {R::HoleAzimuth}, "Schlumberger HAZI, HAZIM"},
+        {"AZI", false, {R::HoleAzimuth}, "surveys"},
+        {"AZIM", false, {R::HoleAzimuth}, "surveys"},
+        {"AZIMUTH", false, {R::HoleAzimuth}, "surveys, LAS 3.0"},
+        {"DAZ", false, {R::HoleAzimuth}, "Schlumberger (deviation azimuth)"},
+        {"HLAZ", false, {R::HoleAzimuth}, "Schlumberger dipmeters (hole azimuth)"},
+        {"IAZT", false, {R::HoleAzimuth}, "Weatherford CMI (borehole azimuth)"},
+        {"BS", false, {R::BitSize}, "most vendors"},
+        {"BIT", false, {R::BitSize}, "most vendors"},
+        {"BITSIZE", false, {R::BitSize}, "column text"},
+    };
+    return table;
+}
+
 RoleGuess guessRole(std::string_view mnemonic) {
     const std::string m = canonical(mnemonic);
-    if (m == "DEPT" || m == "DEPTH" || m == "MD" || m == "TDEP") return {CurveRole::Depth, 0};
+    // Numbered families first: radii, fingers and the DIab pad-pair diameters.
     if (startsWith(m, "RADIUS")) {
         if (int n = numberAfter(m, 6, true)) return {CurveRole::Radius, n};
     }
@@ -86,17 +145,13 @@ RoleGuess guessRole(std::string_view mnemonic) {
     if (startsWith(m, "F")) {
         if (int n = numberAfter(m, 1, false)) return {CurveRole::Finger, n};
     }
-    if (m.size() == 2 && m[0] == 'C' && m[1] >= '1' && m[1] <= '3')
-        return {CurveRole::Diameter, m[1] - '0'};
-    // The single caliper of two-arm tools (density, sonic): one diameter, arm 0.
-    if (m == "CALI" || m == "CAL" || m == "HCAL" || m == "CALS") return {CurveRole::Diameter, 0};
-    if (m == "P1AZ" || startsWith(m, "P1AZ_") || startsWith(m, "AZST"))
-        return {CurveRole::PadAzimuth, 0};
-    if (m == "DEVI" || m == "INC" || m == "INCL" || startsWith(m, "DEV"))
-        return {CurveRole::Deviation, 0};
-    if (m == "AZIM" || m == "AZI" || startsWith(m, "HAZ")) return {CurveRole::HoleAzimuth, 0};
-    if (startsWith(m, "RB")) return {CurveRole::RelativeBearing, 0};
-    if (m == "BS" || m == "BIT" || m == "BITSIZE") return {CurveRole::BitSize, 0};
+    // DIab: the diameter between pads a and b of a tool with 2 (b - a) pads (Weatherford
+    // CMI: DI15, DI26, DI37, DI48, "Imager Diameter 2 - 6").
+    if (m.size() == 4 && m[0] == 'D' && m[1] == 'I' && m[2] >= '1' && m[2] <= '9' && m[3] > m[2] &&
+        m[3] <= '9')
+        return {CurveRole::Diameter, m[2] - '0', 2 * (m[3] - m[2])};
+    for (const MnemonicEntry& e : mnemonicTable())
+        if (e.prefix ? startsWith(m, e.name) : m == e.name) return e.guess;
     return {CurveRole::Other, 0};
 }
 
@@ -149,11 +204,81 @@ std::vector<int> armSequence(const std::map<int, int>& byArm) {
     for (int arm = 1; byArm.count(arm); ++arm) out.push_back(byArm.at(arm));
     return out;
 }
+
+// A pad-pair diameter curve: its index, pair number and what its name says of the tool.
+struct PairCurve {
+    int index = -1;
+    RoleGuess guess;
+};
+
+// The pad-pair diameters chosen from one family of names.
+struct PairChoice {
+    std::vector<int> curves;  // pair order
+    int pads = 0;
+    double arm1FromPad1_deg = 0.0;
+    bool aligned = true;
+};
+
+// The most equally spaced pairs of one family: pairs p0, p0 + s, p0 + 2s, ... covering half
+// the tool's pads evenly (for an eight-pad tool: 1-4 all, or 1 and 3, or 2 and 4), so that
+// the arms they give are evenly spaced. Fewer than two pairs: none.
+PairChoice choosePairs(const std::vector<PairCurve>& family) {
+    PairChoice out;
+    if (family.empty()) return out;
+    out.aligned = family.front().guess.aligned;
+    std::map<int, int> byPair;
+    for (const PairCurve& c : family) byPair.emplace(c.guess.arm, c.index);
+    const int pads = family.front().guess.pads;
+    if (pads == 0) {  // C1, C2, C3: the tool has two pads per pair present
+        out.curves = armSequence(byPair);
+        out.pads = 2 * static_cast<int>(out.curves.size());
+        if (out.curves.size() < 2) out.curves.clear();
+        return out;
+    }
+    const int half = pads / 2;
+    for (int step = 1; half / step >= 2; ++step) {
+        if (half % step != 0) continue;
+        for (int first = 1; first <= step; ++first) {
+            std::vector<int> curves;
+            for (int pair = first; pair <= half && byPair.count(pair); pair += step)
+                curves.push_back(byPair.at(pair));
+            if (static_cast<int>(curves.size()) != half / step) continue;
+            out.curves = std::move(curves);
+            out.pads = pads;
+            out.arm1FromPad1_deg = 360.0 * (first - 1) / pads;
+            return out;
+        }
+    }
+    return out;
+}
+
+// The best family of pad-pair diameters: calipers of known bearing first, then the most pairs.
+PairChoice bestPairs(const std::vector<PairCurve>& pairs) {
+    std::map<std::pair<int, bool>, std::vector<PairCurve>> families;
+    for (const PairCurve& c : pairs) families[{c.guess.pads, c.guess.aligned}].push_back(c);
+    PairChoice best;
+    for (const auto& [key, family] : families) {
+        PairChoice c = choosePairs(family);
+        if (c.curves.empty()) continue;
+        const bool better = best.curves.empty() || (c.aligned && !best.aligned) ||
+                            (c.aligned == best.aligned && c.curves.size() > best.curves.size());
+        if (better) best = std::move(c);
+    }
+    return best;
+}
+
+// An orientation curve named on the command line: its index, -1 for "none".
+void overrideAngle(const std::vector<std::string>& mnemonics, const std::string& name, int& slot) {
+    if (name.empty()) return;
+    slot = canonical(name) == "NONE" ? -1 : indexOf(mnemonics, name);
+}
 }  // namespace
 
 CurveRoles assignRoles(const std::vector<std::string>& mnemonics, const RoleOverrides& overrides) {
     CurveRoles roles;
-    std::map<int, int> radii, fingers, diameters;
+    std::map<int, int> radii, fingers;
+    std::vector<PairCurve> pairs;
+    std::vector<int> singles;  // one-diameter calipers, in file order
     for (std::size_t i = 0; i < mnemonics.size(); ++i) {
         if (mnemonics[i].find(':') != std::string::npos) continue;  // a duplicate: never a role
         const int index = static_cast<int>(i);
@@ -172,7 +297,10 @@ CurveRoles assignRoles(const std::vector<std::string>& mnemonics, const RoleOver
                 fingers.emplace(g.arm, index);
                 break;
             case CurveRole::Diameter:
-                diameters.emplace(g.arm, index);
+                if (g.arm > 0)
+                    pairs.push_back({index, g});
+                else
+                    singles.push_back(index);
                 break;
             case CurveRole::PadAzimuth:
                 first(roles.padAzimuth);
@@ -195,34 +323,61 @@ CurveRoles assignRoles(const std::vector<std::string>& mnemonics, const RoleOver
     }
     if (roles.depth < 0 && !mnemonics.empty())
         roles.depth = 0;  // LAS: the first curve is the index
+    overrideAngle(mnemonics, overrides.padAzimuth, roles.padAzimuth);
+    overrideAngle(mnemonics, overrides.relativeBearing, roles.relativeBearing);
+    overrideAngle(mnemonics, overrides.deviation, roles.deviation);
+    overrideAngle(mnemonics, overrides.holeAzimuth, roles.holeAzimuth);
 
+    auto takePairs = [&](const PairChoice& c) {
+        roles.diameters = c.curves;
+        roles.toolPads = c.pads;
+        roles.arm1FromPad1_deg = c.arm1FromPad1_deg;
+        roles.armsAligned = c.aligned;
+    };
     if (!overrides.radii.empty()) {
         for (const std::string& name : overrides.radii)
             for (int index : indicesOf(mnemonics, name)) roles.radii.push_back(index);
     } else if (!overrides.diameters.empty()) {
+        std::vector<PairCurve> named;
         for (const std::string& name : overrides.diameters)
-            for (int index : indicesOf(mnemonics, name)) roles.diameters.push_back(index);
+            for (int index : indicesOf(mnemonics, name)) {
+                roles.diameters.push_back(index);
+                const RoleGuess g = guessRole(mnemonics[static_cast<std::size_t>(index)]);
+                if (g.role == CurveRole::Diameter && g.arm > 0) named.push_back({index, g});
+            }
+        // Named pad pairs of one known tool keep their bearing from pad 1 (DI26, DI48).
+        if (named.size() == roles.diameters.size()) {
+            const PairChoice c = bestPairs(named);
+            if (c.curves.size() == roles.diameters.size()) takePairs(c);
+        }
     } else {
-        // Most arms first: radii, fingers, opposite-pad diameters (C1, C2, ...); then
-        // the two-pad tools: two radii, or one diameter (C1 alone, or CALI, HCAL, ...).
+        // Most arms first: radii, fingers, opposite-pad diameters (C1, C2, ..., DI26, DI48);
+        // then the two-pad tools: two radii, or one diameter (C1 alone, or CALI, HCAL, ...).
         roles.radii = armSequence(radii);
         if (roles.radii.size() < 3) roles.radii = armSequence(fingers);
         if (roles.radii.size() < 3) {
             roles.radii.clear();
-            roles.diameters = armSequence(diameters);
-            if (roles.diameters.size() < 2) roles.diameters.clear();
+            takePairs(bestPairs(pairs));
         }
         if (roles.radii.empty() && roles.diameters.empty()) {
             const std::vector<int> two = armSequence(radii);
+            auto c1 = std::find_if(pairs.begin(), pairs.end(), [](const PairCurve& c) {
+                return c.guess.arm == 1 && c.guess.pads == 0;
+            });
             if (two.size() == 2) {
                 roles.radii = two;
-            } else if (diameters.count(1)) {
-                roles.diameters = {diameters.at(1)};
-            } else if (diameters.count(0)) {
-                roles.diameters = {diameters.at(0)};
+            } else if (c1 != pairs.end()) {
+                roles.diameters = {c1->index};
+            } else if (!singles.empty()) {
+                roles.diameters = {singles.front()};
             }
         }
     }
+    for (const PairCurve& c : pairs)
+        if (roles.roleOf(c.index) == CurveRole::Other) roles.unusedCalipers.push_back(c.index);
+    for (int c : singles)
+        if (roles.roleOf(c) == CurveRole::Other) roles.unusedCalipers.push_back(c);
+    std::sort(roles.unusedCalipers.begin(), roles.unusedCalipers.end());
     return roles;
 }
 

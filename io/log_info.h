@@ -16,6 +16,7 @@ struct CurveInfo {
     std::string unit;
     std::string role;
     std::size_t nulls = 0;
+    std::string description;  // the file's own (LAS ~C description), for choosing by hand
 };
 
 // What `caliper3d info` prints about a log.

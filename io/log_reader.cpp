@@ -156,7 +156,7 @@ LogInfo describeSurvey(const std::string& path, const ReadOptions& options) {
             std::count_if(v.begin(), v.end(), [](double x) { return std::isnan(x); }));
     };
     for (const SurveyColumn& c : s.columns) {
-        CurveInfo curve{c.name, c.unit, c.role.empty() ? "not read" : c.role, 0};
+        CurveInfo curve{c.name, c.unit, c.role.empty() ? "not read" : c.role, 0, {}};
         if (c.role.rfind("TVD", 0) == 0) curve.nulls = nullsIn(s.tvd_m);
         if (c.role.rfind("north", 0) == 0) curve.nulls = nullsIn(s.north_m);
         if (c.role.rfind("east", 0) == 0) curve.nulls = nullsIn(s.east_m);
@@ -223,13 +223,25 @@ std::string formatLogInfo(const LogInfo& info) {
         width = std::max(width, shown(c.mnemonic));
         unitWidth = std::max(unitWidth, shown(c.unit));
     }
+    // The role (with the nulls), then the file's own description in a column of its own.
+    auto roleText = [](const CurveInfo& c) {
+        std::string text = c.role;
+        if (c.nulls) text += ", " + std::to_string(c.nulls) + (c.nulls == 1 ? " null" : " nulls");
+        return text;
+    };
+    std::size_t roleWidth = 0;
+    for (const CurveInfo& c : info.curves) roleWidth = std::max(roleWidth, shown(roleText(c)));
     for (const CurveInfo& c : info.curves) {
         out << "  " << c.mnemonic;
         for (std::size_t i = shown(c.mnemonic); i < width; ++i) out << ' ';
         out << " " << (c.unit.empty() ? "-" : c.unit);
         for (std::size_t i = c.unit.empty() ? 1 : shown(c.unit); i < unitWidth; ++i) out << ' ';
-        out << " " << c.role;
-        if (c.nulls) out << ", " << c.nulls << (c.nulls == 1 ? " null" : " nulls");
+        const std::string role = roleText(c);
+        out << " " << role;
+        if (!c.description.empty()) {
+            for (std::size_t i = shown(role); i < roleWidth; ++i) out << ' ';
+            out << "  " << c.description;
+        }
         out << "\n";
     }
     out << "warnings:  " << info.diagnostics.warningCount << "\n";

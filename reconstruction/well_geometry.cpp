@@ -12,6 +12,7 @@
 #include "reconstruction/mesh/wall_colouring.h"
 #include "reconstruction/parallel/ordered_blocks.h"
 #include "reconstruction/parallel/prefault.h"
+#include "reconstruction/path/course_dogleg.h"
 #include "reconstruction/path/survey_interpolation.h"
 #include "reconstruction/section/arm_geometry.h"
 
@@ -152,6 +153,9 @@ void WellGeometry::computePathAndFrames() {
             }
         });
     if (cancelled()) throw GeometryCancelled();
+    // From the log's own DEVI and HAZI, dogleg severity over a course length, not between
+    // samples (a survey's is between its stations already).
+    if (!fromSurvey) setCourseLengthDls(m_placed->path);
 }
 
 // Segments of equal length; consecutive segments share their boundary row.
@@ -174,6 +178,7 @@ void WellGeometry::cutSegments() {
 // from the row before in north/east/tvd until the constructor sums them.
 void WellGeometry::computeSteps(std::size_t first, std::size_t last, double inc, double azi) {
     const io::SectionTable& t = *m_table;
+    const bool departureKnown = holeAzimuthKnown();
     HoleDirection previous(inc, azi), current = previous;
     for (std::size_t i = first; i < last; ++i) {
         const double devi = valueAt(t.devi_deg, i), hazi = valueAt(t.hazi_deg, i);
@@ -208,6 +213,12 @@ void WellGeometry::computeSteps(std::size_t first, std::size_t last, double inc,
             p.north = s.dNorth;
             p.east = s.dEast;
             p.tvd = s.dTvd;
+        }
+        if (!departureKnown && !(i == 0 && m_options.continueFrom)) {
+            // An inclined hole of unknown azimuth: its TVD is known, the direction of its
+            // departure is not, so it is drawn without one (docs/conventions.md, "Hole azimuth").
+            p.north = 0.0;
+            p.east = 0.0;
         }
         previous = current;
     }

@@ -5,6 +5,7 @@
 #include <Inventor/nodes/SoSwitch.h>
 
 #include "scenegraph/main_thread.h"
+#include "scenegraph/pick_markers.h"
 #include "scenegraph/well_annotations.h"
 #include "scenegraph/well_scene.h"
 
@@ -35,6 +36,8 @@ bool WellView::visible() const {
 void WellView::annotate(const reconstruction::WellGeometry& geometry, double radialExaggeration) {
     assertMainThread("WellView");
     SoSeparator* annotations = makeWholeWellAnnotations(geometry, radialExaggeration);
+    if (!m_picks.empty())
+        annotations->addChild(makePickMarkers(geometry, m_picks, radialExaggeration));
     if (m_annotations)
         m_shown->replaceChild(m_annotations, annotations);
     else

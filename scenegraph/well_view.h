@@ -1,7 +1,10 @@
 #pragma once
 
 #include <memory>
+#include <utility>
+#include <vector>
 
+#include "io/picks_reader.h"
 #include "scenegraph/node_ref.h"
 
 class SoGroup;
@@ -38,6 +41,9 @@ public:
     void setVisible(bool visible);
     bool visible() const;
 
+    // Image-log picks drawn with the annotations (scenegraph/pick_markers.h) from the next
+    // annotate() on.
+    void setPicks(std::vector<io::Pick> picks) { m_picks = std::move(picks); }
     // Adds (or replaces) the annotations for `geometry` as drawn at `radialExaggeration`.
     void annotate(const reconstruction::WellGeometry& geometry, double radialExaggeration);
     // A new scene in place of the one shown, every segment's coarse levels built here (a
@@ -49,6 +55,7 @@ private:
     NodeRef<SoSwitch> m_shown;
     std::unique_ptr<WellScene> m_scene;
     SoSeparator* m_annotations = nullptr;  // a child of m_shown
+    std::vector<io::Pick> m_picks;
 };
 
 }  // namespace caliper3d::scenegraph

@@ -3,6 +3,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -28,6 +29,19 @@ inline std::filesystem::path freshScratchFolder(const std::string& name) {
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir;
+}
+
+// Every real caliper log of the reference data, as paths relative to sharedData(): the
+// logs in real/ and the other vendors' logs in vendors/ (read since the CMI imager's names
+// are known).
+inline const std::vector<std::string>& referenceLogs() {
+    static const std::vector<std::string> logs = {
+        "real/1AA072209208W400_WL_0477502_STAR_FIELD.las",
+        "real/1AA063409108W400_FMI_SONIC_MAIN.las",
+        "real/multifinger40_data.txt",
+        "vendors/WL_0486896_AA-03-08-092-07W4-00_REPEAT_PASS DIPMETER.las",
+    };
+    return logs;
 }
 
 }  // namespace caliper3d::test

@@ -201,8 +201,17 @@ void BreakoutsDock::fillSummary(const reconstruction::WellAnalysis& analysis) {
                         QString(QChar(s.quality)));
     }
     if (analysis.twoPads) text += " A two-pad tool: its sections are round, no breakout shows.";
+    // What the azimuths above rest on, for this well (docs/conventions.md).
+    if (analysis.unorientedSections > 0)
+        text += QString(
+                    " %1 section%2 without a pad-1 azimuth or relative bearing: their "
+                    "azimuths are unknown and left out.")
+                    .arg(analysis.unorientedSections)
+                    .arg(analysis.unorientedSections == 1 ? "" : "s");
     if (analysis.holeAzimuthUnknown)
-        text += " The hole's azimuth is unknown: azimuths assume arm 1 points north.";
+        text +=
+            " The hole's azimuth is unknown: azimuths come from the pad-1 azimuth where the "
+            "log has one; those that need the hole's direction are left out.";
     m_summary->setText(text);
     m_summary->setToolTip(
         "Breakouts form across the largest horizontal stress: SHmax is the mean + 90 degrees "

@@ -100,9 +100,9 @@ void OpenWellDialog::buildDetected() {
     m_summary->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_summary->setWordWrap(true);
     layout->addWidget(m_summary);
-    m_curves = new QTableWidget(0, 4, this);
+    m_curves = new QTableWidget(0, 5, this);
     m_curves->setObjectName("curves");
-    m_curves->setHorizontalHeaderLabels({"Curve", "Unit", "Role", "Nulls"});
+    m_curves->setHorizontalHeaderLabels({"Curve", "Unit", "Role", "Nulls", "Description"});
     m_curves->horizontalHeader()->setStretchLastSection(true);
     m_curves->verticalHeader()->hide();
     m_curves->verticalHeader()->setDefaultSectionSize(fontMetrics().height() + 6);
@@ -271,6 +271,7 @@ void OpenWellDialog::showInfo() {
         m_curves->setItem(row, 1, new QTableWidgetItem(text(c.unit)));
         m_curves->setItem(row, 2, new QTableWidgetItem(text(c.role)));
         m_curves->setItem(row, 3, new QTableWidgetItem(QString::number(c.nulls)));
+        m_curves->setItem(row, 4, new QTableWidgetItem(text(c.description)));
     }
     m_curves->resizeColumnsToContents();
     m_error->clear();

@@ -274,6 +274,10 @@ void SectionInspectorDock::showNumbers() {
     const reconstruction::SectionResult& r = well->analysis->sections[row];
     const bool noData = r.cls == reconstruction::BoreholeClass::NoData;
     const bool azimuthUnknown = well->analysis->holeAzimuthUnknown;
+    // No pad-1 azimuth nor relative bearing on this row: every angle of the shape is unknown.
+    const bool unoriented =
+        well->geometry && row < well->geometry->table().rowCount() &&
+        well->geometry->orientation(row) == reconstruction::WellGeometry::Orientation::Unoriented;
     for (const auto& [name, text] : reconstruction::sectionReportFields(r)) {
         const auto it = m_values.find(QString::fromStdString(name));
         if (it == m_values.end()) continue;
@@ -283,7 +287,11 @@ void SectionInspectorDock::showNumbers() {
         const bool axisAngle = name == "major_azimuth_deg" || name == "major_from_high_side_deg";
         const bool elongatedAxis =
             std::isfinite(r.majorAzimuth_deg) || std::isfinite(r.majorFromHighSide_deg);
-        if (shown.isEmpty())
+        const bool angleField = name.find("azimuth") != std::string::npos ||
+                                name.find("high_side") != std::string::npos;
+        if (shown.isEmpty() && !noData && unoriented && angleField)
+            shown = "unknown: no orientation";
+        else if (shown.isEmpty())
             shown = noData ? "no data"
                            : (azimuthUnknown && axisAngle && elongatedAxis ? "unknown" : "none");
         it->second->setText(shown);

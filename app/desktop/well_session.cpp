@@ -12,6 +12,7 @@
 #include "app/desktop/analysis_job.h"
 #include "app/desktop/desk_model.h"
 #include "app/desktop/retired_loads.h"
+#include "io/picks_reader.h"
 #include "io/warnings_text.h"
 #include "reconstruction/analysis/wall_colour_request.h"
 #include "reconstruction/load/well_load_pipeline.h"
@@ -80,7 +81,7 @@ void WellSession::edit(const Well& well, Edit change) {
 }
 
 int WellSession::openWell(const QString& path, const LoadOptions& options) {
-    return openWell(WellSource{path.toStdString(), {}, {}}, options);
+    return openWell(WellSource{path.toStdString(), {}, {}, {}}, options);
 }
 
 int WellSession::openWell(const WellSource& source, const LoadOptions& options) {
@@ -94,7 +95,7 @@ int WellSession::openWell(const WellSource& source, const LoadOptions& options) 
 }
 
 int WellSession::addWell(const QString& path, const LoadOptions& options) {
-    return addWell(WellSource{path.toStdString(), {}, {}}, options);
+    return addWell(WellSource{path.toStdString(), {}, {}, {}}, options);
 }
 
 int WellSession::addWell(const WellSource& source, const LoadOptions& options) {
@@ -119,7 +120,21 @@ int WellSession::addWell(const WellSource& source, const LoadOptions& options) {
     w.pipeline = std::make_unique<reconstruction::WellLoadPipeline>(source, options, m_origin);
     emit status("Loading " + w.name + "...");
     scenegraph::SegmentFeeder::Callbacks callbacks;
-    callbacks.geometry = [this, &w](std::shared_ptr<const reconstruction::WellGeometry> g) {
+    callbacks.geometry = [this, &w, picksPath = source.picksPath](
+                             std::shared_ptr<const reconstruction::WellGeometry> g) {
+        if (!picksPath.empty()) {
+            // A small file, read here where the markers are made; a bad one is a warning.
+            try {
+                io::PickFile picks = io::readPicks(picksPath);
+                edit(w,
+                     [&picks](DeskWell& record) { record.diagnostics.merge(picks.diagnostics); });
+                w.view->setPicks(std::move(picks.picks));
+            } catch (const std::exception& e) {
+                io::Diagnostics d;
+                d.warn(picksPath, 0, std::string("picks not shown: ") + e.what());
+                edit(w, [&d](DeskWell& record) { record.diagnostics.merge(d); });
+            }
+        }
         w.view->annotate(*g, m_model.well(modelIndex(w)).options.radialExaggeration);
         m_detail->addWell(w.view->scene(), g);
         edit(w, [&g](DeskWell& record) {

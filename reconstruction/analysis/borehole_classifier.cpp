@@ -83,8 +83,18 @@ double maxTurnPerWindow(const Accessor& mdAt, const Accessor& toolAzimuthAt, std
 
 }  // namespace
 
+BreakoutEvidence breakoutEvidenceFor(int arms) {
+    return arms <= 4 ? BreakoutEvidence::ToolStops : BreakoutEvidence::AxisFixedInEarth;
+}
+
 void applyBreakoutZoneRules(std::vector<BoreholeClass>& out, const Accessor& md,
-                            const Accessor& toolAzimuth, const ClassificationRules& rules) {
+                            const Accessor& azimuth, const ClassificationRules& rules,
+                            BreakoutEvidence evidence) {
+    // An axis (modulo 180) turns by half what its doubled angle (modulo 360) turns.
+    const bool axial = evidence == BreakoutEvidence::AxisFixedInEarth;
+    const Accessor doubled = [&](std::size_t i) { return std::fmod(2.0 * azimuth(i), 360.0); };
+    const Accessor& turning = axial ? doubled : azimuth;
+    const double scale = axial ? 0.5 : 1.0;
     std::size_t i = 0;
     while (i < out.size()) {
         if (out[i] != BoreholeClass::Breakout) {
@@ -98,7 +108,7 @@ void applyBreakoutZoneRules(std::vector<BoreholeClass>& out, const Accessor& md,
         const double stepBelow = j + 1 < out.size() ? md(j + 1) - md(j) : 0.0;
         const double length = md(j) - md(i) + (stepAbove + stepBelow) / 2.0;
         const bool tooShort = length < rules.minBreakoutLength_m;
-        const bool rotating = maxTurnPerWindow(md, toolAzimuth, i, j, rules.rotationWindow_m) >=
+        const bool rotating = scale * maxTurnPerWindow(md, turning, i, j, rules.rotationWindow_m) >=
                               rules.maxToolRotation_deg;
         if (tooShort || rotating)
             for (std::size_t k = i; k <= j; ++k) out[k] = BoreholeClass::InGauge;

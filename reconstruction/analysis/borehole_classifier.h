@@ -64,15 +64,31 @@ struct ClassifierInput {
 // here (see applyBreakoutZoneRules).
 BoreholeClass classifyShape(const ClassifierInput& s, const ClassificationRules& rules);
 
+// What tells a breakout from an elongation the tool made (docs/analysis.md, "Classes").
+enum class BreakoutEvidence : unsigned char {
+    // Pad-pair (four-arm) tools: pads lock into a breakout, so the tool stops turning there
+    // (Plumb & Hickman 1985; Reinecker et al. 2003). `azimuth_deg` is the tool's (pad 1).
+    ToolStops,
+    // Tools that measure the whole section (six arms or more): the major axis stays fixed in
+    // the earth frame whether or not the tool turns. `azimuth_deg` is the major axis's.
+    AxisFixedInEarth,
+};
+
+// The evidence the zone rule asks of a tool with `arms` arms: the tool stopping for pad-pair
+// tools (four arms or fewer), the major axis fixed in the earth frame for the others.
+BreakoutEvidence breakoutEvidenceFor(int arms);
+
 // The zone rules of breakouts over shape classes already in `classes` (ordered by depth): a
-// run of breakout candidates shorter than minBreakoutLength_m, or over which the tool turns
-// by maxToolRotation_deg or more within any rotationWindow_m (pro rata for shorter runs), is
-// not a breakout: its sections become in_gauge. md_m(i) and
-// toolAzimuth_deg(i) give section i's measured depth and tool azimuth (they
-// are asked only for breakout candidates and their neighbours).
+// run of breakout candidates shorter than minBreakoutLength_m, or over which the tool
+// (ToolStops) or the major axis (AxisFixedInEarth, an axial angle) turns by
+// maxToolRotation_deg or more within any rotationWindow_m (pro rata for shorter runs), is not
+// a breakout: its sections become in_gauge. md_m(i) and azimuth_deg(i) give section i's
+// measured depth and azimuth (asked only for breakout candidates and their neighbours; NaN
+// where unknown, which turns nothing).
 void applyBreakoutZoneRules(std::vector<BoreholeClass>& classes,
                             const std::function<double(std::size_t)>& md_m,
-                            const std::function<double(std::size_t)>& toolAzimuth_deg,
-                            const ClassificationRules& rules);
+                            const std::function<double(std::size_t)>& azimuth_deg,
+                            const ClassificationRules& rules,
+                            BreakoutEvidence evidence = BreakoutEvidence::ToolStops);
 
 }  // namespace caliper3d::reconstruction

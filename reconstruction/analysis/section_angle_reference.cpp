@@ -43,6 +43,7 @@ double arm1Angle_deg(const SectionFrame& frame, AngleReference reference) {
 }
 
 bool referenceKnown(const WellGeometry& g, std::size_t row, AngleReference reference) {
+    if (g.orientation(row) == WellGeometry::Orientation::Unoriented) return false;
     if (g.holeAzimuthKnown() || !(g.path()[row].inc_deg > 0.0)) return true;
     const bool fromRelativeBearing =
         g.orientation(row) == WellGeometry::Orientation::RelativeBearing;

@@ -144,10 +144,11 @@ SectionResult positionOf(const PathPoint& p, bool azimuthKnown, double bit_mm) {
     r.inc_deg = p.inc_deg;
     r.azi_deg = p.azi_deg;
     if (!azimuthKnown) {
-        // No data, not north: the azimuth, and the departure wherever
-        // the path above has leaned at all (docs/conventions.md).
+        // No data, not north: the azimuth, and the departure wherever the path above has
+        // leaned at all, its TVD short of its MD (docs/conventions.md). The path is drawn
+        // without a departure, so north and east are 0 there only as drawn.
         r.azi_deg = io::kNaN;
-        if (p.north != 0.0 || p.east != 0.0) r.north_m = r.east_m = io::kNaN;
+        if (p.md - p.tvd > 1e-9) r.north_m = r.east_m = io::kNaN;
     }
     r.dls_degPer30m = p.dls_degPer30m;
     r.bit_mm = bit_mm;
@@ -220,13 +221,16 @@ public:
     void applyZoneRules() {
         WellAnalysis& a = m_a;
         const std::vector<BoreholeClass> shapeClasses = m_classes;
+        const BreakoutEvidence evidence = breakoutEvidenceFor(m_t.armCount);
         applyBreakoutZoneRules(
             m_classes, [&](std::size_t i) { return a.sections[i].md_m; },
             [&](std::size_t i) {
+                if (evidence == BreakoutEvidence::AxisFixedInEarth)
+                    return a.sections[i].majorAzimuth_deg;
                 const double p1az = valueAt(m_t.p1az_deg, i);
                 return std::isfinite(p1az) ? p1az : valueAt(m_t.rb_deg, i);
             },
-            m_options.rules);
+            m_options.rules, evidence);
         for (std::size_t i = 0; i < m_rows; ++i)
             if (m_classes[i] != shapeClasses[i]) a.sections[i].cls = m_classes[i];
     }
@@ -304,6 +308,14 @@ private:
         r.centreOffset_mm = shape.centreOffset_mm;
         r.centreOffsetAzimuth_deg = w.centreOffsetAzimuth_deg;
         r.repairedArms = repaired;
+        const bool oriented = m_g.orientation(row) != WellGeometry::Orientation::Unoriented;
+        if (!oriented) {
+            // No pad-1 azimuth nor relative bearing: arm 1 points nowhere known, so neither
+            // north nor the high side is (docs/conventions.md, "No orientation"). The shape is
+            // still measured.
+            r.majorAzimuth_deg = r.centreOffsetAzimuth_deg = io::kNaN;
+            r.majorFromHighSide_deg = io::kNaN;
+        }
         r.cls = m_anyBit ? shapeClass(r, m_options.rules) : BoreholeClass::InGauge;
         m_classes[row] = r.cls;
         if (!m_azimuthKnown && p.inc_deg > 0.0) {
@@ -318,8 +330,7 @@ private:
             ++count.repairedSections;
             count.repairedArms += static_cast<std::size_t>(r.repairedArms);
         }
-        if (m_g.orientation(row) == WellGeometry::Orientation::Unoriented)
-            ++count.unorientedSections;
+        if (!oriented) ++count.unorientedSections;
     }
 
     // The step from section i - 1 to i, unless either has no data.

@@ -46,7 +46,7 @@ struct WellAnalysis {
     OrientationOffset padAzimuthOffset;  // P1AZ - f(HAZI, DEVI, RB); samples 0 when not all present
     std::size_t repairedSections = 0;    // sections with at least one arm interpolated
     std::size_t repairedArms = 0;
-    std::size_t unorientedSections = 0;  // no P1AZ nor RB: arm 1 assumed north (measured sections)
+    std::size_t unorientedSections = 0;  // no P1AZ nor RB: azimuths unknown (measured sections)
     std::vector<NoDataInterval> noData;  // runs of sections without data (class no_data)
     std::size_t noDataSections = 0;
     bool bitSizeFromSections = false;  // no bit size anywhere: median equivalent diameter used

@@ -25,9 +25,11 @@ struct WellSource {
     std::string path;
     std::string surveyPath;  // empty: the path comes from the log's own DEVI/HAZI
     std::optional<Wellhead> wellhead;
+    std::string picksPath;  // image-log picks shown beside the caliper (io::readPicks); "" none
 };
 inline bool operator==(const WellSource& a, const WellSource& b) {
-    return a.path == b.path && a.surveyPath == b.surveyPath && a.wellhead == b.wellhead;
+    return a.path == b.path && a.surveyPath == b.surveyPath && a.wellhead == b.wellhead &&
+           a.picksPath == b.picksPath;
 }
 inline bool operator!=(const WellSource& a, const WellSource& b) {
     return !(a == b);

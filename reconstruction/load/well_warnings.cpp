@@ -48,7 +48,8 @@ void warnAnalysis(const WellGeometry& g, const WellAnalysis& a, io::Diagnostics&
     if (a.unorientedSections > 0)
         d.warn(file, 0,
                std::to_string(a.unorientedSections) +
-                   " sections without P1AZ or RB: arm 1 assumed north");
+                   " sections without a pad-1 azimuth or relative bearing: orientation "
+                   "unknown, their azimuths are left empty");
     if (a.bitSizeFromSections)
         d.warn(file, 0, "no bit size given: the median equivalent diameter is used as gauge");
 }

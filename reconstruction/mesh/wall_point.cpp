@@ -80,7 +80,10 @@ WallPoint locateWallPoint(const WellGeometry& g, std::size_t firstRow, std::size
     const PathPoint& pp = g.path()[row];
     out.fromHighSide_deg = angleFromHighSide_deg(f, pp.inc_deg, pp.azi_deg, phi);
     out.azimuth_deg = inPlaneAzimuth_deg(f, phi);
-    if (!g.holeAzimuthKnown() && pp.inc_deg > 0.0) {
+    if (g.orientation(row) == WellGeometry::Orientation::Unoriented) {
+        // No pad-1 azimuth nor relative bearing: neither north nor the high side is known.
+        out.azimuth_deg = out.fromHighSide_deg = std::nan("");
+    } else if (!g.holeAzimuthKnown() && pp.inc_deg > 0.0) {
         // As the report: arm 1 placed from RB has no true azimuth; from P1AZ, no high side.
         if (g.orientation(row) == WellGeometry::Orientation::RelativeBearing)
             out.azimuth_deg = std::nan("");

@@ -16,22 +16,24 @@ using namespace caliper3d;
 // Every real log in the reference data either reads and reconstructs, or is
 // refused with a ParseError that names the file: never a crash.
 TEST(RealDataSmokeTest, EveryRealLogReadsOrIsRefusedByName) {
-    const auto folder = test::sharedData() / "real";
-    CALIPER3D_REQUIRE_DATA(folder);
+    CALIPER3D_REQUIRE_DATA(test::sharedData() / "real");
     int files = 0;
-    for (const auto& entry : std::filesystem::directory_iterator(folder)) {
-        if (!entry.is_regular_file()) continue;
-        ++files;
-        const std::string path = entry.path().string();
-        try {
-            const reconstruction::LoadedWell well =
-                reconstruction::loadWell({path, {}, {}}, reconstruction::LoadOptions{});
-            EXPECT_GT(well.table->rowCount(), 0u) << path;
-            EXPECT_GT(well.geometry->segmentCount(), 0u) << path;
-        } catch (const io::ParseError& e) {
-            EXPECT_EQ(e.file(), path);
-        } catch (const std::invalid_argument& e) {
-            EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+    for (const char* folder : {"real", "vendors"}) {
+        if (!std::filesystem::exists(test::sharedData() / folder)) continue;
+        for (const auto& entry : std::filesystem::directory_iterator(test::sharedData() / folder)) {
+            if (!entry.is_regular_file()) continue;
+            ++files;
+            const std::string path = entry.path().string();
+            try {
+                const reconstruction::LoadedWell well =
+                    reconstruction::loadWell({path, {}, {}, {}}, reconstruction::LoadOptions{});
+                EXPECT_GT(well.table->rowCount(), 0u) << path;
+                EXPECT_GT(well.geometry->segmentCount(), 0u) << path;
+            } catch (const io::ParseError& e) {
+                EXPECT_EQ(e.file(), path);
+            } catch (const std::invalid_argument& e) {
+                EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+            }
         }
     }
     EXPECT_GE(files, 3);

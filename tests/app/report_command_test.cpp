@@ -2,6 +2,7 @@
 // (synth profiles, an analytic survey) and on the real FMI log.
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <sstream>
 #include <string>
@@ -373,4 +374,47 @@ TEST(ReportCommandTest, TieInGivesTheSameTvdWithAndWithoutASurvey) {
         EXPECT_DOUBLE_EQ(b.number(i, "north_m"), a.number(i, "north_m"));
         EXPECT_DOUBLE_EQ(b.number(i, "east_m"), a.number(i, "east_m"));
     }
+}
+
+// Image-log picks beside the caliper's breakout (the example profile: 60-80 m, axis 135 deg):
+// a pick on its other side (317 deg) agrees within 2 deg; one in round hole is not compared.
+TEST(ReportCommandTest, PicksAreReportedBesideTheCaliperZones) {
+    const std::string log = synth("example", 300.0, 0.1);
+    const auto picks = scratch("report_picks_input.csv");
+    std::ofstream(picks) << "md,azimuth,type\n70,317,BREAKOUT\n200,40,BREAKOUT\n";
+    const auto summary = scratch("report_picks_summary.jsonl");
+    const CommandRun r =
+        runCaliper3d("report " + log + " -o " + scratch("report_picks.csv").string() + " --picks " +
+                     picks.string() + " --summary " + summary.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("1 of 1 caliper breakout zones picked"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("over 1 picks, 1 within 20 deg"), std::string::npos) << r.output;
+    std::ifstream in(summary);
+    const std::string line((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(line.find("\"breakouts\":{\"zones\":1"), std::string::npos) << line;
+    EXPECT_NE(line.find("\"shmax_azimuth_deg\":45."), std::string::npos) << line;
+}
+
+// The same well with its orientation curves left out: the breakout is measured, every azimuth
+// is empty (the summary's are null) and the warning says why.
+TEST(ReportCommandTest, WithoutOrientationNoAzimuthIsInvented) {
+    const std::string log = synth("example", 300.0, 0.1);
+    const auto csv = scratch("report_unoriented.csv");
+    const auto summary = scratch("report_unoriented_summary.jsonl");
+    const CommandRun r =
+        runCaliper3d("report " + log + " -o " + csv.string() +
+                     " --pad-azimuth none --relative-bearing none --summary " + summary.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("orientation unknown"), std::string::npos) << r.output;
+    const Csv report = readCsv(csv);
+    std::size_t breakouts = 0;
+    for (std::size_t i = 0; i < report.rows.size(); ++i) {
+        EXPECT_TRUE(std::isnan(report.number(i, "major_azimuth_deg")));
+        breakouts += report.rows[i].at("class") == "breakout";
+    }
+    EXPECT_GT(breakouts, 150u);
+    std::ifstream in(summary);
+    const std::string line((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(line.find("\"mean_azimuth_deg\":null"), std::string::npos) << line;
+    EXPECT_NE(line.find("\"shmax_azimuth_deg\":null"), std::string::npos) << line;
 }

@@ -17,8 +17,8 @@ TEST(SceneAssemblyTest, WellheadsPlaceWellsRelativeToTheFirst) {
     io::writeColumnTextFile(
         log.string(),
         reconstruction::makeSyntheticWell(reconstruction::syntheticProfile("circle", 20.0, 0.5)));
-    app::WellSource first{log.string(), {}, reconstruction::Wellhead{1000.0, 2000.0, 50.0}};
-    app::WellSource second{log.string(), {}, reconstruction::Wellhead{1100.0, 1950.0, 40.0}};
+    app::WellSource first{log.string(), {}, reconstruction::Wellhead{1000.0, 2000.0, 50.0}, {}};
+    app::WellSource second{log.string(), {}, reconstruction::Wellhead{1100.0, 1950.0, 40.0}, {}};
     const app::AssembledScene scene = app::assembleScene({first, second}, app::LoadOptions{});
     ASSERT_EQ(scene.wells, 2);
     ASSERT_EQ(scene.failures, 0);
@@ -40,8 +40,8 @@ TEST(SceneAssemblyTest, AMissingSurveyFailsThatWellOnly) {
     io::writeColumnTextFile(
         log.string(),
         reconstruction::makeSyntheticWell(reconstruction::syntheticProfile("circle", 20.0, 0.5)));
-    app::WellSource good{log.string(), {}, {}};
-    app::WellSource bad{log.string(), test::scratch("no_such_survey.csv").string(), {}};
+    app::WellSource good{log.string(), {}, {}, {}};
+    app::WellSource bad{log.string(), test::scratch("no_such_survey.csv").string(), {}, {}};
     const app::AssembledScene scene = app::assembleScene({bad, good}, app::LoadOptions{});
     EXPECT_EQ(scene.wells, 1);
     EXPECT_EQ(scene.failures, 1);
@@ -60,8 +60,10 @@ TEST(SceneAssemblyTest, WellsWithDifferentLogTopsArePlacedAtTheirTrueDepths) {
             b << 27.7 + 0.5 * i << " 4.25 4.25 4.25 4.25 4.25 4.25 10 0 0\n";
         }
     }
-    app::WellSource first{fromSurface.string(), {}, reconstruction::Wellhead{1000.0, 2000.0, 50.0}};
-    app::WellSource second{fromBelow.string(), {}, reconstruction::Wellhead{1030.0, 2000.0, 50.0}};
+    app::WellSource first{
+        fromSurface.string(), {}, reconstruction::Wellhead{1000.0, 2000.0, 50.0}, {}};
+    app::WellSource second{
+        fromBelow.string(), {}, reconstruction::Wellhead{1030.0, 2000.0, 50.0}, {}};
     const app::AssembledScene scene = app::assembleScene({first, second}, app::LoadOptions{});
     ASSERT_EQ(scene.wells, 2);
     const reconstruction::Ned a = scene.geometries[0]->centre(0);

@@ -145,7 +145,7 @@ TEST(WellOptionTableTest, AManifestRowPassesEachOptionCellToTheVerbsThatTakeIt) 
 }
 
 TEST(WellOptionTableTest, OptionTextsRoundTripAWellAndItsOptions) {
-    app::WellSource well{"w.las", "/data/s.csv", reconstruction::Wellhead{1.5, -2.25, 3.0}};
+    app::WellSource well{"w.las", "/data/s.csv", reconstruction::Wellhead{1.5, -2.25, 3.0}, {}};
     app::LoadOptions options;
     options.read.armCount = 8;
     options.read.depthUnit = io::LengthUnit::Foot;
@@ -157,7 +157,7 @@ TEST(WellOptionTableTest, OptionTextsRoundTripAWellAndItsOptions) {
     EXPECT_EQ(texts.at("arms"), "8");
     EXPECT_EQ(texts.at("bit-size"), "155.575mm");
     EXPECT_EQ(texts.count("nulls"), 0u) << "a default is not written";
-    app::WellSource backWell{"w.las", "", {}};
+    app::WellSource backWell{"w.las", "", {}, {}};
     app::LoadOptions backOptions;
     app::applyOptionTexts(texts, backWell, backOptions);
     EXPECT_EQ(backWell, well);

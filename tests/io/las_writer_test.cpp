@@ -182,11 +182,11 @@ TEST(LasWriterTest, ALargeTableReadBackOnTwoThreadsInSmallBlocksIsExact) {
 
 // Each real log, read, written and read again, is the same table.
 TEST(LasWriterTest, RealLogsRoundTripExactly) {
-    const auto dir = caliper3d::test::sharedData() / "real";
-    CALIPER3D_REQUIRE_DATA(dir);
-    for (const char* name : {"1AA072209208W400_WL_0477502_STAR_FIELD.las",
-                             "1AA063409108W400_FMI_SONIC_MAIN.las", "multifinger40_data.txt"}) {
+    const auto dir = caliper3d::test::sharedData();
+    CALIPER3D_REQUIRE_DATA(dir / "real");
+    for (const std::string& name : caliper3d::test::referenceLogs()) {
         SCOPED_TRACE(name);
+        if (!std::filesystem::exists(dir / name)) continue;
         const LoadedLog first = loadCaliperLog((dir / name).string(), ReadOptions{});
         std::ostringstream out;
         writeLas(out, first.table);

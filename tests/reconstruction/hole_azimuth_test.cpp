@@ -92,6 +92,34 @@ TEST(HoleAzimuthTest, UnknownToolKeepsNoIdentityAndWarns) {
     EXPECT_TRUE(hasWarningContaining(diagnostics, "hole azimuth unknown"));
 }
 
+// A 20 degree hole of unknown azimuth: its TVD is that of any 20 degree hole, its departure is
+// not drawn in any direction (the STAR log used to lean 0.73 m north over 180 m).
+TEST(HoleAzimuthTest, UnknownAzimuthDrawsNoDeparture) {
+    io::SectionTable t;
+    t.armCount = 3;
+    for (int i = 0; i <= 100; ++i) {
+        t.depth_m.push_back(100.0 + i);
+        for (int k = 0; k < 3; ++k) t.radius_mm.push_back(100.0);
+        t.devi_deg.push_back(20.0);
+        t.p1az_deg.push_back(0.0);
+    }
+    t.holeAzimuth = io::SectionTable::HoleAzimuth::Unknown;
+    const WellGeometry g(std::make_shared<const io::SectionTable>(t), GeometryOptions{});
+    ASSERT_FALSE(g.holeAzimuthKnown());
+    const Ned bottom = g.centre(100);
+    EXPECT_EQ(bottom.x, 0.0);
+    EXPECT_EQ(bottom.y, 0.0);
+    // The tie-in bends from vertical at the wellhead to 20 degrees at 100 m, then straight.
+    const double straight = 100.0 * std::cos(20.0 * 3.14159265358979323846 / 180.0);
+    EXPECT_NEAR(bottom.z - g.centre(0).z, straight, 1e-6);
+
+    // With a survey (azimuth 90) it departs east.
+    GeometryOptions survey;
+    survey.survey = {{0.0, 0.0, 90.0}, {100.0, 20.0, 90.0}, {200.0, 20.0, 90.0}};
+    const WellGeometry surveyed(std::make_shared<const io::SectionTable>(t), survey);
+    EXPECT_GT(surveyed.centre(100).y, 30.0);
+}
+
 TEST(HoleAzimuthTest, StarLogHasNoHoleAzimuthAndTheReportSaysNoData) {
     const auto file = test::sharedData() / "real" / "1AA072209208W400_WL_0477502_STAR_FIELD.las";
     CALIPER3D_REQUIRE_DATA(file);
@@ -128,16 +156,16 @@ TEST(HoleAzimuthTest, StarLogHasNoHoleAzimuthAndTheReportSaysNoData) {
 
 TEST(HoleAzimuthTest, PlanNamesTheSourceForInfo) {
     io::LogInfo info;
-    info.curves = {{"DEPT", "M", "depth", 0},
-                   {"P1AZ", "DEG", "pad-1 azimuth", 0},
-                   {"DEVI", "DEG", "deviation", 0},
-                   {"RB", "DEG", "relative bearing", 0}};
+    info.curves = {{"DEPT", "M", "depth", 0, {}},
+                   {"P1AZ", "DEG", "pad-1 azimuth", 0, {}},
+                   {"DEVI", "DEG", "deviation", 0, {}},
+                   {"RB", "DEG", "relative bearing", 0, {}}};
     info.location.serviceCompany = "Schlumberger";
     EXPECT_EQ(io::holeAzimuthPlan(info).kind, io::SectionTable::HoleAzimuth::Derived);
     EXPECT_EQ(io::holeAzimuthPlan(info, true).kind, io::SectionTable::HoleAzimuth::Read);
     info.location.serviceCompany = "Baker Hughes";
     EXPECT_EQ(io::holeAzimuthPlan(info).kind, io::SectionTable::HoleAzimuth::Unknown);
-    info.curves.push_back({"HAZI", "DEG", "hole azimuth", 0});
+    info.curves.push_back({"HAZI", "DEG", "hole azimuth", 0, {}});
     EXPECT_EQ(io::holeAzimuthPlan(info).description, "from HAZI");
 }
 

@@ -9,6 +9,7 @@
 
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
+#include "reconstruction/path/course_dogleg.h"
 #include "support/reconstruction_support.h"
 
 #include "reconstruction/synthetic/synthetic_well.h"
@@ -116,7 +117,8 @@ void expectSequentialGeometry(const WellGeometry& g) {
         if (i < t.hazi_deg.size() && std::isfinite(t.hazi_deg[i])) azi = t.hazi_deg[i];
         stations[i] = {t.depth_m[i], inc, azi};
     }
-    const std::vector<PathPoint> expected = minimumCurvaturePath(stations);
+    std::vector<PathPoint> expected = minimumCurvaturePath(stations);
+    setCourseLengthDls(expected);  // dogleg severity over the 30 m course, as the geometry's
     ASSERT_EQ(g.path().size(), expected.size());
     std::size_t differ = 0;
     for (std::size_t i = 0; i < expected.size(); ++i) {

@@ -59,8 +59,8 @@ bool hasWarning(const io::Diagnostics& d, const std::string& file, std::size_t l
 
 TEST(LoadWellTest, SurveyAndWellheadPlaceTheGeometryAlongTheSurvey) {
     const std::string log = writeLog("load_well_placed.txt");
-    const WellSource source{log, writeSurvey("load_well_placed_survey.csv", false),
-                            Wellhead{1100.0, 1950.0, 40.0}};
+    const WellSource source{
+        log, writeSurvey("load_well_placed_survey.csv", false), Wellhead{1100.0, 1950.0, 40.0}, {}};
     const Wellhead origin{1000.0, 2000.0, 50.0};
     const LoadedWell well = loadWell(source, LoadOptions{}, origin);
     ASSERT_TRUE(well.table);
@@ -80,7 +80,7 @@ TEST(LoadWellTest, SurveyAndWellheadPlaceTheGeometryAlongTheSurvey) {
 }
 
 TEST(LoadWellTest, WithoutSurveyOrWellheadTheWellStandsAtTheOrigin) {
-    const LoadedWell well = loadWell({writeLog("load_well_plain.txt"), {}, {}}, LoadOptions{});
+    const LoadedWell well = loadWell({writeLog("load_well_plain.txt"), {}, {}, {}}, LoadOptions{});
     for (std::size_t row = 0; row < well.table->rowCount(); row += 9) {
         const Ned p = well.geometry->centre(row);
         EXPECT_NEAR(p.x, 0.0, 1e-9);
@@ -94,11 +94,12 @@ TEST(LoadWellTest, TheTableCarriesTheLogsWellName) {
     io::LasWriteOptions named;
     named.wellName = "SUNCOR LEWIS 7-22-92-8";
     io::writeLasFile(las.string(), makeSyntheticWell(syntheticProfile("circle", 10.0, 0.5)), named);
-    EXPECT_EQ(loadWell({las.string(), {}, {}}, LoadOptions{}).table->wellName,
+    EXPECT_EQ(loadWell({las.string(), {}, {}, {}}, LoadOptions{}).table->wellName,
               "SUNCOR LEWIS 7-22-92-8");
     // Column text has no header to name it.
-    EXPECT_EQ(loadWell({writeLog("load_well_unnamed.txt"), {}, {}}, LoadOptions{}).table->wellName,
-              "");
+    EXPECT_EQ(
+        loadWell({writeLog("load_well_unnamed.txt"), {}, {}, {}}, LoadOptions{}).table->wellName,
+        "");
 }
 
 TEST(LoadWellTest, TheTableCarriesTheUnitsTheFileWrote) {
@@ -121,7 +122,7 @@ TEST(LoadWellTest, TheTableCarriesTheUnitsTheFileWrote) {
     }
     ASSERT_FALSE(depthUnit.empty());
     ASSERT_FALSE(caliperUnit.empty());
-    const auto table = loadWell({las.string(), {}, {}}, LoadOptions{}).table;
+    const auto table = loadWell({las.string(), {}, {}, {}}, LoadOptions{}).table;
     EXPECT_EQ(table->fileDepthUnit, depthUnit);
     EXPECT_EQ(table->fileCaliperUnit, caliperUnit);
 }
@@ -132,7 +133,7 @@ TEST(LoadWellTest, DiagnosticsHoldTheSurveysWarningThenTheReaders) {
     // A truncated last row: skipped by the reader with a warning on its line.
     { std::ofstream(log, std::ios::app) << "40.5 1.0 2.0\n"; }
     const std::string survey = writeSurvey("load_well_warned_survey.csv", true);
-    const LoadedWell well = loadWell({log, survey, {}}, LoadOptions{});
+    const LoadedWell well = loadWell({log, survey, {}, {}}, LoadOptions{});
     const io::Diagnostics& d = well.diagnostics;
     EXPECT_TRUE(hasWarning(d, survey, 1, "disagree with minimum curvature")) << d.warningCount;
     EXPECT_TRUE(hasWarning(d, log, lines + 1, "(truncated file?); skipped")) << d.warningCount;
@@ -148,20 +149,20 @@ TEST(LoadWellTest, GeometryWarningsJoinUnlessTheCallerAnalysesTheWell) {
         table.radius_mm[row * static_cast<std::size_t>(table.armCount)] = 0.0;
     const auto path = test::scratch("load_well_repaired.txt").string();
     io::writeColumnTextFile(path, table);
-    const LoadedWell scanned = loadWell({path, {}, {}}, LoadOptions{});
+    const LoadedWell scanned = loadWell({path, {}, {}, {}}, LoadOptions{});
     EXPECT_TRUE(hasWarning(scanned.diagnostics, path, 0,
                            std::to_string(table.rowCount()) + " arms interpolated on " +
                                std::to_string(table.rowCount()) + " sections"));
     LoadOptions analysed;
     analysed.geometryWarnings = false;
-    EXPECT_EQ(loadWell({path, {}, {}}, analysed).diagnostics.warningCount, 0u);
+    EXPECT_EQ(loadWell({path, {}, {}, {}}, analysed).diagnostics.warningCount, 0u);
 }
 
 TEST(LoadWellTest, BadSurveyFailsNamingItsFileAndLine) {
     const auto survey = test::scratch("load_well_bad_survey.csv");
     { std::ofstream(survey) << "MD,Inc,Azi\n0,0,0\n10,abc,0\n20,1,0\n"; }
     try {
-        loadWell({writeLog("load_well_bad.txt"), survey.string(), {}}, LoadOptions{});
+        loadWell({writeLog("load_well_bad.txt"), survey.string(), {}, {}}, LoadOptions{});
         FAIL() << "a bad survey was accepted";
     } catch (const io::ParseError& e) {
         EXPECT_EQ(e.file(), survey.string());
@@ -185,7 +186,8 @@ TEST(LoadWellTest, CheckedSurveyMeasuresHowFarItsPositionsAreFromMinimumCurvatur
 
 TEST(LoadWellTest, SceneOriginIsTheFirstWellsWellhead) {
     EXPECT_EQ(sceneOrigin({}).easting_m, 0.0);
-    const Wellhead origin = sceneOrigin({{"a", {}, Wellhead{1.0, 2.0, 3.0}}, {"b", {}, {}}});
+    const Wellhead origin =
+        sceneOrigin({{"a", {}, Wellhead{1.0, 2.0, 3.0}, {}}, {"b", {}, {}, {}}});
     EXPECT_EQ(origin.easting_m, 1.0);
     EXPECT_EQ(origin.northing_m, 2.0);
     EXPECT_EQ(origin.elevation_m, 3.0);

@@ -1,0 +1,94 @@
+// Dogleg severity over a 30 m course (docs/analysis.md, "Dogleg severity").
+#include "reconstruction/path/course_dogleg.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "reconstruction/analysis/well_analysis.h"
+#include "reconstruction/load/well_input.h"
+#include "test_support.h"
+
+using namespace caliper3d;
+using namespace caliper3d::reconstruction;
+
+namespace {
+std::vector<PathPoint> stations(double top, double bottom, double step, double (*inc)(double),
+                                double (*azi)(double)) {
+    std::vector<PathPoint> path;
+    for (double md = top; md <= bottom + 1e-9; md += step) {
+        PathPoint p;
+        p.md = md;
+        p.inc_deg = inc(md);
+        p.azi_deg = azi(md);
+        path.push_back(p);
+    }
+    return path;
+}
+}  // namespace
+
+// A build of 3 deg/30 m at a fixed azimuth: 3.000 wherever the course lies inside it, and the
+// hold after it 0 once the course has left the build.
+TEST(CourseDoglegTest, ConstantBuildGivesItsRateAndAHoldGivesNone) {
+    std::vector<PathPoint> path = stations(
+        0.0, 300.0, 0.1, [](double md) { return md < 150.0 ? md / 10.0 : 15.0; },
+        [](double) { return 30.0; });
+    setCourseLengthDls(path);
+    for (const PathPoint& p : path) {
+        if (p.md >= 20.0 && p.md <= 130.0) {
+            EXPECT_NEAR(p.dls_degPer30m, 3.0, 1e-6) << p.md;
+        }
+        if (p.md >= 170.0) {
+            EXPECT_NEAR(p.dls_degPer30m, 0.0, 1e-6) << p.md;
+        }
+    }
+}
+
+// A turn of 3 deg/30 m in azimuth at 30 degrees inclination: 1.5 deg/30 m (= 3 sin 30).
+TEST(CourseDoglegTest, TurnAtThirtyDegreesGivesHalfItsRate) {
+    std::vector<PathPoint> path = stations(
+        0.0, 300.0, 0.1, [](double) { return 30.0; }, [](double md) { return 10.0 + md / 10.0; });
+    setCourseLengthDls(path);
+    EXPECT_NEAR(path[1500].dls_degPer30m, 1.5, 1e-3);
+}
+
+// A near-vertical log whose DEVI and HAZI are noisy from sample to sample (DEVI 0.3 +- 0.2 deg,
+// HAZI anywhere): between samples the dogleg severity reaches tens of degrees per 30 m, over
+// the course the hole is straight to within a fraction of a degree.
+TEST(CourseDoglegTest, NoisyNearVerticalLogIsStraightOverTheCourse) {
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> devi(0.1, 0.5), hazi(0.0, 360.0);
+    std::vector<PathPoint> path;
+    for (int i = 0; i < 3000; ++i) {
+        PathPoint p;
+        p.md = 100.0 + 0.0762 * i;
+        p.inc_deg = devi(random);
+        p.azi_deg = hazi(random);
+        path.push_back(p);
+    }
+    double perSample = 0.0;
+    for (std::size_t i = 1; i < path.size(); ++i) {
+        const MinimumCurvatureStep s =
+            minimumCurvatureStep({path[i - 1].md, path[i - 1].inc_deg, path[i - 1].azi_deg},
+                                 {path[i].md, path[i].inc_deg, path[i].azi_deg});
+        perSample = std::max(perSample, s.dogleg_rad * 180.0 / 3.14159265358979 * 30.0 / 0.0762);
+    }
+    EXPECT_GT(perSample, 50.0);
+    setCourseLengthDls(path);
+    for (const PathPoint& p : path) EXPECT_LT(p.dls_degPer30m, 0.5) << p.md;
+}
+
+// The STAR log (inclination at most 0.5 degrees) used to report up to 122.6 deg/30 m.
+TEST(CourseDoglegTest, StarLogReportsAStraightHole) {
+    const auto file = test::sharedData() / "real" / "1AA072209208W400_WL_0477502_STAR_FIELD.las";
+    CALIPER3D_REQUIRE_DATA(file);
+    auto table = std::make_shared<const io::SectionTable>(
+        loadWellTable(file.string(), io::ReadOptions{}, false, nullptr));
+    const WellGeometry geometry(table, GeometryOptions{});
+    double worst = 0.0;
+    for (const PathPoint& p : geometry.path()) worst = std::max(worst, p.dls_degPer30m);
+    EXPECT_LT(worst, 1.0);
+}
