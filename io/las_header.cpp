@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
+#include <utility>
 
 #include "io/number_parsing.h"
 #include "io/parse_error.h"
@@ -67,7 +68,7 @@ const LasItem* LasHeader::parameter(std::string_view mnemonic) const {
     return find(parameters, mnemonic);
 }
 
-bool splitLasItem(std::string_view line, LasItem& item) {
+bool splitLasItem(std::string_view line, LasItem& item, bool curveLine) {
     // The description follows the last colon (LAS 2.0, section 5.4); a line
     // without one has no description.
     std::string_view left = line;
@@ -78,14 +79,22 @@ bool splitLasItem(std::string_view line, LasItem& item) {
         description = line.substr(colon + 1);
     }
     left = trim(left);
-    // Mnemonic and unit are split by the first '.', except that a mnemonic may
-    // itself end in a dot ("Cond..MS/M", "I. Res..OHM-M"): then the split is
-    // at the second dot of the first "..".
-    std::size_t dot = left.find("..");
-    if (dot != std::string_view::npos)
-        ++dot;
-    else
-        dot = left.find('.');
+    // A mnemonic written with a leading period (".ILM .OHMM") is read without
+    // it, as lasio reads it; a lone period is the separator of a nameless item.
+    if (left.size() > 1 && left.front() == '.' && left.find('.', 1) != std::string_view::npos)
+        left.remove_prefix(1);
+    // Mnemonic and unit are split by the first '.', except that a curve's
+    // mnemonic may itself end in a dot ("Cond..MS/M", "I. Res..OHM-M"): then
+    // the split is at the second dot of the first ".." that follows a
+    // non-blank. "DEPT  ..1IN" is DEPT in the unit ".1IN" (lasio's rule).
+    std::size_t dot = std::string_view::npos;
+    if (curveLine) {
+        const std::size_t twin = left.find("..");
+        if (twin != std::string_view::npos && twin > 0 &&
+            !std::isspace(static_cast<unsigned char>(left[twin - 1])))
+            dot = twin + 1;
+    }
+    if (dot == std::string_view::npos) dot = left.find('.');
     if (dot == std::string_view::npos) return false;
     item.mnemonic = std::string(trim(left.substr(0, dot)));
     std::string_view rest = left.substr(dot + 1);
@@ -136,6 +145,16 @@ void readVersionAndNull(LasHeader& header, const Warn& warn) {
     } else {
         warn(1, "no VERS item; reading as LAS 2.0");
     }
+    if (header.version < 2.0) {
+        // LAS 1.2 writes a ~W item's value after the colon, its description
+        // before it ("WELL.  WELL: ANY ET AL OIL WELL #12"), except STRT,
+        // STOP, STEP and NULL (LAS 1.2, section 3.2; lasio reads it so).
+        for (LasItem& item : header.well) {
+            const std::string m = upper(item.mnemonic);
+            if (m == "STRT" || m == "STOP" || m == "STEP" || m == "NULL") continue;
+            if (!item.description.empty()) std::swap(item.value, item.description);
+        }
+    }
     if (const LasItem* wrap = find(header.versionItems, "WRAP"))
         header.wrap = upper(wrap->value) == "YES";
     if (const LasItem* dlm = find(header.versionItems, "DLM")) {
@@ -172,7 +191,7 @@ void addItem(LasHeader& header, Section section, std::string_view line, std::siz
     const std::string& file = header.file;
     LasItem item;
     item.line = lineNumber;
-    if (!splitLasItem(line, item)) {
+    if (!splitLasItem(line, item, section == Section::Curves)) {
         // Outside ~C a bad line can be skipped safely; inside, every later
         // column would shift onto the wrong curve.
         if (section != Section::Curves) {
@@ -184,6 +203,9 @@ void addItem(LasHeader& header, Section section, std::string_view line, std::siz
                          "expected a header line 'MNEM.UNIT VALUE : DESCRIPTION', found '" +
                              std::string(line.substr(0, 60)) + "'");
     }
+    if (line.size() > 1 && line.front() == '.' && !item.mnemonic.empty())
+        warn(lineNumber, "mnemonic '" + item.mnemonic +
+                             "' is written with a leading period; read as '" + item.mnemonic + "'");
     switch (section) {
         case Section::Version:
             header.versionItems.push_back(item);

@@ -59,7 +59,8 @@ LasHeader parseLasHeader(std::string_view text, const std::string& file, Diagnos
 bool isLasDataTitle(std::string_view title);
 
 // Splits one header line into its parts (exposed for tests). Returns false
-// for a line that has no '.' separating mnemonic and unit.
-bool splitLasItem(std::string_view line, LasItem& item);
+// for a line that has no '.' separating mnemonic and unit. `curveLine`: a ~C
+// line, where a mnemonic may end in a dot ("Cond..MS/M").
+bool splitLasItem(std::string_view line, LasItem& item, bool curveLine = true);
 
 }  // namespace caliper3d::io

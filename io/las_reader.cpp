@@ -116,6 +116,9 @@ LasLog readLas(std::string_view text, const std::string& file, const LasReadOpti
         log.curves.push_back(std::move(curve));
     }
     RowFormat format = lasRowFormat(h, columns, options.nullPolicy, file, 0);
+    // Every curve but the index: a value that is not a number is read as null and counted.
+    format.lenient.assign(columns.size(), 1);
+    format.lenient.front() = 0;
     const std::string_view data = text.substr(h.dataBegin, h.dataEnd - h.dataBegin);
     if (!h.wrap) settleLasColumns(data, h.dataFirstLine - 1, columns, format, d);
     CurveSink sink(log);
@@ -123,6 +126,7 @@ LasLog readLas(std::string_view text, const std::string& file, const LasReadOpti
     parseRows(format, data, h.dataFirstLine, true, sink, run);
     if (run.error) std::rethrow_exception(run.error);
     d.merge(run.diagnostics);
+    warnBadValues(format, run.bad, d);
     for (std::size_t c = 0; c < log.curves.size(); ++c)
         log.curves[c].nulls = log.curves[c].text ? 0 : run.nulls[c];
     return log;

@@ -32,9 +32,11 @@ struct LogInfo {
     double bottom_m = 0.0;
     double step_m = 0.0;  // median step
     int arms = 0;
-    std::string armSource;        // "radii R1..R6", "diameters C1, C2", ...
-    double bitSize_mm = kNaN;     // smallest bit size over the log
-    double bitSizeMax_mm = kNaN;  // largest (differs when a BS curve steps down the hole)
+    std::string armSource;          // "radii R1..R6", "diameters C1, C2", ...
+    double bitSize_mm = kNaN;       // smallest bit size over the log
+    double bitSizeMax_mm = kNaN;    // largest (differs when a BS curve steps down the hole)
+    std::string declaredNull;       // LAS: the header's NULL as written ("" when none is declared)
+    std::size_t firstDataLine = 0;  // 1-based line of the first data row in the file
     std::vector<CurveInfo> curves;
     Diagnostics diagnostics;
     bool cancelled = false;  // the read was stopped by its cancellation token

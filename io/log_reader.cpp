@@ -172,11 +172,11 @@ LogInfo describeLog(const std::string& path, const ReadOptions& options) {
 }
 
 LogInfo describeLog(const std::string& path, const ReadOptions& options,
-                    const std::function<void(const SectionTable&)>& onRows) {
+                    const std::function<void(const SectionTable&)>& onRows, bool surveyGiven) {
     const std::string head = fileHead(path);
     if (!hasUtf16Mark(head) && looksLikeSurvey(head)) return describeSurvey(path, options);
     LogInfo info = streamCaliperLog(path, options, onRows);
-    const HoleAzimuthPlan plan = holeAzimuthPlan(info);
+    const HoleAzimuthPlan plan = holeAzimuthPlan(info, surveyGiven);
     info.holeAzimuth = plan.description;
     if (plan.kind == SectionTable::HoleAzimuth::Unknown)
         info.diagnostics.warn(path, 0,
@@ -208,6 +208,10 @@ std::string formatLogInfo(const LogInfo& info) {
         out << "bit size:  " << info.bitSize_mm << " mm\n";
     else
         out << "bit size:  unknown (give --bit-size)\n";
+    if (!info.declaredNull.empty())
+        out << "null:      " << info.declaredNull << " (declared in the header)\n";
+    else if (info.format.rfind("LAS", 0) == 0)
+        out << "null:      none declared in the header\n";
     if (!info.holeAzimuth.empty()) out << "hole azi:  " << info.holeAzimuth << "\n";
     out << (info.survey ? "columns:\n" : "curves:\n");
     // Characters, not bytes: a decoded UTF-16 header may hold non-ASCII mnemonics.

@@ -47,8 +47,10 @@ LoadedLog loadCaliperText(std::string_view text, const std::string& name,
 LogInfo describeLog(const std::string& path, const ReadOptions& options);
 // The same, handing each chunk of a caliper log's rows to `onRows` (never
 // called for a survey), for a caller that checks the data as it streams by.
+// `surveyGiven`: a --survey gives the path, so the hole azimuth is known.
 LogInfo describeLog(const std::string& path, const ReadOptions& options,
-                    const std::function<void(const SectionTable&)>& onRows);
+                    const std::function<void(const SectionTable&)>& onRows,
+                    bool surveyGiven = false);
 std::string formatLogInfo(const LogInfo& info);
 
 }  // namespace caliper3d::io

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <functional>
 #include <memory>
@@ -11,10 +12,12 @@
 
 #include "io/curve_plan.h"
 #include "io/las_header.h"
+#include "io/las_reader.h"
 #include "io/layout/column_text_layout.h"
 #include "io/layout/format_sniffing.h"
 #include "io/layout/las_layout.h"
 #include "io/median.h"
+#include "io/number_parsing.h"
 #include "io/parse_error.h"
 #include "io/stream/depth_order.h"
 #include "io/stream/piece_sharing.h"
@@ -178,6 +181,7 @@ private:
                 m_lineNumber = lines;
                 const LasHeader header = parseLasHeader(headerText, m_name, &m_info.diagnostics);
                 m_layout = lasLayout(header, m_name, m_options, m_info);
+                keepDeclaredRange(header);
                 return;
             }
             headerText.append(run);
@@ -190,10 +194,67 @@ private:
         throw ParseError(m_name, 0, 0, "expected a ~A (data) section, found none");
     }
 
+    // STRT, STOP and STEP as the header declares them, to check against the data.
+    void keepDeclaredRange(const LasHeader& header) {
+        const char* names[3] = {"STRT", "STOP", "STEP"};
+        for (int k = 0; k < 3; ++k) {
+            const LasItem* item = header.wellItem(names[k]);
+            double v = 0.0;
+            if (!item || !parseNumber(item->value, v) || !std::isfinite(v)) continue;
+            // A declared range that is itself "unknown" says nothing.
+            if ((header.hasNull && v == header.null) || isCommonNullNumber(v)) continue;
+            m_declared[k] = *item;
+            m_declaredValue[k] = v;
+        }
+    }
+
+    // A counted warning for each of STRT, STOP, STEP that disagrees with the data read.
+    void checkDeclaredRange() {
+        const double scale = m_layout.plan.depthScale;
+        if (!(scale > 0.0) || m_info.rows == 0) return;
+        const double top = m_info.top_m / scale, bottom = m_info.bottom_m / scale;
+        const double step = m_info.step_m / scale;
+        // Written to three decimals at least: a thousandth of the file's unit is rounding.
+        const double tolerance = 1e-3 + 1e-9 * std::max(std::abs(top), std::abs(bottom));
+        auto text = [](double v) {
+            char buffer[32];
+            std::snprintf(buffer, sizeof buffer, "%g", v);
+            return std::string(buffer);
+        };
+        const std::string unit = m_info.depthUnit.empty() ? "" : " " + m_info.depthUnit;
+        const std::string range = "the data run from " + text(top) + " to " + text(bottom) + unit;
+        if (m_declared[0] && m_declared[1]) {
+            const double lo = std::min(m_declaredValue[0], m_declaredValue[1]);
+            const double hi = std::max(m_declaredValue[0], m_declaredValue[1]);
+            for (int k = 0; k < 2; ++k) {
+                const double v = m_declaredValue[k];
+                const double data = v == lo ? top : bottom;
+                if (std::abs(v - data) <= tolerance && !(lo == hi && top != bottom)) continue;
+                const LasItem& item = *m_declared[k];
+                m_info.diagnostics.warn(m_name, item.line,
+                                        "header " + item.mnemonic + " " + item.value +
+                                            " disagrees with the data: " + range +
+                                            "; the data are used");
+            }
+        }
+        if (m_declared[2] && m_declaredValue[2] != 0.0 && m_info.rows > 1) {
+            // STEP 0 declares a varying step (LAS 2.0).
+            const double declared = std::abs(m_declaredValue[2]);
+            if (std::abs(declared - step) > 1e-3 * std::max(declared, step) + 1e-9) {
+                const LasItem& item = *m_declared[2];
+                m_info.diagnostics.warn(m_name, item.line,
+                                        "header STEP " + item.value +
+                                            " disagrees with the data: their step is " +
+                                            text(step) + unit + " (median); the data are used");
+            }
+        }
+    }
+
     void dataLoop(std::string_view run) {
         m_order.emplace(m_layout.plan.emptyTable(m_layout.columns), m_options.depthOrder, m_name,
                         m_layout.plan.depthScale, m_stream.chunkRows);
         m_nulls.assign(m_layout.columns.size(), 0);
+        m_bad.assign(m_layout.columns.size(), BadValues{});
         m_depthDiffer.assign(m_layout.plan.otherDepthColumns.size(), 0);
         m_pieces.resize(m_stream.threads > 1 && !m_layout.format.wrapped ? kMaxPieces : 1);
         // Joined when the data loop ends, however it ends, while the block it reads still exists.
@@ -262,7 +323,7 @@ private:
             if (piece.run.error) rethrowAfter(piece.run.error, before);
             for (std::size_t& line : piece.rows.lines) line += before;
             for (Warning& w : piece.run.diagnostics.warnings) w.line += before;
-            take(piece, emit);
+            take(piece, emit, before);
             m_lineNumber += piece.run.linesConsumed;
             if (piece.run.stopped) {
                 stop = m_pieceBegin[i] + piece.run.stopOffset;
@@ -272,8 +333,12 @@ private:
         m_order->emitReady(emit);
     }
 
-    void take(Piece& piece, const DepthOrdering::Emit& emit) {
+    void take(Piece& piece, const DepthOrdering::Emit& emit, std::size_t linesBefore) {
         for (std::size_t c = 0; c < m_nulls.size(); ++c) m_nulls[c] += piece.run.nulls[c];
+        for (std::size_t c = 0; c < m_bad.size() && c < piece.run.bad.size(); ++c)
+            m_bad[c].add(piece.run.bad[c], linesBefore);
+        if (m_info.firstDataLine == 0 && !piece.rows.lines.empty())
+            m_info.firstDataLine = piece.rows.lines.front();
         for (std::size_t k = 0; k < m_depthDiffer.size(); ++k)
             m_depthDiffer[k] += piece.rows.depthDiffer[k];
         m_info.diagnostics.merge(piece.run.diagnostics);
@@ -329,6 +394,7 @@ private:
                        std::to_string(m_depthDiffer[k]) +
                        " rows by 1 cm or more; the index is used");
         }
+        warnBadValues(m_layout.format, m_bad, d);
         for (std::size_t c = 0; c < m_info.curves.size() && c < m_nulls.size(); ++c)
             m_info.curves[c].nulls = m_nulls[c];
         if (m_layout.radiiOnly && !m_info.curves.empty()) m_info.curves.front().nulls = 0;
@@ -338,6 +404,7 @@ private:
             m_info.bitSizeMax_mm = m_bitSizeMax;
         }
         if (!m_steps.empty()) m_info.step_m = medianInPlace(m_steps);
+        if (!m_info.cancelled) checkDeclaredRange();
         if (m_info.rows == 0 && !m_info.cancelled) {
             if (m_layout.format.las)
                 throw ParseError(m_name, m_lineNumber, 0,
@@ -365,6 +432,9 @@ private:
     PieceSharing* m_sharing = nullptr;  // set while dataLoop runs
     std::size_t m_rowIndex = 0;         // radii-only text: rows so far
     std::vector<std::size_t> m_nulls, m_depthDiffer;
+    std::vector<BadValues> m_bad;  // per column: values that were not numbers (lenient curves)
+    std::optional<LasItem> m_declared[3];  // STRT, STOP, STEP of a LAS header, when numbers
+    double m_declaredValue[3] = {0.0, 0.0, 0.0};
     std::vector<double> m_steps;
     double m_bitSizeMin = 1e300, m_bitSizeMax = -1e300;
 };

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include <glm/geometric.hpp>
@@ -15,6 +16,8 @@
 #include "reconstruction/path/course_dogleg.h"
 #include "reconstruction/path/survey_interpolation.h"
 #include "reconstruction/section/arm_geometry.h"
+#include "reconstruction/section/invalid_arm_readings.h"
+#include "reconstruction/section/section_coverage.h"
 
 namespace caliper3d::reconstruction {
 
@@ -91,11 +94,21 @@ void WellGeometry::markMeasuredRows() {
                                                m_options.maxArmRadius_mm) >= needed;
         m_placed->measuredRows += m_placed->measured[i];
     }
-    if (m_placed->measuredRows == 0)
+    if (m_placed->measuredRows == 0) {
+        // Why and where: the kinds of invalid reading, and the first section.
+        InvalidArmReadings invalid;
+        invalid.add(t, m_options.minValidArmFraction, m_options.minArmRadius_mm,
+                    m_options.maxArmRadius_mm);
+        char where[64] = "";
+        if (rows > 0) std::snprintf(where, sizeof where, "; the first at %.2f m", t.depth_m[0]);
         throw std::invalid_argument(t.source + ": no usable caliper data: none of its " +
                                     std::to_string(rows) + " sections has at least " +
                                     std::to_string(needed) + " of its " +
-                                    std::to_string(t.armCount) + " arms with a valid reading");
+                                    std::to_string(t.armCount) + " arms with a valid reading: " +
+                                    describeInvalidArmReadings(invalid, m_options.minArmRadius_mm,
+                                                               m_options.maxArmRadius_mm) +
+                                    where);
+    }
 }
 
 bool WellGeometry::cancelled() const {

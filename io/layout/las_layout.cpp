@@ -24,7 +24,7 @@ RowFormat lasRowFormat(const LasHeader& h, const std::vector<ColumnSpec>& column
     f.file = file;
     f.las = true;
     f.wrapped = h.wrap;
-    f.delimiter = h.delimiter == ',' ? ',' : ' ';
+    f.delimiter = h.delimiter;
     f.declared = columns.size();
     f.tokens = columns.size();
     f.hasNull = h.hasNull;
@@ -43,6 +43,8 @@ LogLayout lasLayout(const LasHeader& h, const std::string& file, const ReadOptio
                     LogInfo& info) {
     info.format = lasVersionText(h);
     if (const LasItem* well = h.wellItem("WELL")) info.wellName = well->value;
+    if (h.hasNull)
+        if (const LasItem* null = h.wellItem("NULL")) info.declaredNull = null->value;
     info.location = readWellLocation(h, file, &info.diagnostics);
     if (h.curves.empty())
         throw ParseError(file, 0, 0, "expected a ~C (curve information) section, found none");
@@ -51,6 +53,17 @@ LogLayout lasLayout(const LasHeader& h, const std::string& file, const ReadOptio
     layout.plan = makeCurvePlan(layout.columns, &h, options, file, info, info.diagnostics);
     layout.format =
         lasRowFormat(h, layout.columns, options.nullPolicy, file, layout.plan.depthColumn);
+    // A value that is not a number in a curve the reader does not need (a
+    // picks file's "BREAKOUT", one "12.3.4") is read as null and counted; in
+    // the depth, an arm, an orientation angle or the bit size it is refused.
+    const CurvePlan& plan = layout.plan;
+    layout.format.lenient.assign(layout.columns.size(), 1);
+    layout.format.lenient[static_cast<std::size_t>(plan.depthColumn)] = 0;
+    for (int c : plan.armColumn) layout.format.lenient[static_cast<std::size_t>(c)] = 0;
+    for (int c : plan.angleColumn)
+        if (c >= 0) layout.format.lenient[static_cast<std::size_t>(c)] = 0;
+    if (plan.bitSizeColumn >= 0)
+        layout.format.lenient[static_cast<std::size_t>(plan.bitSizeColumn)] = 0;
     return layout;
 }
 
@@ -69,12 +82,14 @@ void settleLasColumns(std::string_view text, std::size_t linesBefore,
         return false;
     });
     if (first.empty()) return;
+    const bool tabs = format.delimiter == '\t' && first.find('\t') != std::string_view::npos;
+    const char separator = format.delimiter == ',' ? ',' : tabs ? '\t' : ' ';
     const std::size_t count =
-        format.delimiter == ','
-            ? static_cast<std::size_t>(std::count(first.begin(), first.end(), ',')) + 1
+        separator != ' '
+            ? static_cast<std::size_t>(std::count(first.begin(), first.end(), separator)) + 1
             : splitBlank(first).size();
     const std::size_t declared = columns.size();
-    if (count >= declared || count == 0 || format.delimiter == ',') return;
+    if (count >= declared || count == 0 || separator != ' ') return;
     std::string missing;
     for (std::size_t c = count; c < declared; ++c)
         missing += (missing.empty() ? "" : ", ") + columns[c].mnemonic;

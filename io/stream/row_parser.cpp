@@ -26,12 +26,19 @@ const char* skipBlanks(const char* p, const char* end) {
     return p;
 }
 
+// Blanks around a value when `separator` (',' or '\t') parts the values.
+const char* skipPadding(const char* p, const char* end, char separator) {
+    while (p < end && isBlank(*p) && *p != separator) ++p;
+    return p;
+}
+
 // Reads the values of one line. Hand-written rather than a general tokenizer:
 // this is the hot loop of every read (fast_float on the line in place, no
 // token copies), and it must give the column of a bad field.
 class LineScanner {
 public:
-    LineScanner(const RowFormat& format, double* raw) : f(format), m_raw(raw) {}
+    LineScanner(const RowFormat& format, double* raw, std::vector<BadValues>& bad)
+        : f(format), m_raw(raw), m_bad(bad) {}
 
     struct Result {
         std::size_t next = 0;        // index of the value after the last one read
@@ -44,19 +51,26 @@ public:
                 std::size_t lineNumber) {
         m_lineBegin = lineBegin;
         m_lineNumber = lineNumber;
-        const bool comma = f.delimiter == ',';
+        // DLM TAB: only a line that holds a tab is read tab by tab.
+        m_separator = f.delimiter == ',' ? ','
+                      : f.delimiter == '\t' &&
+                              std::memchr(lineBegin, '\t',
+                                          static_cast<std::size_t>(lineEnd - lineBegin)) != nullptr
+                          ? '\t'
+                          : ' ';
+        const bool separated = m_separator != ' ';
         Result r;
         const std::size_t first = t;
         for (; t < f.tokens; ++t) {
-            if (t > first && comma) {
-                p = skipBlanks(p, lineEnd);
-                if (p < lineEnd && *p == ',')
+            if (t > first && separated) {
+                p = skipPadding(p, lineEnd, m_separator);
+                if (p < lineEnd && *p == m_separator)
                     ++p;
                 else
                     break;
             }
-            p = skipBlanks(p, lineEnd);
-            if (p == lineEnd && !comma) break;
+            p = separated ? skipPadding(p, lineEnd, m_separator) : skipBlanks(p, lineEnd);
+            if (p == lineEnd && !separated) break;
             const std::size_t c = f.firstColumn + t;
             m_raw[c] = value(c, p, lineEnd, r.overflow);
         }
@@ -69,15 +83,21 @@ public:
         return static_cast<std::size_t>(at - m_lineBegin) + 1;
     }
 
+    // For a line's error: the value of a lenient curve on that line that was not a number
+    // (two values run together, text with blanks), else empty.
+    std::string badValueNote(std::size_t lineNumber) const {
+        return m_lastBadLine == lineNumber ? " (" + m_lastBad + ")" : std::string();
+    }
+
 private:
     // The value of raw column c at p (advanced past it): a number, or NaN for
     // text, a null token or the header's null value.
     double value(std::size_t c, const char*& p, const char* lineEnd, bool& overflow) {
-        const bool comma = f.delimiter == ',';
+        const bool separated = m_separator != ' ';
         double v = 0.0;
         auto [end, ec] = fast_float::from_chars(p, lineEnd, v);
-        const bool clean =
-            ec == std::errc() && (end == lineEnd || isBlank(*end) || (comma && *end == ','));
+        const bool clean = ec == std::errc() &&
+                           (end == lineEnd || isBlank(*end) || (separated && *end == m_separator));
         if (clean && !f.textColumn[c]) {
             p = end;
         } else {
@@ -89,6 +109,17 @@ private:
                        isNullToken(token, f.nullPolicy)) {
                 v = kNaN;
                 overflow = !token.empty() && token.find_first_not_of('*') == std::string_view::npos;
+            } else if (!f.lenient.empty() && f.lenient[c]) {
+                // A curve the reader does not need: this value is unknown, the row is kept.
+                BadValues& bad = m_bad[c];
+                if (bad.count++ == 0) {
+                    bad.firstLine = m_lineNumber;
+                    bad.first = std::string(trim(token.substr(0, 40)));
+                }
+                m_lastBadLine = m_lineNumber;
+                m_lastBad = "curve " + f.names[c] + "'s '" +
+                            std::string(trim(token.substr(0, 40))) + "' is not a number";
+                v = kNaN;
             } else {
                 throw ParseError(f.file, m_lineNumber, column(token.data()),
                                  "expected a number for " + (f.las ? "curve " : std::string()) +
@@ -106,21 +137,27 @@ private:
 
     // The field at p (advanced past it) when it is not a clean number.
     std::string_view tokenAt(std::size_t c, const char*& p, const char* lineEnd) const {
-        const bool comma = f.delimiter == ',';
+        const bool separated = m_separator != ' ';
         const char* begin = p;
         const char* end = p;
-        if (f.textColumn[c] && p < lineEnd && *p == '"') {
-            // LAS 3.0 quotes a string that holds the delimiter: "SAND, SHALY".
-            const void* close = std::memchr(p + 1, '"', static_cast<std::size_t>(lineEnd - p - 1));
+        const bool lenient = !f.lenient.empty() && f.lenient[c];
+        // LAS 3.0 quotes a string that holds the delimiter: "SAND, SHALY"; in a curve the
+        // log is not read for, 'single quotes' too (lasio's quoted substrings).
+        const char quote = p < lineEnd && (*p == '"' || (lenient && *p == '\'')) ? *p : '\0';
+        if ((f.textColumn[c] || lenient) && quote != '\0') {
+            const void* close =
+                std::memchr(p + 1, quote, static_cast<std::size_t>(lineEnd - p - 1));
             if (!close)
                 throw ParseError(f.file, m_lineNumber, column(p),
-                                 "expected a closing '\"' for the text of curve " + f.names[c] +
+                                 std::string("expected a closing '") + quote +
+                                     "' for the text of curve " + f.names[c] +
                                      ", found the end of the line");
             end = static_cast<const char*>(close) + 1;
         } else {
-            while (end < lineEnd && !isBlank(*end) && !(comma && *end == ',')) ++end;
-            if (comma && f.textColumn[c])  // text may hold blanks
-                while (end < lineEnd && *end != ',') ++end;
+            while (end < lineEnd && !isBlank(*end) && !(separated && *end == m_separator)) ++end;
+            // Text may hold blanks where a separator parts the values ("DOLOMITE WI/VUGS").
+            if (separated && (f.textColumn[c] || m_separator == '\t'))
+                while (end < lineEnd && *end != m_separator) ++end;
         }
         p = end;
         return {begin, static_cast<std::size_t>(end - begin)};
@@ -128,6 +165,10 @@ private:
 
     const RowFormat& f;
     double* m_raw;
+    std::vector<BadValues>& m_bad;
+    std::size_t m_lastBadLine = 0;  // the line of the last lenient value that was not a number
+    std::string m_lastBad;
+    char m_separator = ' ';  // of the line being read
     const char* m_lineBegin = nullptr;
     std::size_t m_lineNumber = 0;
 };
@@ -143,7 +184,7 @@ public:
           m_sink(sink),
           m_out(out),
           m_raw(format.declared, kNaN),
-          m_scanner(format, m_raw.data()) {}
+          m_scanner(format, m_raw.data(), out.bad) {}
 
     void run(std::size_t firstLine) {
         const char* const base = m_text.data();
@@ -182,7 +223,8 @@ private:
         const LineScanner::Result r = m_scanner.scan(lineBegin, p, lineEnd, 0, lineNumber);
         if (r.next == f.tokens && r.rest < lineEnd)
             throw ParseError(f.file, lineNumber, m_scanner.column(r.rest),
-                             "expected " + f.layout + ", found more values");
+                             "expected " + f.layout + ", found more values" +
+                                 m_scanner.badValueNote(lineNumber));
         if (r.next < f.tokens) {
             if (r.overflow) {
                 // An overflowed field ran into the next ones: they are unknown, not lost.
@@ -198,9 +240,9 @@ private:
                                            " values (truncated file?); skipped");
                 return;
             } else {
-                throw ParseError(
-                    f.file, lineNumber, 0,
-                    "expected " + f.layout + ", found " + std::to_string(r.next) + " values");
+                throw ParseError(f.file, lineNumber, 0,
+                                 "expected " + f.layout + ", found " + std::to_string(r.next) +
+                                     " values" + m_scanner.badValueNote(lineNumber));
             }
         }
         emit(lineNumber);
@@ -239,6 +281,27 @@ private:
 
 }  // namespace
 
+void BadValues::add(const BadValues& other, std::size_t linesBefore) {
+    if (other.count == 0) return;
+    if (count == 0) {
+        firstLine = other.firstLine + linesBefore;
+        first = other.first;
+    }
+    count += other.count;
+}
+
+void warnBadValues(const RowFormat& format, const std::vector<BadValues>& bad,
+                   Diagnostics& diagnostics) {
+    for (std::size_t c = 0; c < bad.size() && c < format.names.size(); ++c) {
+        const BadValues& b = bad[c];
+        if (b.count == 0) continue;
+        diagnostics.warn(format.file, b.firstLine,
+                         "curve " + format.names[c] + ": " + std::to_string(b.count) +
+                             (b.count == 1 ? " value is" : " values are") +
+                             " not a number (the first '" + b.first + "'); read as null");
+    }
+}
+
 void parseRows(const RowFormat& format, std::string_view text, std::size_t firstLine, bool finalRun,
                RowSink& sink, RowRun& out) {
     out.diagnostics = Diagnostics{};
@@ -247,6 +310,7 @@ void parseRows(const RowFormat& format, std::string_view text, std::size_t first
     out.stopOffset = 0;
     out.error = nullptr;
     out.nulls.assign(format.declared, 0);
+    out.bad.assign(format.declared, BadValues{});
     try {
         RunParser(format, text, finalRun, sink, out).run(firstLine);
     } catch (...) {

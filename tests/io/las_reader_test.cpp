@@ -28,22 +28,34 @@ TEST(LasReaderTest, ReadsValuesAndCountsDeclaredAndCommonNulls) {
     EXPECT_EQ(log.curves[2].nulls, 2u);
 }
 
-TEST(LasReaderTest, DeclaredNullPolicyRefusesTextNullsAndKeepsOtherNumbers) {
+TEST(LasReaderTest, DeclaredNullPolicyCountsTextNullsAndKeepsOtherNumbers) {
     LasReadOptions options;
     options.nullPolicy = NullPolicy::Declared;
     const std::string numbers = std::string(kHeader) + "~A\n100.0 -9999 9999\n";
     const LasLog log = readLas(numbers, "t.las", options, nullptr);
     EXPECT_DOUBLE_EQ(log.curves[1].values[0], -9999.0);
     EXPECT_DOUBLE_EQ(log.curves[2].values[0], 9999.0);
-    const std::string err = std::string(kHeader) + "~A\n100.0 ERR 1\n";
+    // ERR is not a null under this policy: a value that is not a number, in a curve other
+    // than the index, read as null and counted in one warning at its first line.
+    const std::string err = std::string(kHeader) + "~A\n100.0 ERR 1\n100.5 ERR 2\n";
+    Diagnostics d;
+    const LasLog counted = readLas(err, "e.las", options, &d);
+    ASSERT_EQ(counted.rowCount(), 2u);
+    EXPECT_TRUE(std::isnan(counted.curves[1].values[0]));
+    EXPECT_DOUBLE_EQ(counted.curves[2].values[1], 2.0);
+    ASSERT_EQ(d.warnings.size(), 1u);
+    EXPECT_EQ(d.warnings[0].line, 11u);
+    EXPECT_EQ(d.warnings[0].message,
+              "curve GR: 2 values are not a number (the first 'ERR'); read as null");
+    // In the index it is refused with its place.
+    const std::string index = std::string(kHeader) + "~A\nERR 1 1\n";
     try {
-        readLas(err, "e.las", options, nullptr);
+        readLas(index, "e.las", options, nullptr);
         FAIL();
     } catch (const ParseError& e) {
         EXPECT_EQ(e.line(), 11u);
-        EXPECT_EQ(e.column(), 7u);
-        EXPECT_NE(std::string(e.what()).find("expected a number for curve GR, found 'ERR'"),
-                  std::string::npos);
+        EXPECT_EQ(e.column(), 1u);
+        EXPECT_NE(std::string(e.what()).find("found 'ERR'"), std::string::npos) << e.what();
     }
 }
 

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "reconstruction/mesh/lod_levels.h"
+#include "reconstruction/section/invalid_arm_readings.h"
 
 #include <boost/math/constants/constants.hpp>
 
@@ -243,5 +244,54 @@ TEST(NoDataTest, LogWithoutAnyUsableSectionIsRejectedNamingTheFile) {
         EXPECT_NE(std::string(e.what()).find("all-null.las: no usable caliper data"),
                   std::string::npos)
             << e.what();
+        // Why (every reading null) and where (the first section's depth).
+        EXPECT_NE(std::string(e.what()).find(
+                      "arms with a valid reading: every arm reading is null (NaN or the file's "
+                      "NULL value); the first at "),
+                  std::string::npos)
+            << e.what();
     }
+}
+
+TEST(NoDataTest, InvalidReadingsAreCountedByKind) {
+    SectionTable t;
+    t.armCount = 4;
+    t.depth_m = {10.0, 10.5, 11.0};
+    t.radius_mm = {-5.0, -1.0,  0.0,  -3.0,   // every reading zero or negative
+                   kNaN, 400.0, 90.0, kNaN,   // 1 valid of 4: no shape
+                   90.0, 90.0,  90.0, 90.0};  // measured
+    InvalidArmReadings counts;
+    counts.add(t, 0.5, 0.0, 300.0);
+    EXPECT_EQ(counts.sections, 2u);
+    EXPECT_EQ(counts.readings, 8u);
+    EXPECT_EQ(counts.tooSmall, 4u);
+    EXPECT_EQ(counts.missing, 2u);
+    EXPECT_EQ(counts.beyondReach, 1u);
+    EXPECT_DOUBLE_EQ(counts.firstDepth_m, 10.0);
+    EXPECT_EQ(describeInvalidArmReadings(counts, 0.0, 300.0),
+              "of their 8 arm readings 2 are null (NaN or the file's NULL value), 4 are zero or "
+              "negative, 1 is beyond the tool's reach of 300 mm, 1 is valid, too few in any one "
+              "section");
+
+    SectionTable negative = t;
+    negative.radius_mm = {-5.0, -1.0, 0.0, -3.0, -5.0, -1.0, -2.0, -3.0, -1.0, -1.0, -1.0, -1.0};
+    InvalidArmReadings all;
+    all.add(negative, 0.5, 0.0, 300.0);
+    EXPECT_EQ(describeInvalidArmReadings(all, 0.0, 300.0), "every arm reading is zero or negative");
+    try {
+        negative.source = "negative.las";
+        WellGeometry g(std::make_shared<const SectionTable>(negative), GeometryOptions{});
+        FAIL() << "accepted a log without caliper data";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find(
+                      "every arm reading is zero or negative; the first at 10.00 m"),
+                  std::string::npos)
+            << e.what();
+    }
+    SectionTable far = t;
+    far.radius_mm.assign(12, 500.0);
+    InvalidArmReadings reach;
+    reach.add(far, 0.5, 0.0, 300.0);
+    EXPECT_EQ(describeInvalidArmReadings(reach, 0.0, 300.0),
+              "every arm reading is beyond the tool's reach of 300 mm");
 }
