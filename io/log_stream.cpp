@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "io/azimuth_north.h"
 #include "io/curve_plan.h"
 #include "io/las_header.h"
 #include "io/layout/column_text_layout.h"
@@ -122,6 +123,7 @@ public:
             readLasHeader(run);
         } else {
             m_layout = columnTextLayout(run, m_name, m_options, m_info);
+            m_info.north = readAzimuthNorth(nullptr, m_layout.columns, m_layout.plan, nullptr);
             run = skipLines(run, m_layout.namesLines);
         }
         std::string wrappedText;
@@ -178,6 +180,8 @@ private:
                 m_lineNumber = lines;
                 const LasHeader header = parseLasHeader(headerText, m_name, &m_info.diagnostics);
                 m_layout = lasLayout(header, m_name, m_options, m_info);
+                m_info.north =
+                    readAzimuthNorth(&header, m_layout.columns, m_layout.plan, &m_info.diagnostics);
                 return;
             }
             headerText.append(run);
