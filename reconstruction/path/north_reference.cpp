@@ -89,10 +89,10 @@ NorthCorrection resolveNorth(const io::AzimuthNorth& north, const io::WellLocati
     NorthCorrection out;
     if (north.curves.empty()) {
         if (options.declination_deg)
-            out.warnings.push_back(
+            out.warnings.emplace_back(
                 "--declination given, but the log has no azimuth curve: not applied");
         if (options.gridConvergence_deg)
-            out.warnings.push_back(
+            out.warnings.emplace_back(
                 "--grid-convergence given, but the log has no azimuth curve: not applied");
         return out;
     }
@@ -168,7 +168,7 @@ NorthCorrection resolveNorth(const io::AzimuthNorth& north, const io::WellLocati
         if (options.declination_deg) {
             summary += "; --declination " + eastAngleText(*options.declination_deg) +
                        " not applied: no azimuth is from magnetic north";
-            out.warnings.push_back(
+            out.warnings.emplace_back(
                 "--declination given, but no azimuth curve is from magnetic "
                 "north: not applied (--azimuth-north magnetic says it is)");
         } else if (north.declination.found()) {
@@ -179,7 +179,7 @@ NorthCorrection resolveNorth(const io::AzimuthNorth& north, const io::WellLocati
     if (!grid && options.gridConvergence_deg) {
         summary += "; --grid-convergence " + eastAngleText(*options.gridConvergence_deg) +
                    " not applied: no azimuth is from grid north";
-        out.warnings.push_back(
+        out.warnings.emplace_back(
             "--grid-convergence given, but no azimuth curve is from grid "
             "north: not applied (--azimuth-north grid says it is)");
     }
