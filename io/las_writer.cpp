@@ -122,16 +122,21 @@ void writeLas(std::ostream& out, const SectionTable& t, const LasWriteOptions& o
     for (int k = 1; k <= t.armCount; ++k)
         columns.push_back({"R" + std::to_string(k), "MM", "radius of arm " + std::to_string(k),
                            t.radius_mm.data() + (k - 1), static_cast<std::size_t>(t.armCount)});
+    // The azimuths of a table are from true north (docs/conventions.md, "North") unless the
+    // reader left them from magnetic or grid north for want of a declination or convergence:
+    // the description says so, so that the file reads back unmoved and without a warning.
+    const bool trueNorth = t.north.find("left from ") == std::string::npos;
     const struct {
         const char* mnemonic;
         const char* unit;
         const char* description;
         const std::vector<double>* values;
-    } optional[] = {{"P1AZ", "DEG", "pad 1 azimuth", &t.p1az_deg},
-                    {"DEVI", "DEG", "deviation", &t.devi_deg},
-                    {"HAZI", "DEG", "hole azimuth", &t.hazi_deg},
-                    {"RB", "DEG", "relative bearing", &t.rb_deg},
-                    {"BS", "MM", "bit size", &t.bitSize_mm}};
+    } optional[] = {
+        {"P1AZ", "DEG", trueNorth ? "pad 1 azimuth from true north" : "pad 1 azimuth", &t.p1az_deg},
+        {"DEVI", "DEG", "deviation", &t.devi_deg},
+        {"HAZI", "DEG", trueNorth ? "hole azimuth from true north" : "hole azimuth", &t.hazi_deg},
+        {"RB", "DEG", "relative bearing", &t.rb_deg},
+        {"BS", "MM", "bit size", &t.bitSize_mm}};
     for (const auto& o : optional)
         if (o.values->size() == rows && rows > 0)
             columns.push_back({o.mnemonic, o.unit, o.description, o.values->data(), 1});

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "io/azimuth_north.h"
 #include "io/diagnostics.h"
 #include "io/section_table.h"
 #include "io/well_location.h"
@@ -26,6 +27,7 @@ struct LogInfo {
     std::string wellName;
     WellLocation location;    // from the LAS header (empty for column text)
     std::string holeAzimuth;  // where the hole azimuth comes from (io::holeAzimuthPlan)
+    AzimuthNorth north;       // the north of its azimuth curves (docs/conventions.md, "North")
     std::string depthUnit;    // as written in the file
     std::size_t rows = 0;     // sections read
     double top_m = 0.0;

@@ -213,6 +213,7 @@ std::string formatLogInfo(const LogInfo& info) {
     else if (info.format.rfind("LAS", 0) == 0)
         out << "null:      none declared in the header\n";
     if (!info.holeAzimuth.empty()) out << "hole azi:  " << info.holeAzimuth << "\n";
+    if (!info.north.resolved.empty()) out << "north:     " << info.north.resolved << "\n";
     out << (info.survey ? "columns:\n" : "curves:\n");
     // Characters, not bytes: a decoded UTF-16 header may hold non-ASCII mnemonics.
     auto shown = [](const std::string& s) {

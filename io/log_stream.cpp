@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "io/azimuth_north.h"
 #include "io/curve_plan.h"
 #include "io/las_header.h"
 #include "io/las_reader.h"
@@ -125,6 +126,7 @@ public:
             readLasHeader(run);
         } else {
             m_layout = columnTextLayout(run, m_name, m_options, m_info);
+            m_info.north = readAzimuthNorth(nullptr, m_layout.columns, m_layout.plan, nullptr);
             run = skipLines(run, m_layout.namesLines);
         }
         std::string wrappedText;
@@ -182,6 +184,8 @@ private:
                 const LasHeader header = parseLasHeader(headerText, m_name, &m_info.diagnostics);
                 m_layout = lasLayout(header, m_name, m_options, m_info);
                 keepDeclaredRange(header);
+                m_info.north =
+                    readAzimuthNorth(&header, m_layout.columns, m_layout.plan, &m_info.diagnostics);
                 return;
             }
             headerText.append(run);

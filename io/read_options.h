@@ -2,6 +2,7 @@
 
 #include <optional>
 
+#include "io/azimuth_north.h"
 #include "io/curve_roles.h"
 #include "io/units.h"
 
@@ -38,13 +39,21 @@ struct ReadOptions {
     DepthOrder depthOrder = DepthOrder::SkipBackwards;
     RoleOverrides roles;
     std::optional<double> bitSize_mm;  // overrides the file's BS
+    // docs/conventions.md, "North": the magnetic declination (east positive) applied to
+    // azimuths from magnetic north, overriding the header's and the magnetic model's; the
+    // grid convergence (grid north clockwise from true north) applied to azimuths from grid
+    // north; the north of azimuth curves whose description does not say.
+    std::optional<double> declination_deg;
+    std::optional<double> gridConvergence_deg;
+    North azimuthNorth = North::Unknown;
 };
 // Two wells read alike: the window compares the options its wells were opened with.
 inline bool operator==(const ReadOptions& a, const ReadOptions& b) {
     return a.armCount == b.armCount && a.depthUnit == b.depthUnit && a.radiusUnit == b.radiusUnit &&
            a.allowRadiiOnly == b.allowRadiiOnly && a.rowStep_m == b.rowStep_m &&
            a.nullPolicy == b.nullPolicy && a.depthOrder == b.depthOrder && a.roles == b.roles &&
-           a.bitSize_mm == b.bitSize_mm;
+           a.bitSize_mm == b.bitSize_mm && a.declination_deg == b.declination_deg &&
+           a.gridConvergence_deg == b.gridConvergence_deg && a.azimuthNorth == b.azimuthNorth;
 }
 inline bool operator!=(const ReadOptions& a, const ReadOptions& b) {
     return !(a == b);

@@ -50,6 +50,10 @@ struct SectionTable {
     // report leaves what depends on it empty).
     enum class HoleAzimuth : unsigned char { Read, Derived, Unknown };
     HoleAzimuth holeAzimuth = HoleAzimuth::Read;
+    // Which north p1az_deg and hazi_deg are from and the declination or grid convergence
+    // applied to reach it (docs/conventions.md, "North"), as the report and the window
+    // show it; empty when the table has no azimuth curve.
+    std::string north;
 
     std::size_t rowCount() const { return depth_m.size(); }
     const double* radii(std::size_t row) const { return radius_mm.data() + row * armCount; }

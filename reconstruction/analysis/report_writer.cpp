@@ -185,7 +185,9 @@ void writeZoneReport(std::ostream& out, const WellAnalysis& a) {
 }
 
 std::string formatAnalysisSummary(const WellAnalysis& a) {
-    std::string s = breakoutSummary(a) + volumeSummary(a.volume);
+    // Which north every azimuth below is from (docs/conventions.md, "North").
+    std::string s = a.north.empty() ? std::string() : "north: " + a.north + "\n";
+    s += breakoutSummary(a) + volumeSummary(a.volume);
     if (a.padAzimuthOffset.samples > 0)
         s += "P1AZ - (HAZI+RB): mean " + fixed(a.padAzimuthOffset.mean_deg, 2) +
              " deg, circular SD " + fixed(a.padAzimuthOffset.sd_deg, 2) + " deg over " +

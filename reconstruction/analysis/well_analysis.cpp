@@ -250,6 +250,7 @@ public:
         if (m_t.holeAzimuth != io::SectionTable::HoleAzimuth::Derived)
             a.padAzimuthOffset = padAzimuthOffset(orientation);
         a.holeAzimuthUnknown = !m_azimuthKnown;
+        a.north = m_t.north;
         a.noData = m_g.noDataIntervals();
         for (const NoDataInterval& gap : a.noData) a.noDataSections += gap.sections();
         for (const BlockCounts& c : m_counts) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "reconstruction/analysis/borehole_classifier.h"
@@ -51,6 +52,7 @@ struct WellAnalysis {
     std::size_t noDataSections = 0;
     bool bitSizeFromSections = false;  // no bit size anywhere: median equivalent diameter used
     bool holeAzimuthUnknown = false;   // inclined, no HAZI nor survey: see docs/conventions.md
+    std::string north;                 // which north the azimuths are from: io::SectionTable::north
     bool twoPads = false;  // a two-pad tool: round sections, no breakout nor keyseat seen
 };
 

@@ -14,6 +14,7 @@
 #include "reconstruction/load/well_input.h"
 #include "reconstruction/load/well_warnings.h"
 #include "reconstruction/mesh/lod_levels.h"
+#include "reconstruction/path/north_reference.h"
 
 namespace caliper3d::reconstruction {
 
@@ -113,9 +114,11 @@ LoadedWell loadWellStreamed(const WellSource& source, const LoadOptions& options
             // block parsed while the meshing thread shares the cores.
             stream.blockBytes = 2u << 20;
             io::HoleAzimuthPlan plan;
+            NorthCorrection north;
             std::size_t estimatedRows = 0, rowsRead = 0;
             stream.onStart = [&](const io::LogInfo& info, std::size_t estimate) {
                 plan = io::holeAzimuthPlan(info, surveyGiven);
+                north = resolveNorth(info.north, info.location, options.read);
                 estimatedRows = estimate;
             };
             stream.onChunk = [&](const io::SectionTable& chunk) {
@@ -124,6 +127,7 @@ LoadedWell loadWellStreamed(const WellSource& source, const LoadOptions& options
                     sink.read(std::min(1.0, double(rowsRead) / double(estimatedRows)));
                 if (!handover.feeding.load()) return;
                 io::SectionTable rows = chunk;
+                applyNorth(rows, north);                  // as loadWellTable does the whole log
                 resolveHoleAzimuth(rows, plan, nullptr);  // row by row: as the whole log's
                 {
                     const std::lock_guard<std::mutex> lock(handover.mutex);

@@ -6,6 +6,7 @@
 #include "io/log_reader.h"
 #include "io/parse_error.h"
 #include "reconstruction/load/hole_azimuth.h"
+#include "reconstruction/path/north_reference.h"
 
 namespace caliper3d::reconstruction {
 
@@ -46,6 +47,11 @@ io::SectionTable loadWellTable(const std::string& path, const io::ReadOptions& o
     loaded.table.wellName = loaded.info.wellName;
     loaded.table.fileDepthUnit = loaded.info.depthUnit;
     loaded.table.fileCaliperUnit = caliperUnit(loaded.info);
+    // Azimuths to true north before a hole azimuth is derived from the pad-1 azimuth.
+    const NorthCorrection north = resolveNorth(loaded.info.north, loaded.info.location, options);
+    applyNorth(loaded.table, north);
+    if (diagnostics)
+        for (const std::string& warning : north.warnings) diagnostics->warn(path, 0, warning);
     resolveHoleAzimuth(loaded.table, io::holeAzimuthPlan(loaded.info, surveyGiven), diagnostics);
     return std::move(loaded.table);
 }
