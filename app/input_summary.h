@@ -12,6 +12,7 @@
 
 #include "io/diagnostics.h"
 #include "reconstruction/analysis/hole_volume.h"
+#include "reconstruction/analysis/well_analysis.h"
 
 namespace caliper3d::reconstruction {
 struct WellAnalysis;
@@ -44,6 +45,8 @@ struct InputSummary {
     std::optional<std::size_t> zones;
     std::map<std::string, std::size_t> zonesByClass;
     std::optional<reconstruction::HoleVolume> volume;
+    std::vector<reconstruction::CasingCheck> casing;          // the calibration check per string
+    std::vector<reconstruction::NoDataInterval> armsNotOpen;  // sections no_data: arms not open
     std::size_t warningCount = 0;
     std::vector<std::string> warnings;  // the first kKeptWarnings, formatted as printed
     double seconds = 0.0;

@@ -23,7 +23,9 @@ struct LogInfo {
     std::string file;
     std::string format;  // "LAS 2.0", "column text (depth R1..R6 P1AZ DEVI HAZI)", ...
     std::string wellName;
-    WellLocation location;    // from the LAS header (empty for column text)
+    WellLocation location;  // from the LAS header (empty for column text)
+    // The casing program: --casing, else the LAS ~Parameter section (io/casing_program.h).
+    std::vector<CasingString> casing;
     std::string holeAzimuth;  // where the hole azimuth comes from (io::holeAzimuthPlan)
     std::string depthUnit;    // as written in the file
     std::size_t rows = 0;     // sections read

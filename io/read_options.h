@@ -1,6 +1,9 @@
 #pragma once
 
 #include <optional>
+#include <vector>
+
+#include "io/casing_string.h"
 
 #include "io/curve_roles.h"
 #include "io/units.h"
@@ -38,13 +41,14 @@ struct ReadOptions {
     DepthOrder depthOrder = DepthOrder::SkipBackwards;
     RoleOverrides roles;
     std::optional<double> bitSize_mm;  // overrides the file's BS
+    std::vector<CasingString> casing;  // --casing: replaces the file's casing program
 };
 // Two wells read alike: the window compares the options its wells were opened with.
 inline bool operator==(const ReadOptions& a, const ReadOptions& b) {
     return a.armCount == b.armCount && a.depthUnit == b.depthUnit && a.radiusUnit == b.radiusUnit &&
            a.allowRadiiOnly == b.allowRadiiOnly && a.rowStep_m == b.rowStep_m &&
            a.nullPolicy == b.nullPolicy && a.depthOrder == b.depthOrder && a.roles == b.roles &&
-           a.bitSize_mm == b.bitSize_mm;
+           a.bitSize_mm == b.bitSize_mm && a.casing == b.casing;
 }
 inline bool operator!=(const ReadOptions& a, const ReadOptions& b) {
     return !(a == b);

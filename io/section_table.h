@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "io/casing_string.h"
+
 namespace caliper3d::io {
 
 inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -50,6 +52,9 @@ struct SectionTable {
     // report leaves what depends on it empty).
     enum class HoleAzimuth : unsigned char { Read, Derived, Unknown };
     HoleAzimuth holeAzimuth = HoleAzimuth::Read;
+    // The casing set in the hole (--casing, else the LAS ~Parameter section), shallowest
+    // shoe first; empty when neither says (docs/analysis.md, "Cased hole").
+    std::vector<CasingString> casing;
 
     std::size_t rowCount() const { return depth_m.size(); }
     const double* radii(std::size_t row) const { return radius_mm.data() + row * armCount; }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "io/casing_program.h"
 #include "io/las_reader.h"
 #include "io/parse_error.h"
 #include "io/text.h"
@@ -44,6 +45,7 @@ LogLayout lasLayout(const LasHeader& h, const std::string& file, const ReadOptio
     info.format = lasVersionText(h);
     if (const LasItem* well = h.wellItem("WELL")) info.wellName = well->value;
     info.location = readWellLocation(h, file, &info.diagnostics);
+    info.casing = readCasingProgram(h, file, &info.diagnostics);
     if (h.curves.empty())
         throw ParseError(file, 0, 0, "expected a ~C (curve information) section, found none");
     LogLayout layout;

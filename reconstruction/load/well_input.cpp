@@ -46,6 +46,7 @@ io::SectionTable loadWellTable(const std::string& path, const io::ReadOptions& o
     loaded.table.wellName = loaded.info.wellName;
     loaded.table.fileDepthUnit = loaded.info.depthUnit;
     loaded.table.fileCaliperUnit = caliperUnit(loaded.info);
+    loaded.table.casing = options.casing.empty() ? loaded.info.casing : options.casing;
     resolveHoleAzimuth(loaded.table, io::holeAzimuthPlan(loaded.info, surveyGiven), diagnostics);
     return std::move(loaded.table);
 }
