@@ -1,16 +1,82 @@
+#include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "app/commands.h"
 #include "app/input_options.h"
 #include "app/input_summary.h"
 #include "app/verb_parser.h"
+#include "io/casing_program.h"
 #include "io/log_reader.h"
+#include "io/median.h"
 #include "io/survey_reader.h"
+#include "reconstruction/analysis/borehole_classifier.h"
 #include "reconstruction/load/load_well.h"
 #include "reconstruction/path/survey_interpolation.h"
 #include "reconstruction/section/section_coverage.h"
 
 namespace caliper3d::app {
+
+namespace {
+
+// Each row's depth and mean diameter (twice the mean of its valid radii; NaN without one).
+struct RowReading {
+    float md_m;
+    float diameter_mm;
+};
+
+void addReadings(const io::SectionTable& rows, std::vector<RowReading>& out) {
+    for (std::size_t i = 0; i < rows.rowCount(); ++i) {
+        const double* r = rows.radii(i);
+        double sum = 0.0;
+        int valid = 0;
+        for (int k = 0; k < rows.armCount; ++k)
+            if (std::isfinite(r[k]) && r[k] > 0.0) {
+                sum += r[k];
+                ++valid;
+            }
+        out.push_back({static_cast<float>(rows.depth_m[i]),
+                       valid > 0 ? static_cast<float>(2.0 * sum / valid) : std::nanf("")});
+    }
+}
+
+// The calibration check `info` can make without the analysis: per casing string, the median
+// mean diameter of the rows inside it against its nominal inner diameter, leaving out rows
+// more than the arms-not-open fraction under it (docs/analysis.md, "Cased hole").
+void printCasingReadings(const io::LogInfo& info, const std::vector<RowReading>& readings) {
+    const double fraction = reconstruction::ClassificationRules{}.armsClosedFraction;
+    for (const io::CasingString& c : info.casing) {
+        std::vector<double> d;
+        std::size_t closed = 0;
+        for (const RowReading& r : readings) {
+            if (!std::isfinite(r.diameter_mm) || io::casingAt(info.casing, r.md_m) != &c) continue;
+            if (r.diameter_mm < c.innerDiameter_mm * (1.0 - fraction)) {
+                ++closed;
+                continue;
+            }
+            d.push_back(r.diameter_mm);
+        }
+        if (d.empty() && closed == 0) continue;  // the log does not reach into it
+        std::printf("in casing: to %.2f m, ", c.bottom_m);
+        if (d.empty())
+            std::printf(
+                "no reading (%zu rows read more than %.0f %% under its ID: arms not open)\n",
+                closed, 100.0 * fraction);
+        else {
+            const double median = io::medianInPlace(d);
+            std::printf("median mean diameter %.1f mm over %zu rows", median, d.size());
+            if (std::isfinite(c.innerDiameter_mm))
+                std::printf(", nominal ID %.1f mm, offset %+.1f mm", c.innerDiameter_mm,
+                            median - c.innerDiameter_mm);
+            if (closed > 0)
+                std::printf(" (%zu rows under %.0f %% left out: arms not open)", closed,
+                            100.0 * fraction);
+            std::printf("\n");
+        }
+    }
+}
+
+}  // namespace
 
 int runInfo(const QStringList& args) {
     return guardedVerb("info", [&]() -> int {
@@ -36,6 +102,7 @@ int runInfo(const QStringList& args) {
                     reconstruction::geometryOptions(options);
                 std::size_t measured = 0;
                 int needed = 0, arms = 0;
+                std::vector<RowReading> readings;
                 const io::LogInfo info =
                     io::describeLog(file, options.read, [&](const io::SectionTable& rows) {
                         arms = rows.armCount;
@@ -43,6 +110,7 @@ int runInfo(const QStringList& args) {
                         measured += reconstruction::countMeasuredSections(
                             rows, geometry.minValidArmFraction, geometry.minArmRadius_mm,
                             geometry.maxArmRadius_mm);
+                        addReadings(rows, readings);
                     });
                 std::fputs(io::formatLogInfo(info).c_str(), stdout);
                 summary.rows = info.rows;
@@ -62,6 +130,7 @@ int runInfo(const QStringList& args) {
                     std::printf(
                         "caliper:   %zu of %zu sections measured (at least %d of %d arms valid)\n",
                         measured, info.rows, needed, arms);
+                    printCasingReadings(info, readings);
                     if (measured == 0) {
                         // Described, but every other verb refuses it: say so and fail.
                         ++failures;

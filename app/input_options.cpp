@@ -19,7 +19,10 @@ void applyGroup(const QCommandLineParser& parser, OptionGroup group, LoadOptions
     WellSource none;
     for (const WellOption& option : wellOptions())
         if (option.group == group && parser.isSet(option.name))
-            option.parse(parser.value(option.name).toStdString(), none, options);
+            option.parse((option.repeatable ? parser.values(option.name).join(';')
+                                            : parser.value(option.name))
+                             .toStdString(),
+                         none, options);
 }
 
 }  // namespace

@@ -47,6 +47,8 @@ void InputSummary::addAnalysis(const reconstruction::WellAnalysis& analysis) {
     volume = analysis.volume;
     breakouts = analysis.breakouts;
     unorientedSections = analysis.unorientedSections;
+    casing = analysis.casing;
+    armsNotOpen = analysis.armsNotOpen;
 }
 
 nlohmann::ordered_json toJson(const InputSummary& s) {
@@ -80,7 +82,30 @@ nlohmann::ordered_json toJson(const InputSummary& s) {
                               {"gauge_annulus", v.gaugeAnnulus_m3},
                               {"cement", v.cement_m3},
                               {"gauge_cement", v.gaugeCement_m3},
-                              {"uncovered_m", v.uncovered_m}};
+                              {"uncovered_m", v.uncovered_m},
+                              {"cased_m", v.cased_m}};
+    }
+    if (!s.casing.empty()) {
+        nlohmann::ordered_json strings = nlohmann::ordered_json::array();
+        for (const reconstruction::CasingCheck& c : s.casing)
+            strings.push_back({{"bottom_m", c.casing.bottom_m},
+                               {"size_mm", c.casing.size_mm},
+                               {"weight_kg_per_m", c.casing.weight_kgPerM},
+                               {"nominal_id_mm", c.casing.innerDiameter_mm},
+                               {"source", c.casing.source},
+                               {"sections", c.sections},
+                               {"median_reading_mm", c.medianDiameter_mm},
+                               {"offset_mm", c.offset_mm}});
+        line["casing"] = strings;
+    }
+    if (!s.armsNotOpen.empty()) {
+        nlohmann::ordered_json gaps = nlohmann::ordered_json::array();
+        for (const reconstruction::NoDataInterval& gap : s.armsNotOpen)
+            gaps.push_back({{"top_m", gap.top_m},
+                            {"bottom_m", gap.bottom_m},
+                            {"sections", gap.sections()},
+                            {"reason", "arms not open"}});
+        line["arms_not_open"] = gaps;
     }
     if (s.breakouts) {
         // An azimuth that is not known is null, never a number from an assumed north.

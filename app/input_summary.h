@@ -12,6 +12,7 @@
 
 #include "io/diagnostics.h"
 #include "reconstruction/analysis/hole_volume.h"
+#include "reconstruction/analysis/well_analysis.h"
 #include "reconstruction/analysis/zone_detection.h"
 
 namespace caliper3d::reconstruction {
@@ -49,6 +50,8 @@ struct InputSummary {
     // no orientation.
     std::optional<reconstruction::BreakoutSummary> breakouts;
     std::size_t unorientedSections = 0;
+    std::vector<reconstruction::CasingCheck> casing;          // the calibration check per string
+    std::vector<reconstruction::NoDataInterval> armsNotOpen;  // sections no_data: arms not open
     std::size_t warningCount = 0;
     std::vector<std::string> warnings;  // the first kKeptWarnings, formatted as printed
     double seconds = 0.0;

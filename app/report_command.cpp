@@ -57,6 +57,7 @@ void warnWhereCasingDoesNotFit(const reconstruction::WellAnalysis& result,
     std::size_t narrower = 0, inInterval = 0, bitNarrower = 0;
     for (const reconstruction::SectionResult& s : result.sections) {
         if (s.md_m < volume.top_m || s.md_m > volume.bottom_m) continue;
+        if (s.cls == reconstruction::BoreholeClass::Cased) continue;  // no volume there
         ++inInterval;
         narrower += s.equivalentDiameter_mm <= volume.casingOd_mm;
         bitNarrower += s.bit_mm <= volume.casingOd_mm;
@@ -222,7 +223,7 @@ InputSummary reportWell(const WellSource& well, const ReportSettings& settings,
     std::fprintf(info, "%s: %zu sections, %zu reported, %zu zones, %zu no data, %zu warnings%s\n",
                  well.path.c_str(), result.sections.size(),
                  reconstruction::reportedSections(result, report).size(), result.zones.size(),
-                 result.noDataSections, diagnostics.warningCount,
+                 result.noDataSections + result.armsNotOpenSections, diagnostics.warningCount,
                  well.surveyPath.empty() ? "" : (", path from " + well.surveyPath).c_str());
     std::fputs(reconstruction::formatAnalysisSummary(result).c_str(), info);
     if (!well.picksPath.empty()) {

@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 
+#include "io/casing_program.h"
 #include "io/curve_roles.h"
 #include "io/number_parsing.h"
 #include "io/section_table.h"
@@ -317,6 +318,50 @@ void fileRows(Rows& rows) {
         std::string text = "the log's: " + bitSizeText(info.bitSize_mm);
         if (std::isfinite(info.bitSizeMax_mm) && info.bitSizeMax_mm > info.bitSize_mm)
             text += " to " + bitSizeText(info.bitSizeMax_mm);
+        return text;
+    };
+
+    WellOption& casing = rows.add(
+        "casing", "BOTTOM,SIZE[,WEIGHT|ID]", G::Reading,
+        "Casing set in the hole, replacing the log's casing program: shoe depth in metres, outer "
+        "diameter (7in, 177.8mm), then weight (17lb/ft, 25.3kg/m) or inner diameter (6.538in); "
+        "repeat it for each string.",
+        [](const std::string& t, WellSource&, LoadOptions& o) {
+            std::vector<io::CasingString> program;
+            std::size_t start = 0;
+            while (start <= t.size()) {
+                const std::size_t end = std::min(t.find(';', start), t.size());
+                const std::string one = trimmed(t.substr(start, end - start));
+                start = end + 1;
+                if (one.empty()) continue;
+                std::string error;
+                const std::optional<io::CasingString> c = io::parseCasingSpec(one, error);
+                if (!c) throw UsageError("--casing: " + error);
+                program.push_back(*c);
+            }
+            std::sort(program.begin(), program.end(),
+                      [](const io::CasingString& a, const io::CasingString& b) {
+                          return a.bottom_m < b.bottom_m;
+                      });
+            o.read.casing = std::move(program);
+        },
+        [](const WellSource&, const LoadOptions& o) -> std::optional<std::string> {
+            if (o.read.casing.empty()) return std::nullopt;
+            std::string text;
+            for (const io::CasingString& c : o.read.casing)
+                text += (text.empty() ? "" : ";") + io::casingSpecText(c);
+            return text;
+        });
+    casing.repeatable = true;
+    casing.effect = OptionEffect::Log;
+    casing.column = "casing";
+    casing.field = "Casing";
+    casing.blank = "the log's casing program: e.g. 88.3,7in,17lb/ft (several: ';' between)";
+    casing.blankFor = [](const io::LogInfo& info) -> std::string {
+        if (info.casing.empty()) return "none in the log: e.g. 88.3,7in,17lb/ft";
+        std::string text = "the log's: ";
+        for (const io::CasingString& c : info.casing)
+            text += (&c == &info.casing.front() ? "" : "; ") + io::casingSpecText(c);
         return text;
     };
 }

@@ -70,6 +70,9 @@ struct WellOption {
     // file is read); nullptr: `blank`.
     std::string (*blankFor)(const io::LogInfo& info) = nullptr;
     bool columnTextOnly = false;  // read from column text only (a LAS names its curves)
+    // May be given several times on the command line: the values reach `parse` as one text,
+    // joined by ';' (how a manifest cell or the Open dialog writes several).
+    bool repeatable = false;
 };
 
 // Every option, in the order the help lists them.

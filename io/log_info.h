@@ -25,7 +25,9 @@ struct LogInfo {
     std::string file;
     std::string format;  // "LAS 2.0", "column text (depth R1..R6 P1AZ DEVI HAZI)", ...
     std::string wellName;
-    WellLocation location;    // from the LAS header (empty for column text)
+    WellLocation location;  // from the LAS header (empty for column text)
+    // The casing program: --casing, else the LAS ~Parameter section (io/casing_program.h).
+    std::vector<CasingString> casing;
     std::string holeAzimuth;  // where the hole azimuth comes from (io::holeAzimuthPlan)
     AzimuthNorth north;       // the north of its azimuth curves (docs/conventions.md, "North")
     std::string depthUnit;    // as written in the file

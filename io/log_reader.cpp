@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "io/casing_program.h"
 #include "io/hole_azimuth_plan.h"
 #include "io/median.h"
 #include "io/parse_error.h"
@@ -89,6 +90,7 @@ LoadedLog loadCaliperLog(const std::string& path, const ReadOptions& options,
         },
         stream);
     loaded.table.source = path;
+    loaded.table.casing = options.casing.empty() ? loaded.info.casing : options.casing;
     return loaded;
 }
 
@@ -100,6 +102,7 @@ LoadedLog loadCaliperText(std::string_view text, const std::string& name,
         },
         stream);
     loaded.table.source = name;
+    loaded.table.casing = options.casing.empty() ? loaded.info.casing : options.casing;
     return loaded;
 }
 
@@ -176,6 +179,7 @@ LogInfo describeLog(const std::string& path, const ReadOptions& options,
     const std::string head = fileHead(path);
     if (!hasUtf16Mark(head) && looksLikeSurvey(head)) return describeSurvey(path, options);
     LogInfo info = streamCaliperLog(path, options, onRows);
+    if (!options.casing.empty()) info.casing = options.casing;
     const HoleAzimuthPlan plan = holeAzimuthPlan(info, surveyGiven);
     info.holeAzimuth = plan.description;
     if (plan.kind == SectionTable::HoleAzimuth::Unknown)
@@ -214,6 +218,7 @@ std::string formatLogInfo(const LogInfo& info) {
         out << "null:      none declared in the header\n";
     if (!info.holeAzimuth.empty()) out << "hole azi:  " << info.holeAzimuth << "\n";
     if (!info.north.resolved.empty()) out << "north:     " << info.north.resolved << "\n";
+    for (const CasingString& c : info.casing) out << "casing:    " << describeCasing(c) << "\n";
     out << (info.survey ? "columns:\n" : "curves:\n");
     // Characters, not bytes: a decoded UTF-16 header may hold non-ASCII mnemonics.
     auto shown = [](const std::string& s) {

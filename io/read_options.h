@@ -1,6 +1,9 @@
 #pragma once
 
 #include <optional>
+#include <vector>
+
+#include "io/casing_string.h"
 
 #include "io/azimuth_north.h"
 #include "io/curve_roles.h"
@@ -46,6 +49,7 @@ struct ReadOptions {
     std::optional<double> declination_deg;
     std::optional<double> gridConvergence_deg;
     North azimuthNorth = North::Unknown;
+    std::vector<CasingString> casing;  // --casing: replaces the file's casing program
 };
 // Two wells read alike: the window compares the options its wells were opened with.
 inline bool operator==(const ReadOptions& a, const ReadOptions& b) {
@@ -53,7 +57,8 @@ inline bool operator==(const ReadOptions& a, const ReadOptions& b) {
            a.allowRadiiOnly == b.allowRadiiOnly && a.rowStep_m == b.rowStep_m &&
            a.nullPolicy == b.nullPolicy && a.depthOrder == b.depthOrder && a.roles == b.roles &&
            a.bitSize_mm == b.bitSize_mm && a.declination_deg == b.declination_deg &&
-           a.gridConvergence_deg == b.gridConvergence_deg && a.azimuthNorth == b.azimuthNorth;
+           a.gridConvergence_deg == b.gridConvergence_deg && a.azimuthNorth == b.azimuthNorth &&
+           a.casing == b.casing;
 }
 inline bool operator!=(const ReadOptions& a, const ReadOptions& b) {
     return !(a == b);

@@ -72,6 +72,7 @@ SectionTable SectionTable::rows(std::size_t first, std::size_t last) const {
     out.armCount = armCount;
     out.holeAzimuth = holeAzimuth;
     out.north = north;
+    out.casing = casing;
     for (const ExtraCurve& e : extraCurves)
         out.extraCurves.push_back({e.mnemonic, e.unit, e.description, {}});
     out.appendRows(*this, first, std::min(last, rowCount()));

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "io/casing_string.h"
+
 namespace caliper3d::io {
 
 inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -54,6 +56,9 @@ struct SectionTable {
     // applied to reach it (docs/conventions.md, "North"), as the report and the window
     // show it; empty when the table has no azimuth curve.
     std::string north;
+    // The casing set in the hole (--casing, else the LAS ~Parameter section), shallowest
+    // shoe first; empty when neither says (docs/analysis.md, "Cased hole").
+    std::vector<CasingString> casing;
 
     std::size_t rowCount() const { return depth_m.size(); }
     const double* radii(std::size_t row) const { return radius_mm.data() + row * armCount; }

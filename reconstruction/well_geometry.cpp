@@ -9,6 +9,7 @@
 #include <glm/gtc/constants.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "io/casing_program.h"
 #include "reconstruction/mesh/lod_levels.h"
 #include "reconstruction/mesh/wall_colouring.h"
 #include "reconstruction/parallel/ordered_blocks.h"
@@ -268,6 +269,9 @@ Ned WellGeometry::centre(std::size_t row) const {
 }
 
 double WellGeometry::bitRadius_mm(std::size_t row) const {
+    if (!m_table->casing.empty() && row < m_table->rowCount())
+        if (const io::CasingString* c = io::casingAt(m_table->casing, m_table->depth_m[row]))
+            return c->innerDiameter_mm / 2.0;
     return valueAt(m_table->bitSize_mm, row) / 2.0;
 }
 

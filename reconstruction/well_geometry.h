@@ -130,7 +130,8 @@ public:
                m_table->holeAzimuth != io::SectionTable::HoleAzimuth::Unknown;
     }
 
-    // Bit radius of a row, millimetres (NaN when unknown).
+    // Gauge radius of a row, millimetres: half the bit size, or inside casing half the casing's
+    // nominal inner diameter (io::casingAt); NaN when unknown.
     double bitRadius_mm(std::size_t row) const;
 
     // The level-of-detail meshes of one segment, every level (reconstruction/mesh/lod_levels.h

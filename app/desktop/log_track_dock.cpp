@@ -327,8 +327,17 @@ void LogTrackDock::addBands() {
                  for (const reconstruction::Zone& zone : m_analysis->zones)
                      if (zone.kind == cls) add(zone.top_m, zone.bottom_m);
              });
+    band("cased", bandColour(BoreholeClass::Cased), [&](auto&& add) {
+        for (const reconstruction::CasingCheck& c : m_analysis->casing)
+            if (!m_depth_m.empty() && c.casing.bottom_m >= m_depth_m.front())
+                add(m_depth_m.front(), std::min(c.casing.bottom_m, m_depth_m.back()));
+    });
     band("no data", QBrush(QColor(120, 120, 120, 110), Qt::BDiagPattern), [&](auto&& add) {
         for (const reconstruction::NoDataInterval& gap : m_analysis->noData)
+            add(rowEdge_m(m_depth_m, gap.firstRow, false), rowEdge_m(m_depth_m, gap.lastRow, true));
+    });
+    band("arms not open", QBrush(QColor(120, 120, 120, 110), Qt::FDiagPattern), [&](auto&& add) {
+        for (const reconstruction::NoDataInterval& gap : m_analysis->armsNotOpen)
             add(rowEdge_m(m_depth_m, gap.firstRow, false), rowEdge_m(m_depth_m, gap.lastRow, true));
     });
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "io/casing_program.h"
 #include "io/las_reader.h"
 #include "io/parse_error.h"
 #include "io/text.h"
@@ -46,6 +47,7 @@ LogLayout lasLayout(const LasHeader& h, const std::string& file, const ReadOptio
     if (h.hasNull)
         if (const LasItem* null = h.wellItem("NULL")) info.declaredNull = null->value;
     info.location = readWellLocation(h, file, &info.diagnostics);
+    info.casing = readCasingProgram(h, file, &info.diagnostics);
     if (h.curves.empty())
         throw ParseError(file, 0, 0, "expected a ~C (curve information) section, found none");
     LogLayout layout;

@@ -17,6 +17,8 @@ std::string_view className(BoreholeClass c) {
             return "breakout";
         case BoreholeClass::Keyseat:
             return "keyseat";
+        case BoreholeClass::Cased:
+            return "cased";
         case BoreholeClass::NoData:
             return "no_data";
     }

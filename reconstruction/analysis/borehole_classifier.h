@@ -9,18 +9,22 @@
 
 namespace caliper3d::reconstruction {
 
-// NoData: too few valid arms to define the section (never a shape class;
-// WellAnalysis sets it, and it is left out of zones, statistics and volumes).
+// Cased: inside a casing string, measured against its inner diameter (never a shape class;
+// WellAnalysis sets it). NoData: too few valid arms to define the section, or arms that did
+// not open (never a shape class; WellAnalysis sets it). Both are left out of zones,
+// statistics and volumes.
 enum class BoreholeClass : unsigned char {
     InGauge,
     Undergauge,
     Washout,
     Breakout,
     Keyseat,
+    Cased,
     NoData
 };
 
-// "in_gauge", "undergauge", "washout", "breakout", "keyseat", "no_data": the report's names.
+// "in_gauge", "undergauge", "washout", "breakout", "keyseat", "cased", "no_data": the
+// report's names.
 std::string_view className(BoreholeClass c);
 
 // Every threshold of the classification (docs/analysis.md, "Classes"), with the
@@ -47,6 +51,12 @@ struct ClassificationRules {
     // A section with fewer valid arms than this fraction of its arms (at least
     // 2) has no data (section_coverage.h, docs/analysis.md).
     double minValidArmFraction = kDefaultMinValidArmFraction;
+    // Arms that did not open (docs/analysis.md, "Arms not open"): a run of at least
+    // armsClosedMinSections measured sections whose largest diameter stays more than
+    // armsClosedFraction of the gauge below it (bit size, or the casing's inner diameter) is
+    // no_data "arms not open", never undergauge.
+    double armsClosedFraction = 0.15;
+    double armsClosedMinSections = 5.0;  // a count of sections
 };
 
 // What the classifier needs of one section.

@@ -40,15 +40,26 @@ void HoleVolumeAccumulator::addStep(double md0, double area0, double bit0, doubl
     m_volume.gaugeAnnulus_m3 += std::max(0.0, nominal - m_casing_m2 * len);
 }
 
-void HoleVolumeAccumulator::addUncoveredStep(double md0, double md1) {
-    const double a = std::max(md0, m_volume.top_m), b = std::min(md1, m_volume.bottom_m);
+namespace {
+// Adds [md0, md1], clipped to [top, bottom], to `gaps` (joined to the last when they touch).
+void addGap(double md0, double md1, double top, double bottom,
+            std::vector<std::pair<double, double>>& gaps, double& length) {
+    const double a = std::max(md0, top), b = std::min(md1, bottom);
     if (!(b > a)) return;
-    m_volume.uncovered_m += b - a;
-    auto& gaps = m_volume.uncovered;
+    length += b - a;
     if (!gaps.empty() && gaps.back().second >= a)
         gaps.back().second = b;
     else
         gaps.emplace_back(a, b);
+}
+}  // namespace
+
+void HoleVolumeAccumulator::addUncoveredStep(double md0, double md1) {
+    addGap(md0, md1, m_volume.top_m, m_volume.bottom_m, m_volume.uncovered, m_volume.uncovered_m);
+}
+
+void HoleVolumeAccumulator::addCasedStep(double md0, double md1) {
+    addGap(md0, md1, m_volume.top_m, m_volume.bottom_m, m_volume.cased, m_volume.cased_m);
 }
 
 HoleVolume HoleVolumeAccumulator::result() const {

@@ -29,6 +29,11 @@ struct HoleVolume {
     // in depth order) are not in any figure above, gauge ones included.
     std::vector<std::pair<double, double>> uncovered;
     double uncovered_m = 0.0;  // their combined length
+    // Where a step touches a section inside casing (class cased) neither volume is
+    // integrated either: these intervals, in depth order, are the cased hole the figures
+    // above leave out (open hole only).
+    std::vector<std::pair<double, double>> cased;
+    double cased_m = 0.0;
 };
 
 // The hole and cement volumes, one step from section to section in depth order (md
@@ -42,6 +47,8 @@ public:
                  double bit1_mm);
     // A step from or to a section without data: not integrated, recorded as uncovered.
     void addUncoveredStep(double md0_m, double md1_m);
+    // A step from or to a section inside casing: not integrated, recorded as cased.
+    void addCasedStep(double md0_m, double md1_m);
     HoleVolume result() const;
 
 private:

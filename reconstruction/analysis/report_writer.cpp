@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "io/atomic_output.h"
+#include "io/casing_program.h"
 #include "io/las_writer.h"
 
 namespace caliper3d::reconstruction {
@@ -60,11 +61,39 @@ std::string volumeSummary(const HoleVolume& v) {
                  fixed(v.uncovered[k].second, 2) + " m";
         s += " (" + fixed(v.uncovered_m, 2) + " m in all; no volume figure includes it)\n";
     }
+    if (!v.cased.empty()) {
+        s += "hole volume of open hole only; cased hole left out:";
+        for (std::size_t k = 0; k < v.cased.size(); ++k)
+            s += (k ? ", " : " ") + fixed(v.cased[k].first, 2) + "-" + fixed(v.cased[k].second, 2) +
+                 " m";
+        s += " (" + fixed(v.cased_m, 2) + " m in all)\n";
+    }
     if (v.casingOd_mm > 0.0 || v.excess > 0.0)
         s += "annulus outside " + fixed(v.casingOd_mm, 1) + " mm casing " + fixed(v.annulus_m3, 4) +
              " m3 (bit size " + fixed(v.gaugeAnnulus_m3, 4) + " m3), cement with " +
              fixed(100.0 * v.excess, 0) + " % excess " + fixed(v.cement_m3, 4) + " m3 (bit size " +
              fixed(v.gaugeCement_m3, 4) + " m3)\n";
+    return s;
+}
+
+// Each casing string and the tool's reading inside it against its nominal inner diameter.
+std::string casingSummary(const WellAnalysis& a) {
+    std::string s;
+    for (const CasingCheck& c : a.casing) {
+        s += "casing " + io::describeCasing(c.casing) + "\n";
+        s += "  reading in casing: ";
+        if (c.sections == 0) {
+            s += "none (no measured section inside it)\n";
+            continue;
+        }
+        s += "median " + fixed(c.medianDiameter_mm, 1) + " mm over " + fixed(c.top_m, 2) + "-" +
+             fixed(c.bottom_m, 2) + " m (" + std::to_string(c.sections) + " sections)";
+        if (std::isfinite(c.offset_mm))
+            s += ", nominal ID " + fixed(c.casing.innerDiameter_mm, 1) + " mm, offset " +
+                 signedFixed(c.offset_mm, 1) + " mm\n";
+        else
+            s += "; nominal ID unknown: no calibration check\n";
+    }
     return s;
 }
 
@@ -188,6 +217,9 @@ std::string formatAnalysisSummary(const WellAnalysis& a) {
     // Which north every azimuth below is from (docs/conventions.md, "North").
     std::string s = a.north.empty() ? std::string() : "north: " + a.north + "\n";
     s += breakoutSummary(a) + volumeSummary(a.volume);
+    for (const NoDataInterval& gap : a.armsNotOpen)
+        s += "arms not open over " + describeNoDataInterval(gap) + ": class no_data\n";
+    s += casingSummary(a);
     if (a.padAzimuthOffset.samples > 0)
         s += "P1AZ - (HAZI+RB): mean " + fixed(a.padAzimuthOffset.mean_deg, 2) +
              " deg, circular SD " + fixed(a.padAzimuthOffset.sd_deg, 2) + " deg over " +
@@ -241,7 +273,8 @@ void writeAnalysisLas(std::ostream& out, const WellAnalysis& a, const ReportOpti
          [](const SectionResult& r) { return r.centreOffset_mm; }},
         {"CENAZ", "DEG", "azimuth from tool axis to hole centre", 2,
          [](const SectionResult& r) { return r.centreOffsetAzimuth_deg; }},
-        {"CLASS", "", "0 in_gauge 1 undergauge 2 washout 3 breakout 4 keyseat; null no_data", 0,
+        {"CLASS", "",
+         "0 in_gauge 1 undergauge 2 washout 3 breakout 4 keyseat 5 cased; null no_data", 0,
          [](const SectionResult& r) {
              return r.cls == BoreholeClass::NoData ? io::kNaN : static_cast<double>(r.cls);
          }},
@@ -263,7 +296,7 @@ void writeAnalysisLas(std::ostream& out, const WellAnalysis& a, const ReportOpti
     io::LasWriteOptions las;
     las.wellName = wellName;
     std::string other = "Computed by caliper3d from the caliper log. CLASS codes:";
-    for (int k = 0; k <= static_cast<int>(BoreholeClass::Keyseat); ++k)
+    for (int k = 0; k <= static_cast<int>(BoreholeClass::Cased); ++k)
         other +=
             " " + std::to_string(k) + " " + std::string(className(static_cast<BoreholeClass>(k)));
     other += "; a section without caliper data (no_data) has CLASS and every measured curve null.";

@@ -51,7 +51,7 @@ std::vector<std::size_t> reportedSections(const WellAnalysis& analysis,
 // back by any LAS reader: DEPT (M), TVD, NORTH, EAST (M), INC, AZI (DEG),
 // DLS (DEG/30M), BS, DMIN, DMAX (MM), ELLIP, MAJAZ, MAJHS (DEG), AREA (MM2),
 // DEQ, CENOFF (MM), CENAZ (DEG), CLASS (code: 0 in_gauge, 1 undergauge,
-// 2 washout, 3 breakout, 4 keyseat) and REPAIRED (arms interpolated).
+// 2 washout, 3 breakout, 4 keyseat, 5 cased) and REPAIRED (arms interpolated).
 // Undefined values are the null value. `wellName` goes into ~Well.
 void writeAnalysisLas(std::ostream& out, const WellAnalysis& analysis,
                       const ReportOptions& options = {}, const std::string& wellName = "CALIPER3D");

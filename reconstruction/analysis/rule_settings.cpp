@@ -33,6 +33,11 @@ const std::vector<RuleSetting>& ruleSettings() {
         {"min_valid_arm_fraction",
          "a section with fewer valid arms than this fraction of its arms (at least 2) is no_data",
          &ClassificationRules::minValidArmFraction},
+        {"arms_closed_fraction",
+         "dmax more than this fraction below gauge over a run of sections: no_data, arms not open",
+         &ClassificationRules::armsClosedFraction},
+        {"arms_closed_min_sections", "... over at least this many sections",
+         &ClassificationRules::armsClosedMinSections},
     };
     return kSettings;
 }

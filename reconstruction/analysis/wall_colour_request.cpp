@@ -87,6 +87,8 @@ std::uint32_t classColour(BoreholeClass c) {
             return 0xE69F00FFu;  // orange
         case BoreholeClass::Keyseat:
             return 0xCC79A7FFu;  // reddish purple
+        case BoreholeClass::Cased:
+            return 0x4D4D4DFFu;  // dark grey: steel
         case BoreholeClass::NoData:
             break;
     }
@@ -200,6 +202,11 @@ std::shared_ptr<const WallColouring> makeWallColouring(const WellGeometry& g,
                 legend.categories.emplace_back(std::string(className(cls)), classColour(cls));
             }
             values = a.cls;
+            // The casing's own colour, in the legend of a well that has cased sections.
+            const auto cased = static_cast<float>(BoreholeClass::Cased);
+            if (std::find(values.begin(), values.end(), cased) != values.end())
+                legend.categories.emplace_back(std::string(className(BoreholeClass::Cased)),
+                                               classColour(BoreholeClass::Cased));
             if (a.gaugeFromSections)
                 legend.note = "no bit size: gauge is the median equivalent diameter, " +
                               millimetres(a.gauge_mm);

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "io/casing_program.h"
 #include "io/median.h"
 #include "reconstruction/parallel/ordered_blocks.h"
 #include "reconstruction/parallel/prefault.h"
@@ -213,8 +214,11 @@ public:
         forEachBlockInOrder(
             m_blocks, m_threads,
             [this](std::size_t block, std::size_t worker) { analyseBlock(block, worker); },
-            [this](std::size_t block) { sumVolume(block); });
+            [](std::size_t) {});
         if (!m_anyBit) classifyAgainstMedianDiameter();
+        markArmsNotOpen();
+        if (m_anyBit)
+            for (std::size_t i = 1; i < m_rows; ++i) addVolumeStep(i);
     }
 
     // The breakout zone rules run along the hole, over the shape classes.
@@ -253,6 +257,8 @@ public:
         a.north = m_t.north;
         a.noData = m_g.noDataIntervals();
         for (const NoDataInterval& gap : a.noData) a.noDataSections += gap.sections();
+        for (const NoDataInterval& gap : a.armsNotOpen) a.armsNotOpenSections += gap.sections();
+        checkCasing();
         for (const BlockCounts& c : m_counts) {
             a.repairedSections += c.repairedSections;
             a.repairedArms += c.repairedArms;
@@ -288,9 +294,11 @@ private:
     void storeSection(std::size_t row, const BatchShape& shape, int repaired, BlockCounts& count) {
         const PathPoint& p = m_g.path()[row];
         const double bitOverride = m_options.bitSize_mm;
-        SectionResult r =
-            positionOf(p, m_azimuthKnown,
-                       std::isfinite(bitOverride) ? bitOverride : 2.0 * m_g.bitRadius_mm(row));
+        const io::CasingString* casing = io::casingAt(m_t.casing, p.md);
+        SectionResult r = positionOf(
+            p, m_azimuthKnown,
+            casing ? casing->innerDiameter_mm
+                   : (std::isfinite(bitOverride) ? bitOverride : 2.0 * m_g.bitRadius_mm(row)));
         if (!m_g.measured(row)) {
             markNoData(r);
             m_classes[row] = r.cls;
@@ -317,7 +325,9 @@ private:
             r.majorAzimuth_deg = r.centreOffsetAzimuth_deg = io::kNaN;
             r.majorFromHighSide_deg = io::kNaN;
         }
-        r.cls = m_anyBit ? shapeClass(r, m_options.rules) : BoreholeClass::InGauge;
+        r.cls = casing     ? BoreholeClass::Cased
+                : m_anyBit ? shapeClass(r, m_options.rules)
+                           : BoreholeClass::InGauge;
         m_classes[row] = r.cls;
         if (!m_azimuthKnown && p.inc_deg > 0.0) {
             // Arm 1 placed from RB has no true azimuth; from P1AZ, no high side.
@@ -334,19 +344,67 @@ private:
         if (!oriented) ++count.unorientedSections;
     }
 
-    // The step from section i - 1 to i, unless either has no data.
+    // The step from section i - 1 to i: open hole only, unless either has no data.
     void addVolumeStep(std::size_t i) {
         const SectionResult &r0 = m_a.sections[i - 1], &r1 = m_a.sections[i];
-        if (m_g.measured(i - 1) && m_g.measured(i))
+        if (io::casingAt(m_t.casing, r0.md_m) || io::casingAt(m_t.casing, r1.md_m))
+            m_volume.addCasedStep(r0.md_m, r1.md_m);
+        else if (m_classes[i - 1] != BoreholeClass::NoData && m_classes[i] != BoreholeClass::NoData)
             m_volume.addStep(r0.md_m, r0.area_mm2, r0.bit_mm, r1.md_m, r1.area_mm2, r1.bit_mm);
         else
             m_volume.addUncoveredStep(r0.md_m, r1.md_m);
     }
 
-    void sumVolume(std::size_t block) {
-        if (!m_anyBit) return;
-        const std::size_t first = block * kBlockRows, last = std::min(m_rows, first + kBlockRows);
-        for (std::size_t i = std::max<std::size_t>(first, 1); i < last; ++i) addVolumeStep(i);
+    // Arms that did not open (docs/analysis.md, "Arms not open"): runs of at least
+    // armsClosedMinSections measured sections whose largest diameter stays more than
+    // armsClosedFraction of their gauge below it become no_data, listed in armsNotOpen.
+    void markArmsNotOpen() {
+        const ClassificationRules& rules = m_options.rules;
+        auto closed = [&](std::size_t i) {
+            const SectionResult& r = m_a.sections[i];
+            return m_g.measured(i) && r.dmax_mm < r.bit_mm * (1.0 - rules.armsClosedFraction);
+        };
+        const auto minRun =
+            static_cast<std::size_t>(std::max(1.0, std::ceil(rules.armsClosedMinSections)));
+        std::size_t i = 0;
+        while (i < m_rows) {
+            if (!closed(i)) {
+                ++i;
+                continue;
+            }
+            std::size_t j = i;
+            while (j + 1 < m_rows && closed(j + 1)) ++j;
+            if (j - i + 1 >= minRun) {
+                for (std::size_t k = i; k <= j; ++k) {
+                    markNoData(m_a.sections[k]);
+                    m_classes[k] = BoreholeClass::NoData;
+                }
+                m_a.armsNotOpen.push_back({i, j, m_a.sections[i].md_m, m_a.sections[j].md_m});
+            }
+            i = j + 1;
+        }
+    }
+
+    // Each casing string's measured sections: their median equivalent diameter against the
+    // casing's nominal inner diameter.
+    void checkCasing() {
+        for (const io::CasingString& c : m_t.casing) {
+            CasingCheck check;
+            check.casing = c;
+            std::vector<double> d;
+            for (std::size_t i = 0; i < m_rows; ++i) {
+                const SectionResult& r = m_a.sections[i];
+                if (m_classes[i] != BoreholeClass::Cased || io::casingAt(m_t.casing, r.md_m) != &c)
+                    continue;
+                if (!std::isfinite(check.top_m)) check.top_m = r.md_m;
+                check.bottom_m = r.md_m;
+                d.push_back(r.equivalentDiameter_mm);
+            }
+            check.sections = d.size();
+            if (!d.empty()) check.medianDiameter_mm = io::medianInPlace(d);
+            check.offset_mm = check.medianDiameter_mm - c.innerDiameter_mm;
+            m_a.casing.push_back(check);
+        }
     }
 
     // No bit size anywhere: the median equivalent diameter of the measured sections (WellGeometry
@@ -355,18 +413,22 @@ private:
         std::vector<double> d;
         d.reserve(m_g.measuredRows());
         for (std::size_t i = 0; i < m_rows; ++i)
-            if (m_g.measured(i)) d.push_back(m_a.sections[i].equivalentDiameter_mm);
+            if (m_g.measured(i) && m_classes[i] != BoreholeClass::Cased)
+                d.push_back(m_a.sections[i].equivalentDiameter_mm);
+        if (d.empty()) return;  // cased throughout: no open hole to take a gauge from
         const double gauge_mm = io::medianInPlace(d);
         for (std::size_t i = 0; i < m_rows; ++i) {
             SectionResult& r = m_a.sections[i];
+            if (m_classes[i] == BoreholeClass::Cased) continue;
+            if (io::casingAt(m_t.casing, r.md_m)) continue;  // no data inside casing
             r.bit_mm = gauge_mm;
             if (m_g.measured(i)) {
                 r.cls = shapeClass(r, m_options.rules);
                 m_classes[i] = r.cls;
             }
-            if (i > 0) addVolumeStep(i);
         }
         m_a.bitSizeFromSections = true;
+        m_anyBit = true;
     }
 
     const WellGeometry& m_g;
@@ -377,7 +439,7 @@ private:
     const int m_threads;
     const SectionBatchAnalyzer m_analyzer;
     const bool m_azimuthKnown;
-    const bool m_anyBit;
+    bool m_anyBit;  // a bit size known, or the median diameter taken for one
     const bool m_checkOrientation;
     const std::size_t m_blocks;
     std::vector<Scratch> m_scratch;

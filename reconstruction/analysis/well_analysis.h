@@ -30,6 +30,16 @@ struct SectionResult {
     BoreholeClass cls = BoreholeClass::InGauge;
 };
 
+// The tool's reading inside one casing string against the casing's nominal inner diameter: a
+// calibration check of the run (docs/analysis.md, "Cased hole").
+struct CasingCheck {
+    io::CasingString casing;
+    double top_m = io::kNaN, bottom_m = io::kNaN;  // the cased sections logged (NaN: none)
+    std::size_t sections = 0;                      // measured sections inside it
+    double medianDiameter_mm = io::kNaN;           // median equivalent diameter of those sections
+    double offset_mm = io::kNaN;  // median - nominal inner diameter (NaN: either unknown)
+};
+
 struct AnalysisOptions {
     ClassificationRules rules;
     WsmQualityRules wsm;
@@ -49,7 +59,12 @@ struct WellAnalysis {
     std::size_t repairedArms = 0;
     std::size_t unorientedSections = 0;  // no P1AZ nor RB: azimuths unknown (measured sections)
     std::vector<NoDataInterval> noData;  // runs of sections without data (class no_data)
-    std::size_t noDataSections = 0;
+    std::size_t noDataSections = 0;      // in noData (too few valid arms)
+    // Runs of sections whose arms did not open (class no_data, reason "arms not open";
+    // ClassificationRules::armsClosedFraction): not in noData.
+    std::vector<NoDataInterval> armsNotOpen;
+    std::size_t armsNotOpenSections = 0;
+    std::vector<CasingCheck> casing;   // one per casing string of the table, shallowest first
     bool bitSizeFromSections = false;  // no bit size anywhere: median equivalent diameter used
     bool holeAzimuthUnknown = false;   // inclined, no HAZI nor survey: see docs/conventions.md
     std::string north;                 // which north the azimuths are from: io::SectionTable::north

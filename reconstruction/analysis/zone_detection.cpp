@@ -52,7 +52,8 @@ std::vector<Zone> detectZones(const std::vector<BoreholeClass>& classes,
     std::size_t i = 0;
     const std::size_t n = classes.size();
     while (i < n) {
-        if (classes[i] == BoreholeClass::InGauge || classes[i] == BoreholeClass::NoData) {
+        if (classes[i] == BoreholeClass::InGauge || classes[i] == BoreholeClass::NoData ||
+            classes[i] == BoreholeClass::Cased) {
             ++i;
             continue;
         }

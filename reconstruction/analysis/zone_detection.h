@@ -21,7 +21,7 @@ struct AxialStatistics {
 AxialStatistics axialStatistics(const std::vector<double>& angles_deg,
                                 const std::vector<double>& weights = {});
 
-// A run of consecutive sections of one class (not in_gauge, not no_data).
+// A run of consecutive sections of one class (not in_gauge, cased nor no_data).
 struct Zone {
     BoreholeClass kind = BoreholeClass::Breakout;
     double top_m = 0.0;
@@ -35,7 +35,7 @@ struct Zone {
     double meanDmin_mm = 0.0;
 };
 
-// Zones of every class but in_gauge and no_data, in depth order. `majorAzimuth_deg` may
+// Zones of every class but in_gauge, cased and no_data, in depth order. `majorAzimuth_deg` may
 // hold NaN (a horizontal hole with a vertical major axis): skipped in the mean.
 std::vector<Zone> detectZones(const std::vector<double>& md_m,
                               const std::vector<BoreholeClass>& classes,

@@ -52,6 +52,7 @@ io::SectionTable loadWellTable(const std::string& path, const io::ReadOptions& o
     applyNorth(loaded.table, north);
     if (diagnostics)
         for (const std::string& warning : north.warnings) diagnostics->warn(path, 0, warning);
+    loaded.table.casing = options.casing.empty() ? loaded.info.casing : options.casing;
     resolveHoleAzimuth(loaded.table, io::holeAzimuthPlan(loaded.info, surveyGiven), diagnostics);
     return std::move(loaded.table);
 }

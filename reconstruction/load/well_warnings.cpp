@@ -1,5 +1,6 @@
 #include "reconstruction/load/well_warnings.h"
 
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -50,6 +51,23 @@ void warnAnalysis(const WellGeometry& g, const WellAnalysis& a, io::Diagnostics&
                std::to_string(a.unorientedSections) +
                    " sections without a pad-1 azimuth or relative bearing: orientation "
                    "unknown, their azimuths are left empty");
+    for (const NoDataInterval& gap : a.armsNotOpen)
+        d.warn(file, 0,
+               "arms not open over " + describeNoDataInterval(gap) +
+                   ": the largest diameter stays far below gauge (docs/analysis.md, \"Arms not "
+                   "open\"); class no_data, not undergauge");
+    for (const CasingCheck& c : a.casing) {
+        // Only a casing the log reaches into (its shoe at or below the first section).
+        if (std::isfinite(c.casing.innerDiameter_mm) || a.sections.empty() ||
+            !(c.casing.bottom_m >= a.sections[0].md_m))
+            continue;
+        char shoe[32];
+        std::snprintf(shoe, sizeof shoe, "%.2f", c.casing.bottom_m);
+        d.warn(file, 0,
+               std::string("casing to ") + shoe +
+                   " m: nominal inner diameter unknown (give --casing BOTTOM,SIZE,WEIGHT or ID); "
+                   "its sections are cased, without a calibration check");
+    }
     if (a.bitSizeFromSections)
         d.warn(file, 0, "no bit size given: the median equivalent diameter is used as gauge");
 }

@@ -418,3 +418,76 @@ TEST(ReportCommandTest, WithoutOrientationNoAzimuthIsInvented) {
     EXPECT_NE(line.find("\"mean_azimuth_deg\":null"), std::string::npos) << line;
     EXPECT_NE(line.find("\"shmax_azimuth_deg\":null"), std::string::npos) << line;
 }
+
+TEST(ReportCommandTest, CasingFromTheHeaderOrOptionIsCasedWithACalibrationCheck) {
+    // 8 5/8 in 32 lb/ft casing to 20 m (API 5CT ID 201.19 mm), read 200 mm by six arms; a
+    // 215.9 mm hole below whose arms stay closed at 110 mm over 30-35 m.
+    const auto las = scratch("report_casing.las");
+    {
+        std::ofstream out(las);
+        out << "~V\n VERS. 2.0 :\n WRAP. NO :\n~W\n STRT.M 10 :\n STOP.M 40 :\n STEP.M 0.5 :\n"
+               "~P\n BS.MM 215.9 :\n CSGL.M 20.0 : Casing bottom logger\n"
+               " CSGS.IN 8.625 : Casing size\n CSGW.LB/FT 32 : Casing weight\n"
+               "~C\n DEPT.M :\n R1.MM :\n R2.MM :\n R3.MM :\n R4.MM :\n R5.MM :\n R6.MM :\n~A\n";
+        for (int i = 0; i <= 60; ++i) {
+            const double md = 10.0 + 0.5 * i;
+            const double r = md <= 20.0 ? 100.0 : (md >= 30.0 && md <= 35.0 ? 55.0 : 107.95);
+            out << md;
+            for (int k = 0; k < 6; ++k) out << ' ' << r;
+            out << '\n';
+        }
+    }
+    const auto summary = scratch("report_casing.jsonl");
+    std::filesystem::remove(summary);
+    const CommandRun r =
+        runCaliper3d("report " + las.string() + " -o " + scratch("report_casing.csv").string() +
+                     " --summary " + summary.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("0 zones, 11 no data"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("cased hole left out: 10.00-20.50 m"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("reading in casing: median 199.7 mm over 10.00-20.00 m (21 "
+                            "sections), nominal ID 201.2 mm, offset -1.5 mm"),
+              std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("warning: arms not open over 30.00-35.00 m (11 sections)"),
+              std::string::npos)
+        << r.output;
+    const Csv csv = readCsv(scratch("report_casing.csv"));
+    ASSERT_EQ(csv.rows.size(), 61u);
+    EXPECT_EQ(csv.rows[0].at("class"), "cased");
+    EXPECT_NEAR(csv.number(0, "bit_mm"), 201.19, 0.01);
+    EXPECT_EQ(csv.rows[21].at("class"), "in_gauge");
+    EXPECT_EQ(csv.rows[45].at("class"), "no_data");
+    std::ifstream json(summary);
+    std::string line;
+    ASSERT_TRUE(std::getline(json, line));
+    EXPECT_NE(line.find("\"cased\":21"), std::string::npos) << line;
+    EXPECT_NE(line.find("\"casing\":[{\"bottom_m\":20.0,\"size_mm\":219.07"), std::string::npos)
+        << line;
+    EXPECT_NE(line.find("\"arms_not_open\":[{\"top_m\":30.0,\"bottom_m\":35.0,\"sections\":11,"
+                        "\"reason\":\"arms not open\"}]"),
+              std::string::npos)
+        << line;
+
+    // --casing replaces the header's program, once per string.
+    const CommandRun given =
+        runCaliper3d("report " + las.string() + " -o " + scratch("report_casing2.csv").string() +
+                     " --casing 15,13.375in,68lb/ft --casing 12,8.625in,200mm");
+    ASSERT_EQ(given.status, 0) << given.output;
+    EXPECT_NE(given.output.find("shoe at 12.00 m; nominal ID 200.00 mm (given)"), std::string::npos)
+        << given.output;
+    EXPECT_NE(given.output.find("shoe at 15.00 m; nominal ID 315.34 mm (API 5CT)"),
+              std::string::npos)
+        << given.output;
+    const CommandRun header = runCaliper3d("info " + las.string());
+    EXPECT_NE(header.output.find("in casing: to 20.00 m, median mean diameter 200.0 mm over 21 "
+                                 "rows, nominal ID 201.2 mm, offset -1.2 mm"),
+              std::string::npos)
+        << header.output;
+    const CommandRun info = runCaliper3d("info " + las.string() + " --casing 15,7in");
+    EXPECT_NE(info.output.find("casing:    177.8 mm (7.000 in), shoe at 15.00 m; inner diameter "
+                               "unknown (no weight) [--casing]"),
+              std::string::npos)
+        << info.output;
+    EXPECT_EQ(runCaliper3d("info " + las.string() + " --casing 15,7in,17").status, 2);
+}

@@ -29,6 +29,7 @@ const std::map<std::string, std::vector<std::string>>& samples() {
         {"row-step", {"0.0254", "2,5", "1e-3"}},
         {"nulls", {"declared"}},
         {"bit-size", {"8.5in", "215.9mm", "6.125", "21.59cm", "155.575mm"}},
+        {"casing", {"88.3,7in,17lb/ft", "30,177.8mm,166.1mm;1200,9.625,47lb/ft", "100,7"}},
         {"points", {"3", "36", "1024"}},
         {"segment-length", {"2.5", "0.1"}},
         {"shape-tolerance", {"0.3", "100"}},

@@ -85,7 +85,7 @@ TEST(WallColourRequestTest, ClassesAreTheReportsInFixedColours) {
     const WellAnalysis a = analyseWell(*g, {});
     const auto c = makeWallColouring(*g, by("class"));
     EXPECT_EQ(c->legend().kind, ColourMapKind::Categorical);
-    ASSERT_EQ(c->legend().categories.size(), 5u);
+    ASSERT_EQ(c->legend().categories.size(), 5u);  // no casing: no "cased" swatch
     EXPECT_EQ(c->legend().categories[2].first, "washout");
     std::size_t washouts = 0;
     for (std::size_t row = 0; row < g->table().rowCount(); ++row) {
