@@ -57,8 +57,9 @@ std::string depthRange(double top_m, double bottom_m) {
 
 // What a picture draws of the wells loaded: the interval asked for (each well's whole
 // log otherwise), at the radial exaggeration given or else chosen for the picture
-// (scenegraph::autoExaggeration). An interval replaces each well's geometry by its rows
-// there; the exaggeration is applied as the wells are coloured (assembleScene).
+// (scenegraph::chooseExaggeration, which the window opens with too). An interval replaces each
+// well's geometry by its rows there; the exaggeration is applied as the wells are coloured
+// (assembleScene).
 struct PicturePlan {
     std::optional<DepthInterval> depth;
     std::string depthText;    // as given, for messages
@@ -82,16 +83,8 @@ struct PicturePlan {
                 well = reconstruction::intervalGeometry(*well, depth->top_m, depth->bottom_m,
                                                         well->options());
             }
-        if (chooseExaggeration) {
-            scenegraph::Bounds bounds;
-            double radius = std::numeric_limits<double>::infinity();
-            for (const auto& well : wells) {
-                scenegraph::addPathBounds(*well, top_m(), bottom_m(), bounds);
-                const double r = scenegraph::typicalRadius_m(*well, top_m(), bottom_m());
-                if (std::isfinite(r)) radius = std::min(radius, r);  // the thinnest hole reads too
-            }
-            exaggeration = scenegraph::autoExaggeration(bounds.diagonal(), radius, height);
-        }
+        if (chooseExaggeration)
+            exaggeration = scenegraph::chooseExaggeration(wells, top_m(), bottom_m(), height);
         radialExaggeration = exaggeration;
     }
 };
@@ -178,7 +171,7 @@ int renderPicture(const std::vector<WellSource>& sources, const RenderSettings& 
         request.caption.emplace_back(eye);
     } else {
         request.view = *r.view;
-        // The path above each log is part of the picture when it shows the whole well.
+        // The path above each log, where it falls in the picture of the whole logs.
         request.unloggedPath = !plan.depth;
     }
     const double beforePicture_ms =
@@ -232,10 +225,11 @@ int runRender(const QStringList& args) {
                         "-o OUT.png draws every FILE in one picture; -o DIR/ (DIR/STEM.png) or a\n"
                         "pattern with {stem}, {name} or {index} (pics/{stem}.png) one picture\n"
                         "per FILE, a bad one not stopping the others (exit status 1).\n"
-                        "The picture shows every well whole (or --depth TOP,BOTTOM of it) with\n"
+                        "The picture frames every well's log (or --depth TOP,BOTTOM of it) with\n"
                         "depth ticks labelled in metres of measured depth, each well's name at\n"
-                        "its wellhead, the path above the log dashed, a north arrow and the\n"
-                        "radial exaggeration. Unless --exaggerate is given, radii are drawn\n"
+                        "the top of its log, the path above the log dashed where it is in view,\n"
+                        "a north arrow and the radial exaggeration. Unless --exaggerate is given, "
+                        "radii are drawn\n"
                         "large enough that the hole reads as a tube (at least 1.5 % of the\n"
                         "picture's height across); looking down the hole, as logged.");
         QCommandLineParser& p = verb.parser();

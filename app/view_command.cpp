@@ -32,13 +32,15 @@ namespace caliper3d::app {
 namespace {
 
 int showWindow(int argc, char** argv, const std::vector<WellSource>& wells,
-               const LoadOptions& options, std::optional<double> at_m = std::nullopt) {
+               const LoadOptions& options, std::optional<double> at_m = std::nullopt,
+               bool exaggerationGiven = false) {
     QApplication application(argc, argv);
     initGui();
     MainWindow window;
     window.show();
     int status = kExitOk;
     WellSession& session = window.session();
+    if (exaggerationGiven) session.keepExaggeration();
     QObject::connect(&session, &WellSession::wellFailed,
                      [&](const QString&, const QString& message) {
                          std::fprintf(stderr, "caliper3d: %s\n", message.toLocal8Bit().constData());
@@ -107,7 +109,7 @@ int runView(int argc, char** argv, const QStringList& args) {
                 "caliper3d view: no display; use 'caliper3d render' or 'caliper3d export'\n");
             return kExitUsage;
         }
-        return showWindow(argc, argv, wells, options, at);
+        return showWindow(argc, argv, wells, options, at, verb.isSet("exaggerate"));
     });
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Inventor/SbViewVolume.h>
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/actions/SoGetBoundingBoxAction.h>
 #include <Inventor/nodes/SoDirectionalLight.h>
@@ -34,6 +35,65 @@ void frameAll(SoCamera* camera, SoNode* root, const SbViewportRegion& viewport, 
     const SbVec3f focus = camera->position.getValue() + look * distance;
     camera->position = focus - look * (distance * room);
     camera->focalDistance = distance * room;
+}
+
+namespace {
+constexpr float kMaxMargin = 0.6f;  // of a view's width, at most, kept clear on its right
+}  // namespace
+
+void keepLeftOf(SoCamera* camera, SoNode* root, const SbViewportRegion& viewport,
+                float rightMargin_px) {
+    assertMainThread("keepLeftOf");
+    const float width = viewport.getViewportSizePixels()[0];
+    if (!(rightMargin_px > 0.0f) || !(width > 0.0f)) return;
+    // A narrow view keeps what it can: the wells keep at least this much of its width.
+    rightMargin_px = std::min(rightMargin_px, kMaxMargin * width);
+    SoGetBoundingBoxAction bbox(viewport);
+    bbox.apply(root);
+    const SbBox3f& box = bbox.getBoundingBox();
+    if (box.isEmpty()) return;
+    const float room = 1.0f - rightMargin_px / width;  // of the width, from the left
+    SbVec3f lo, hi, look, right;
+    box.getBounds(lo, hi);
+    camera->orientation.getValue().multVec(SbVec3f(0.0f, 0.0f, -1.0f), look);
+    camera->orientation.getValue().multVec(SbVec3f(1.0f, 0.0f, 0.0f), right);
+    // The box's extent across the picture (0 to 1, left to right) from the camera as it is.
+    const auto across = [&](float& left, float& rightEdge) {
+        const SbViewVolume volume = camera->getViewVolume(viewport.getViewportAspectRatio());
+        left = 1.0f, rightEdge = 0.0f;
+        for (int corner = 0; corner < 8; ++corner) {
+            const SbVec3f p((corner & 1) ? hi[0] : lo[0], (corner & 2) ? hi[1] : lo[1],
+                            (corner & 4) ? hi[2] : lo[2]);
+            SbVec3f screen;
+            volume.projectToScreen(p, screen);
+            left = std::min(left, screen[0]);
+            rightEdge = std::max(rightEdge, screen[0]);
+        }
+    };
+    float left = 0.0f, rightEdge = 0.0f;
+    across(left, rightEdge);
+    // Wider than the room: back off (about the focus) until it fits.
+    const float span = rightEdge - left;
+    if (span > room) {
+        const float distance = camera->focalDistance.getValue();
+        const SbVec3f focus = camera->position.getValue() + look * distance;
+        const float factor = span / room;
+        camera->position = focus - look * (distance * factor);
+        camera->focalDistance = distance * factor;
+        across(left, rightEdge);
+    }
+    // Its centre to the middle of the room: a shift across of that fraction of the width seen
+    // at the focal distance.
+    const float shift = 0.5f * (left + rightEdge) - 0.5f * room;
+    if (!(shift > 0.0f)) return;
+    const SbViewVolume volume = camera->getViewVolume(viewport.getViewportAspectRatio());
+    const float distance = camera->focalDistance.getValue();
+    const SbVec3f focus = camera->position.getValue() + look * distance;
+    SbVec3f a, b;
+    volume.projectToScreen(focus, a);
+    volume.projectToScreen(focus + right * distance, b);
+    const float perUnit = (b[0] - a[0]) / distance;  // of the width, per scene unit across
+    if (perUnit > 0.0f) camera->position = camera->position.getValue() + right * (shift / perUnit);
 }
 
 void frameFrom(SoCamera* camera, SoNode* root, const SbViewportRegion& viewport,
@@ -92,11 +152,12 @@ SoSeparator* makeRenderRoot(SoNode* scene, const SoCamera& camera, int width, in
     return root;
 }
 
-SoSeparator* makeRenderRoot(SoNode* scene, ViewDirection view, int width, int height) {
+SoSeparator* makeRenderRoot(SoNode* scene, ViewDirection view, int width, int height,
+                            SoNode* framed) {
     assertMainThread("makeRenderRoot");
     const SbViewportRegion viewport(static_cast<short>(width), static_cast<short>(height));
     SoGetBoundingBoxAction bbox(viewport);
-    bbox.apply(scene);
+    bbox.apply(framed ? framed : scene);
     const SbVec3f centre =
         bbox.getBoundingBox().isEmpty() ? SbVec3f(0, 0, 0) : bbox.getBoundingBox().getCenter();
 

@@ -33,14 +33,21 @@ void aimCamera(SoCamera* camera, ViewDirection view, const SbVec3f& centre);
 constexpr float kViewAllRoom = 1.12f;
 void frameAll(SoCamera* camera, SoNode* root, const SbViewportRegion& viewport,
               float room = kViewAllRoom);
+// Then, when `rightMargin_px` > 0 (a legend drawn over the view's right edge), moved sideways
+// and backed off further where needed so that `root`'s box lies left of the margin (of at
+// most 60 % of the view's width).
+void keepLeftOf(SoCamera* camera, SoNode* root, const SbViewportRegion& viewport,
+                float rightMargin_px);
 // aimCamera at the centre of `root`'s bounding box from `view`, then frameAll; nothing when
 // `root` is empty.
 void frameFrom(SoCamera* camera, SoNode* root, const SbViewportRegion& viewport,
                ViewDirection view);
 
-// A root ready to render: perspective camera framing `scene` from `view`
-// for the given aspect ratio, a light from the camera, then the scene.
-SoSeparator* makeRenderRoot(SoNode* scene, ViewDirection view, int width, int height);
+// A root ready to render: perspective camera framing `scene` (or `framed`, a part of it,
+// when given: what lies outside is drawn where it falls in view) from `view` for the given
+// aspect ratio, a light from the camera, then the scene.
+SoSeparator* makeRenderRoot(SoNode* scene, ViewDirection view, int width, int height,
+                            SoNode* framed = nullptr);
 // A viewer's camera seen by a picture of another shape: a copy of `camera` with the picture's
 // aspect (a viewer keeps its camera's aspect to its window), its headlight, then the scene.
 SoSeparator* makeRenderRoot(SoNode* scene, const SoCamera& camera, int width, int height);

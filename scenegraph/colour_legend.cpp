@@ -1,11 +1,18 @@
 #include "scenegraph/colour_legend.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
 
+#include <Inventor/SbMatrix.h>
+#include <Inventor/actions/SoAction.h>
+#include <Inventor/elements/SoModelMatrixElement.h>
+#include <Inventor/elements/SoViewportRegionElement.h>
+#include <Inventor/misc/SoState.h>
 #include <Inventor/nodes/SoAnnotation.h>
 #include <Inventor/nodes/SoBaseColor.h>
+#include <Inventor/nodes/SoCallback.h>
 #include <Inventor/nodes/SoFont.h>
 #include <Inventor/nodes/SoIndexedTriangleStripSet.h>
 #include <Inventor/nodes/SoLightModel.h>
@@ -16,6 +23,7 @@
 #include <Inventor/nodes/SoTranslation.h>
 
 #include "reconstruction/mesh/mesh.h"
+#include "scenegraph/label_style.h"
 #include "scenegraph/main_thread.h"
 #include "scenegraph/segment_node_builder.h"
 
@@ -25,11 +33,28 @@ namespace {
 
 using reconstruction::ColourMapKind;
 
-// Layout in the overlay camera's frame: the viewport is [-1, 1] on both axes whatever its
-// aspect (LEAVE_ALONE), text is in pixels and grows leftwards from its anchor (RIGHT).
-constexpr float kBarLeft = 0.90f, kBarRight = 0.94f, kBarTop = 0.55f, kBarBottom = -0.45f;
-constexpr float kTextRight = 0.885f, kTitleRight = 0.97f;
+// Layout: up, the overlay camera's frame (the viewport is [-1, 1] whatever its aspect,
+// LEAVE_ALONE); across, pixels from the right edge (inPixelsFromRight), text growing
+// leftwards from its anchor (RIGHT).
+constexpr float kBarLeft_px = -32.0f, kBarRight_px = -19.0f;
+constexpr float kTextRight_px = -37.0f, kTitleRight_px = -10.0f;
+constexpr float kPanelMargin_px = 10.0f;  // left of the longest line
+constexpr float kFontSize_px = 13.0f;
 constexpr int kBarSteps = 32;
+
+// x in pixels from the viewport's right edge (negative leftwards), y as the camera's.
+void inPixelsFromRight(void*, SoAction* action) {
+    SoState* state = action->getState();
+    if (!state->isElementEnabled(SoModelMatrixElement::getClassStackIndex()) ||
+        !state->isElementEnabled(SoViewportRegionElement::getClassStackIndex()))
+        return;
+    const short width = SoViewportRegionElement::get(state).getViewportSizePixels()[0];
+    SbMatrix scale, move;
+    scale.setScale(SbVec3f(2.0f / static_cast<float>(std::max<short>(width, 1)), 1.0f, 1.0f));
+    move.setTranslate(SbVec3f(1.0f, 0.0f, 0.0f));
+    scale.multRight(move);
+    SoModelMatrixElement::mult(state, nullptr, scale);
+}
 
 std::string withUnit(const std::string& text, const std::string& unit) {
     return unit.empty() ? text : text + " " + unit;
@@ -101,7 +126,18 @@ LegendText legendText(const reconstruction::ColourLegend& legend) {
     return out;
 }
 
-SoSeparator* makeColourLegend(const reconstruction::ColourLegend& legend) {
+float legendWidth_px(const reconstruction::ColourLegend& legend) {
+    const LegendText text = legendText(legend);
+    float width = textWidth_px(text.title, kFontSize_px) - kTitleRight_px;
+    for (const std::string& line : text.footer)
+        width = std::max(width, textWidth_px(line, kFontSize_px) - kTitleRight_px);
+    for (const std::string& label : text.labels)
+        width = std::max(width, textWidth_px(label, kFontSize_px) - kTextRight_px);
+    return std::ceil(width + kPanelMargin_px);
+}
+
+SoSeparator* makeColourLegend(const reconstruction::ColourLegend& legend, LegendBar bar) {
+    const float kBarTop = bar.top, kBarBottom = bar.bottom;
     assertMainThread("makeColourLegend");
     auto* root = new SoAnnotation;
     root->setName("colour_legend");
@@ -117,16 +153,21 @@ SoSeparator* makeColourLegend(const reconstruction::ColourLegend& legend) {
     unlit->model = SoLightModel::BASE_COLOR;
     auto* font = new SoFont;
     font->name = "Sans";
-    font->size = 13.0f;
+    font->size = kFontSize_px;
     root->addChild(camera);
     root->addChild(pick);
     root->addChild(unlit);
     root->addChild(font);
 
-    // A panel behind the legend so it reads over the wall.
+    auto* pixels = new SoCallback;
+    pixels->setCallback(inPixelsFromRight, nullptr);
+    root->addChild(pixels);
+
+    // A panel behind the legend so it reads over the wall, as wide as its longest line.
     const LegendText text = legendText(legend);
     const float panelBottom = kBarBottom - 0.07f * static_cast<float>(text.footer.size()) - 0.06f;
-    root->addChild(makeBar(0.55f, 1.0f, {panelBottom, 0.72f}, {0x262B36FFu, 0x262B36FFu}));
+    root->addChild(makeBar(-legendWidth_px(legend), 0.0f, {panelBottom, kBarTop + 0.17f},
+                           {0x262B36FFu, 0x262B36FFu}));
 
     std::vector<float> ys;
     std::vector<std::uint32_t> colours;
@@ -139,7 +180,7 @@ SoSeparator* makeColourLegend(const reconstruction::ColourLegend& legend) {
         for (int i = 0; i < steps; ++i) {
             const float top = kBarTop - step * static_cast<float>(i);
             const std::uint32_t c = legend.categories[static_cast<std::size_t>(i)].second;
-            root->addChild(makeBar(kBarLeft, kBarRight, {top - step * 0.85f, top}, {c, c}));
+            root->addChild(makeBar(kBarLeft_px, kBarRight_px, {top - step * 0.85f, top}, {c, c}));
         }
     } else {
         for (int i = 0; i <= steps; ++i) {
@@ -147,26 +188,27 @@ SoSeparator* makeColourLegend(const reconstruction::ColourLegend& legend) {
             ys.push_back(kBarBottom + step * static_cast<float>(i));
             colours.push_back(mapColour(legend, t));
         }
-        root->addChild(makeBar(kBarLeft, kBarRight, ys, colours));
+        root->addChild(makeBar(kBarLeft_px, kBarRight_px, ys, colours));
     }
 
     auto* ink = new SoBaseColor;
     ink->rgb.setValue(0.92f, 0.93f, 0.95f);
     root->addChild(ink);
-    addText(root, kTitleRight, 0.64f, text.title);
+    addText(root, kTitleRight_px, kBarTop + 0.09f, text.title);
     const float lineHeight = 0.035f;  // baseline to the centre of a line, roughly
     if (legend.kind == ColourMapKind::Categorical) {
         for (std::size_t i = 0; i < text.labels.size(); ++i) {
             const float top = kBarTop - step * static_cast<float>(i);
-            addText(root, kTextRight, top - step * 0.425f - lineHeight / 2, text.labels[i]);
+            addText(root, kTextRight_px, top - step * 0.425f - lineHeight / 2, text.labels[i]);
         }
     } else {
         const float ysOf[3] = {kBarTop, (kBarTop + kBarBottom) / 2.0f, kBarBottom};
         for (std::size_t i = 0; i < 3; ++i)
-            addText(root, kTextRight, ysOf[i] - lineHeight / 2, text.labels[i]);
+            addText(root, kTextRight_px, ysOf[i] - lineHeight / 2, text.labels[i]);
     }
     for (std::size_t i = 0; i < text.footer.size(); ++i)
-        addText(root, kTitleRight, kBarBottom - 0.07f * static_cast<float>(i + 1), text.footer[i]);
+        addText(root, kTitleRight_px, kBarBottom - 0.07f * static_cast<float>(i + 1),
+                text.footer[i]);
     return root;
 }
 

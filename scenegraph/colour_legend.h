@@ -21,10 +21,23 @@ LegendText legendText(const reconstruction::ColourLegend& legend);
 
 // An overlay drawing `legend` at the right edge of the picture, over whatever the scene
 // draws there: its own orthographic camera spanning the viewport, no depth test
-// (SoAnnotation), unlit colours and SoText2 labels. Add it after the scene under the render
+// (SoAnnotation), unlit colours and SoText2 labels. Across, it is laid out in pixels from the
+// right edge, its panel as wide as its longest line (legendWidth_px); up, in fractions of
+// the picture's height. Add it after the scene under the render
 // root, or as a viewer's superimposition; it adds nothing to a bounding box of the scene.
 // Main thread only.
-SoSeparator* makeColourLegend(const reconstruction::ColourLegend& legend);
+// Where its colour bar runs, up the picture ([-1, 1]); the title above it, the notes below.
+// A window's tall view whose wells are named at their top puts it in its lower half.
+struct LegendBar {
+    float top = 0.55f;
+    float bottom = -0.45f;
+};
+constexpr LegendBar kLowerLegendBar{-0.15f, -0.7f};
+SoSeparator* makeColourLegend(const reconstruction::ColourLegend& legend, LegendBar bar = {});
+
+// The width of the legend's panel, pixels from the picture's right edge: the room a view
+// leaves it when it frames the scene beside it.
+float legendWidth_px(const reconstruction::ColourLegend& legend);
 
 // A number as legends print it: 3 significant digits, no trailing zeros ("-25", "0.25",
 // "1.12", "216").

@@ -2,6 +2,8 @@
 
 #include <cstddef>
 #include <cstdlib>
+#include <string>
+#include <string_view>
 
 #include <Inventor/nodes/SoFont.h>
 
@@ -27,6 +29,23 @@ SoFont* makeLabelFont(float size_px) {
 float labelWidth_px(std::size_t characters, float size_px) {
     // DejaVu Sans Bold's widest digits and letters are about 0.7 em.
     return 0.7f * size_px * static_cast<float>(characters);
+}
+
+float textWidth_px(const std::string& text, float size_px) {
+    float em = 0.0f;
+    for (const char c : text) {
+        if (std::string_view(" .,:;'|!ijl").find(c) != std::string_view::npos)
+            em += 0.34f;
+        else if (std::string_view("frt()[]/-").find(c) != std::string_view::npos)
+            em += 0.43f;
+        else if (std::string_view("mwMW").find(c) != std::string_view::npos)
+            em += 1.0f;
+        else if (c >= 'A' && c <= 'Z')
+            em += 0.78f;
+        else
+            em += 0.64f;  // lower case and digits: 0.60 to 0.64 em
+    }
+    return em * size_px;
 }
 
 }  // namespace caliper3d::scenegraph

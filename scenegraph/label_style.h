@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 
 class SoFont;
 
@@ -29,5 +30,9 @@ void useRunTimeFontLibraries();
 
 // Pixels a label of `characters` characters takes across, at most (for keeping labels apart).
 float labelWidth_px(std::size_t characters, float size_px = kLabelSize_px);
+// Pixels `text` takes across in DejaVu Sans (what "Sans" finds) at `size_px`: its advance
+// widths by class of character, rounded up (narrow punctuation, i and l; f, r, t and
+// brackets; m, w, M and W; other capitals; the rest), for laying out panels of text.
+float textWidth_px(const std::string& text, float size_px);
 
 }  // namespace caliper3d::scenegraph

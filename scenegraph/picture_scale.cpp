@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -52,6 +53,22 @@ double autoExaggeration(double extent_m, double typicalRadius_m, int pictureHeig
     const double wanted = fraction * extent_m / (2.0 * typicalRadius_m);
     if (wanted <= 1.0) return 1.0;
     return std::min(roundUpToSeries(wanted), kMaxExaggeration);
+}
+
+double chooseExaggeration(
+    const std::vector<std::shared_ptr<const reconstruction::WellGeometry>>& wells, double top_m,
+    double bottom_m, int pictureHeight_px) {
+    Bounds bounds;
+    double radius = std::numeric_limits<double>::infinity();
+    for (const auto& well : wells) {
+        const std::vector<double>& depth = well->table().depth_m;
+        if (depth.empty()) continue;
+        const double top = std::max(top_m, depth.front());  // the log, not the path above it
+        addPathBounds(*well, top, bottom_m, bounds);
+        const double r = typicalRadius_m(*well, top, bottom_m);
+        if (std::isfinite(r)) radius = std::min(radius, r);  // the thinnest hole reads too
+    }
+    return autoExaggeration(bounds.diagonal(), radius, pictureHeight_px);
 }
 
 void Bounds::add(const glm::dvec3& p) {

@@ -1,6 +1,8 @@
 #pragma once
 
 #include <limits>
+#include <memory>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
@@ -30,6 +32,14 @@ constexpr double kMinDrawnDiameter = 0.015;
 constexpr double kMinDrawnDiameter_px = 4.0;
 constexpr double kMaxExaggeration = 1000.0;  // as --exaggerate allows
 double autoExaggeration(double extent_m, double typicalRadius_m, int pictureHeight_px);
+
+// The exaggeration a picture `pictureHeight_px` high chooses for `wells` over measured depths
+// [top_m, bottom_m]: autoExaggeration of the extent of each well's logged path there (the
+// path above the log is not what the picture frames) and the thinnest well's typical radius.
+// `caliper3d render` and the window, which opens with it, both draw with this.
+double chooseExaggeration(
+    const std::vector<std::shared_ptr<const reconstruction::WellGeometry>>& wells, double top_m,
+    double bottom_m, int pictureHeight_px);
 
 // The smallest of 1, 2, 3, 5 times a power of ten that is at least `value` (> 0).
 double roundUpToSeries(double value);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <tuple>
 
 #include <Inventor/SbMatrix.h>
 #include <Inventor/SbViewVolume.h>
@@ -32,12 +33,23 @@
 
 namespace caliper3d::scenegraph {
 
+// A letter at the end of one of the arrow's arms.
+struct ArmLetter {
+    const SbMatrix* rotation = nullptr;  // the scene camera's, as last drawn
+    SbVec3f at;                          // arrow units, scene frame
+    SbVec3f foreshortenedAt;             // arrow units, across and up the picture
+};
+
 // The rotation part of the scene camera's viewing matrix, as last drawn.
 struct ViewOverlay::SceneCamera {
     SbMatrix rotation = SbMatrix::identity();
+    ArmLetter north, east;
 };
 
 namespace {
+
+// An arm seen at less than this fraction of its length across the picture is end on.
+constexpr float kForeshortened = 0.45f;
 
 bool drawing(SoAction* action) {
     return action->isOfType(SoGLRenderAction::getClassTypeId());
@@ -78,6 +90,20 @@ void placeArrow(void* data, SoAction* action) {
     m.multRight(scale);
     m.multRight(move);
     SoModelMatrixElement::mult(state, nullptr, m);
+}
+
+// An arm seen end on (looking north, the north arm points into the picture) would put its
+// letter on the arrow's centre, over the other letter: it goes beside the centre instead.
+void placeLetter(void* data, SoAction* action) {
+    if (!drawing(action)) return;
+    const auto& letter = *static_cast<const ArmLetter*>(data);
+    SbVec3f seen;
+    letter.rotation->multDirMatrix(letter.at, seen);
+    const float across = std::hypot(seen[0], seen[1]);
+    if (across >= kForeshortened * letter.at.length()) return;
+    SbVec3f local;
+    letter.rotation->inverse().multDirMatrix(letter.foreshortenedAt, local);
+    SoModelMatrixElement::translateBy(action->getState(), nullptr, local - letter.at);
 }
 
 // Pixels from the bottom-left corner, for the caption.
@@ -168,9 +194,18 @@ ViewOverlay::ViewOverlay() : m_camera(std::make_unique<SceneCamera>()) {
         makeLines(kNorth, 2.5f,
                   {{SbVec3f(0, 0, 0), SbVec3f(0, 0, -1.0f)},
                    {SbVec3f(-0.18f, 0, -0.72f), SbVec3f(0, 0, -1.0f), SbVec3f(0.18f, 0, -0.72f)}}));
-    arrow->addChild(letterAt("N", SbVec3f(0.0f, 0.0f, -1.3f), kNorth));
-    // East named too: looking north, the north arm points into the picture.
-    arrow->addChild(letterAt("E", SbVec3f(0.8f, 0.0f, 0.0f), kGrey));
+    // East named too: looking north, the north arm points into the picture. A letter whose
+    // arm is seen end on goes under the centre (N) or above it (E), clear of the other.
+    m_camera->north = {&m_camera->rotation, SbVec3f(0.0f, 0.0f, -1.3f), SbVec3f(0.0f, -0.9f, 0.0f)};
+    m_camera->east = {&m_camera->rotation, SbVec3f(0.8f, 0.0f, 0.0f), SbVec3f(0.0f, 0.75f, 0.0f)};
+    for (auto [letter, arm, colour] :
+         {std::tuple{"N", &m_camera->north, kNorth}, std::tuple{"E", &m_camera->east, kGrey}}) {
+        SoSeparator* text = letterAt(letter, arm->at, colour);
+        auto* beside = new SoCallback;
+        beside->setCallback(placeLetter, arm);
+        text->insertChild(beside, 0);
+        arrow->addChild(text);
+    }
     content->addChild(arrow);
 
     // The caption beside the arrow, outlined in the background colour: legible over a wall

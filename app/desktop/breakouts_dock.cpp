@@ -44,14 +44,17 @@ BreakoutsDock::BreakoutsDock(DeskModel& model, QWidget* parent)
     setObjectName("breakouts");
     m_chart = new QPolarChart;
     m_chart->setAnimationOptions(QChart::NoAnimation);
-    m_chart->setMargins(QMargins(2, 2, 2, 2));
+    // Room for the angle labels outside the rose, which a narrow dock would put on it.
+    m_chart->setMargins(QMargins(8, 4, 8, 8));
     // The summary under the rose says what its lines are: the chart's own legend would
     // cut their names short in a narrow dock.
     m_chart->legend()->hide();
     // Azimuths clockwise from north at the top: the polar chart's own convention.
     auto* angular = new QValueAxis(m_chart);
     angular->setRange(0.0, 360.0);
-    angular->setTickCount(13);
+    // Labelled every 90 degrees, a line every 30: twelve labels crowd a rose this small.
+    angular->setTickCount(5);
+    angular->setMinorTickCount(2);
     angular->setLabelFormat("%d");
     m_chart->addAxis(angular, QPolarChart::PolarOrientationAngular);
     m_radial = new QValueAxis(m_chart);
@@ -60,7 +63,7 @@ BreakoutsDock::BreakoutsDock(DeskModel& model, QWidget* parent)
     m_chart->addAxis(m_radial, QPolarChart::PolarOrientationRadial);
     m_view = new QChartView(m_chart);
     m_view->setRenderHint(QPainter::Antialiasing);
-    m_view->setMinimumSize(160, 160);
+    m_view->setMinimumSize(180, 180);
     m_summary = new QLabel;
     m_summary->setWordWrap(true);
     m_summary->setObjectName("breakoutSummary");

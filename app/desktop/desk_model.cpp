@@ -14,14 +14,16 @@ int DeskModel::addWell(DeskWell well) {
     m_wells.push_back(std::move(well));
     const int index = wellCount() - 1;
     emit wellsChanged();
-    if (m_well < 0 && m_wells.back().geometry) setCurrentRow(index, 0);
+    if (m_well < 0 && m_wells.back().geometry)
+        setCurrentRow(index, firstMeasuredRow(*m_wells.back().geometry));
     return index;
 }
 
 void DeskModel::updateWell(int i, DeskWell well) {
     m_wells.at(static_cast<std::size_t>(i)) = std::move(well);
     emit wellChanged(i);
-    if (m_well < 0 && m_wells[static_cast<std::size_t>(i)].geometry) setCurrentRow(i, 0);
+    const auto& geometry = m_wells[static_cast<std::size_t>(i)].geometry;
+    if (m_well < 0 && geometry) setCurrentRow(i, firstMeasuredRow(*geometry));
 }
 
 int DeskModel::indexOf(int id) const {
@@ -44,7 +46,8 @@ void DeskModel::removeWell(int i) {
     if (!wasCurrent) return;
     emit currentChanged(m_well, m_depth_m);
     for (int w = 0; w < wellCount() && m_well < 0; ++w)
-        if (m_wells[static_cast<std::size_t>(w)].geometry) setCurrentRow(w, 0);
+        if (const auto& g = m_wells[static_cast<std::size_t>(w)].geometry)
+            setCurrentRow(w, firstMeasuredRow(*g));
 }
 
 void DeskModel::clearWells() {
@@ -73,6 +76,13 @@ std::size_t DeskModel::nearestRow(const reconstruction::WellGeometry& geometry, 
     const auto below = above - 1;
     return static_cast<std::size_t>((md_m - *below <= *above - md_m ? below : above) -
                                     depth.begin());
+}
+
+std::size_t DeskModel::firstMeasuredRow(const reconstruction::WellGeometry& geometry) {
+    const std::size_t rows = geometry.table().rowCount();
+    for (std::size_t row = 0; row < rows; ++row)
+        if (geometry.measured(row)) return row;
+    return 0;
 }
 
 void DeskModel::setCurrent(int well, double md_m) {

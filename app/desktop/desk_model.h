@@ -52,10 +52,12 @@ public:
     int indexOf(int id) const;
 
     // Called by the well session as wells load.
-    int addWell(DeskWell well);             // emits wellsChanged; the first becomes current
+    // The first well with geometry becomes current at its first measured section
+    // (firstMeasuredRow): every view opens on data.
+    int addWell(DeskWell well);             // emits wellsChanged
     void updateWell(int i, DeskWell well);  // emits wellChanged(i)
     // Emits wellsChanged; when the current well goes, the first well with geometry becomes
-    // current at its first row (currentChanged).
+    // current at its first measured section (currentChanged).
     void removeWell(int i);
     void clearWells();                     // emits wellsChanged and currentChanged
     void setVisible(int i, bool visible);  // emits wellChanged(i)
@@ -77,6 +79,9 @@ public:
 
     // The row of `geometry`'s table nearest `md_m` (the log's first or last beyond its ends).
     static std::size_t nearestRow(const reconstruction::WellGeometry& geometry, double md_m);
+    // The first row with a measured section (WellGeometry::measured); the first row when the
+    // log has none.
+    static std::size_t firstMeasuredRow(const reconstruction::WellGeometry& geometry);
 
 signals:
     void wellsChanged();

@@ -1,5 +1,8 @@
 #include "app/desktop/load_progress_bar.h"
 
+#include <algorithm>
+
+#include <QFontMetrics>
 #include <QHBoxLayout>
 #include <QProgressBar>
 #include <QToolButton>
@@ -14,7 +17,7 @@ LoadProgressBar::LoadProgressBar(WellSession& session, QWidget* parent)
     layout->setContentsMargins(0, 0, 0, 0);
     m_bar = new QProgressBar(this);
     m_bar->setRange(0, kSteps);
-    m_bar->setMaximumWidth(260);
+    m_bar->setMaximumWidth(kMaxWidth_px);
     m_bar->setTextVisible(true);
     m_cancel = new QToolButton(this);
     m_cancel->setText("Cancel");
@@ -44,7 +47,13 @@ void LoadProgressBar::refresh() {
         return;
     }
     m_bar->setValue(static_cast<int>(kSteps * progress.fraction));
-    m_bar->setFormat(progress.text + " %p%");
+    // The whole text in the bar: wide enough for it, a long file name shortened in the middle.
+    const QFontMetrics metrics(m_bar->font());
+    const int room = kMaxWidth_px - kTextMargin_px;
+    const QString text = metrics.elidedText(progress.text + " 100%", Qt::ElideMiddle, room);
+    m_bar->setMinimumWidth(
+        std::min(kMaxWidth_px, metrics.horizontalAdvance(text) + kTextMargin_px));
+    m_bar->setFormat(text.chopped(5) + " %p%");  // " 100%" kept whole by ElideMiddle
 }
 
 }  // namespace caliper3d::app

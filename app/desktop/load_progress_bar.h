@@ -25,6 +25,8 @@ public:
 private:
     static constexpr int kSteps = 1000;
     static constexpr int kInterval_ms = 100;
+    static constexpr int kMaxWidth_px = 480;
+    static constexpr int kTextMargin_px = 24;  // the bar's frame and padding around its text
     WellSession& m_session;
     QProgressBar* m_bar = nullptr;
     QToolButton* m_cancel = nullptr;

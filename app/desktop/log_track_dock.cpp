@@ -4,6 +4,7 @@
 #include <cmath>
 #include <set>
 
+#include <QFontMetrics>
 #include <QLabel>
 #include <QMouseEvent>
 #include <QStackedWidget>
@@ -144,7 +145,10 @@ LogTrackDock::LogTrackDock(DeskModel& model, QWidget* parent)
     connect(
         m_chart, &QChart::plotAreaChanged, this,
         [this] {
-            if (m_analysis && plotHeight_px() != m_drawnHeight_px) redraw();
+            if (!m_analysis) return;
+            const bool narrower = plotWidth_px() != m_fittedWidth_px;
+            if (narrower) fitValueAxis();
+            if (narrower || plotHeight_px() != m_drawnHeight_px) redraw();
         },
         Qt::QueuedConnection);
     sync();
@@ -219,10 +223,36 @@ void LogTrackDock::loadCurves(const reconstruction::WellAnalysis& analysis) {
     if (std::isfinite(bitHigh)) high = std::isfinite(high) ? std::max(high, bitHigh) : bitHigh;
     if (!std::isfinite(low) || !std::isfinite(high)) low = 150.0, high = 300.0;
     const double pad = 0.08 * (high - low) + 5.0;
-    // Two or three labels: a narrow track has no room for more.
-    const double step = niceStep(high - low + 2.0 * pad, 3);
-    setAxis(m_valueAxis, std::floor((low - pad) / step) * step,
-            std::ceil((high + pad) / step) * step, step);
+    m_valueLow_mm = low - pad;
+    m_valueHigh_mm = high + pad;
+    fitValueAxis();
+}
+
+// As many labels as the plot's width holds whole (at most four), each with room for a gap
+// the width of a label beside it: Qt Charts elides a label that does not fit its tick's
+// interval ("1..."). Laid out again when the plot's width changes.
+void LogTrackDock::fitValueAxis() {
+    m_fittedWidth_px = plotWidth_px();
+    const QFontMetrics metrics(m_valueAxis->labelsFont());
+    const double span = m_valueHigh_mm - m_valueLow_mm;
+    double step = 0.0;
+    for (int intervals = 3; intervals >= 1; --intervals) {
+        step = niceStep(span, intervals);
+        const double lo = std::floor(m_valueLow_mm / step) * step;
+        const double hi = std::ceil(m_valueHigh_mm / step) * step;
+        int widest = 0;
+        for (double v = lo; v <= hi + 0.5 * step; v += step)
+            widest = std::max(widest, metrics.horizontalAdvance(QString::number(v, 'f', 0)));
+        const double labels = std::round((hi - lo) / step) + 1.0;
+        if (labels * 2.0 * widest <= m_fittedWidth_px + widest) break;
+    }
+    setAxis(m_valueAxis, std::floor(m_valueLow_mm / step) * step,
+            std::ceil(m_valueHigh_mm / step) * step, step);
+}
+
+int LogTrackDock::plotWidth_px() const {
+    const int width = int(std::lround(m_chart->plotArea().width()));
+    return width >= 20 ? width : kMinWidth_px - 60;  // before the first layout
 }
 
 void LogTrackDock::defaultWindow() {

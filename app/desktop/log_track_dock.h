@@ -72,6 +72,8 @@ private:
     void follow(double md_m);  // scrolls so that md_m is in view
     bool depthAt(const QPoint& viewportPos, double& md_m) const;
     int plotHeight_px() const;
+    int plotWidth_px() const;
+    void fitValueAxis();  // the diameter axis's ticks, as many as the plot's width labels
 
     DeskModel& m_model;
     QStackedWidget* m_stack = nullptr;
@@ -88,6 +90,8 @@ private:
     // The curves, one value a row (NaN: no data), kept to be thinned for each window.
     std::vector<double> m_depth_m, m_dmin_mm, m_dmax_mm, m_bit_mm;
     int m_drawnHeight_px = 0;
+    double m_valueLow_mm = 150.0, m_valueHigh_mm = 300.0;  // the diameters shown, padded
+    int m_fittedWidth_px = 0;                              // fitValueAxis's plot width
     bool m_dragging = false;
 };
 

@@ -28,6 +28,7 @@
 #include "app/desktop/well_viewer.h"
 #include "app/desktop/wells_dock.h"
 #include "scenegraph/camera_setup.h"
+#include "scenegraph/colour_legend.h"
 #include "scenegraph/segment_node_builder.h"
 #include "scenegraph/view_overlay.h"
 
@@ -81,9 +82,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(m_session, &WellSession::wellFailed, this, &MainWindow::showLoadError);
     connect(m_session, &WellSession::lookChanged, this, &MainWindow::updateLook);
     connect(m_model, &DeskModel::wellsChanged, this, &MainWindow::updateTitle);
-    // The first segments of a load, then the whole scene once everything is in.
+    // The first segments of a load, then the logs once everything is in (as render frames
+    // them; View all shows the paths from the wellheads too).
     connect(m_session, &WellSession::firstSegmentsShown, m_navigator, &WellNavigator::viewAll);
-    connect(m_session, &WellSession::allWellsLoaded, m_navigator, &WellNavigator::viewAll);
+    connect(m_session, &WellSession::allWellsLoaded, m_navigator,
+            [this] { m_navigator->frameLogs(m_session->wellScenes()); });
 }
 
 MainWindow::~MainWindow() {
@@ -204,6 +207,11 @@ void MainWindow::updateTitle() {
 void MainWindow::updateLook() {
     m_overlay->setCaption({scenegraph::exaggerationCaption(m_session->look().radialExaggeration)});
     m_viewer->setLegend(m_session->legend());
+    // The legend's panel, in the view's lower half, and the depth labels right of the wells
+    // beside it (the names are at the top).
+    m_navigator->setRightMargin(
+        m_session->legend() ? scenegraph::legendWidth_px(*m_session->legend()) + kLabelRoom_px
+                            : 0.0f);
 }
 
 }  // namespace caliper3d::app

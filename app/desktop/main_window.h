@@ -68,6 +68,9 @@ private:
     void updateLook();
     static QSize defaultSize();
     static constexpr QSize kMinimumViewSize{480, 360};
+    static constexpr float kLabelRoom_px = 90.0f;   // a depth label right of a well
+    static constexpr float kNameOffset_px = 25.0f;  // a well's name from its path
+    static constexpr float kBold = 1.08f;           // DejaVu Sans Bold's width over Book's
 
     DeskModel* m_model = nullptr;
     WellViewer* m_viewer = nullptr;

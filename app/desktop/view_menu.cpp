@@ -1,6 +1,7 @@
 #include "app/desktop/view_menu.h"
 
 #include <QAction>
+#include <QActionGroup>
 #include <QInputDialog>
 #include <QMainWindow>
 #include <QMenu>
@@ -50,6 +51,8 @@ ViewMenu::ViewMenu(QMainWindow& window, WellSession& session, WellNavigator& nav
     inside->setCheckable(true);
     inside->setShortcut(QKeySequence("Ctrl+I"));
     connect(inside, &QAction::toggled, this, [this](bool on) { m_navigator.setInside(on); });
+    // View all and the presets bring the camera out: the menu says so.
+    connect(&m_navigator, &WellNavigator::insideChanged, inside, &QAction::setChecked);
     QAction* fly = view->addAction("&Fly along the well");
     fly->setCheckable(true);
     fly->setShortcut(QKeySequence("Ctrl+Shift+F"));
@@ -63,14 +66,69 @@ ViewMenu::ViewMenu(QMainWindow& window, WellSession& session, WellNavigator& nav
     });
     connect(&m_navigator, &WellNavigator::flightStopped, fly, [fly] { fly->setChecked(false); });
     view->addSeparator();
-    QMenu* exaggeration = view->addMenu("Radial e&xaggeration");
-    for (double factor : {1.0, 10.0, 50.0, 200.0})
-        exaggeration->addAction(QString("x%1").arg(factor), this, [this, factor] {
-            m_session.restyle(factor, m_session.look().colour);
-        });
+    buildExaggeration(*view);
     m_docks = view->addMenu("&Docks");
     m_docks->setObjectName("docksMenu");
     buildHelp();
+}
+
+void ViewMenu::buildExaggeration(QMenu& view) {
+    m_exaggeration = view.addMenu("Radial e&xaggeration");
+    m_exaggeration->setObjectName("exaggerationMenu");
+    auto* group = new QActionGroup(m_exaggeration);
+    for (double factor : kExaggerations) {
+        QAction* action = m_exaggeration->addAction(QString("x%1").arg(factor));
+        action->setCheckable(true);
+        action->setData(factor);
+        group->addAction(action);
+        connect(action, &QAction::triggered, this, [this, factor] { setExaggeration(factor); });
+    }
+    m_exaggeration->addSeparator();
+    m_otherExaggeration = m_exaggeration->addAction("&Other...");
+    m_otherExaggeration->setObjectName("otherExaggeration");
+    m_otherExaggeration->setCheckable(true);
+    group->addAction(m_otherExaggeration);
+    connect(m_otherExaggeration, &QAction::triggered, this, &ViewMenu::askExaggeration);
+    connect(&m_session, &WellSession::lookChanged, this, &ViewMenu::showExaggeration);
+    showExaggeration();
+}
+
+// The menu's title says the factor drawn; its entry is checked (Other, with the factor, when
+// it is none of the presets).
+void ViewMenu::showExaggeration() {
+    const double current = m_session.look().radialExaggeration;
+    m_exaggeration->setTitle(QString("Radial e&xaggeration (x%1)").arg(current));
+    bool preset = false;
+    for (QAction* action : m_exaggeration->actions())
+        if (action->isCheckable() && action != m_otherExaggeration) {
+            const bool on = action->data().toDouble() == current;
+            action->setChecked(on);
+            preset = preset || on;
+        }
+    m_otherExaggeration->setChecked(!preset);
+    m_otherExaggeration->setText(preset ? QString("&Other...")
+                                        : QString("&Other (x%1)...").arg(current));
+}
+
+void ViewMenu::setExaggeration(double factor) {
+    if (m_session.wellCount() == 0) {
+        emit status("No well loaded");
+    } else if (m_session.restyle(factor, m_session.look().colour)) {
+        m_session.keepExaggeration();
+    }
+    showExaggeration();  // the checks say what is drawn, whatever happened
+}
+
+void ViewMenu::askExaggeration() {
+    bool ok = false;
+    const double factor = QInputDialog::getDouble(
+        &m_window, "Radial exaggeration",
+        "Draw radii this many times larger around the true path (1 to 1000):",
+        m_session.look().radialExaggeration, 1.0, 1000.0, 1, &ok);
+    if (ok)
+        setExaggeration(factor);
+    else
+        showExaggeration();
 }
 
 void ViewMenu::buildHelp() {

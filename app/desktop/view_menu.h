@@ -3,6 +3,7 @@
 #include <QObject>
 #include <QString>
 
+class QAction;
 class QMainWindow;
 class QMenu;
 
@@ -35,12 +36,19 @@ private:
     void goToDepth();
     void showShortcuts();
     void buildHelp();
+    void buildExaggeration(QMenu& view);
+    void showExaggeration();
+    void setExaggeration(double factor);
+    void askExaggeration();  // a dialog: any factor --exaggerate takes
 
     static constexpr double kFlightSpeed_m_s = 5.0;  // fly along: the current depth per second
     QMainWindow& m_window;
     WellSession& m_session;
     WellNavigator& m_navigator;
     QMenu* m_docks = nullptr;
+    QMenu* m_exaggeration = nullptr;
+    QAction* m_otherExaggeration = nullptr;
+    static constexpr double kExaggerations[] = {1.0, 10.0, 50.0, 200.0};
 };
 
 }  // namespace caliper3d::app

@@ -13,7 +13,10 @@ WarningsDock::WarningsDock(const DeskModel& model, QWidget* parent)
     setObjectName("warnings");
     m_list = new QPlainTextEdit(this);
     m_list->setReadOnly(true);
-    m_list->setLineWrapMode(QPlainTextEdit::NoWrap);
+    // Wrapped to the dock: each warning starts with the file's path, which in a narrow dock
+    // would be all one sees of it.
+    m_list->setLineWrapMode(QPlainTextEdit::WidgetWidth);
+    m_list->setWordWrapMode(QTextOption::WrapAtWordBoundaryOrAnywhere);
     m_list->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
     setWidget(m_list);
     connect(&model, &DeskModel::wellsChanged, this, &WarningsDock::refresh);

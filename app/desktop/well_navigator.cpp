@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
+#include <Inventor/actions/SoGetBoundingBoxAction.h>
 #include <Inventor/nodes/SoBaseColor.h>
 #include <Inventor/nodes/SoCamera.h>
 #include <Inventor/nodes/SoCoordinate3.h>
@@ -105,13 +106,40 @@ void WellNavigator::showPicked(int well, std::size_t row, double azimuth_deg) {
 void WellNavigator::viewAll() {
     SoCamera* camera = m_viewer.getCamera();
     if (!camera) return;
+    leaveInside();
     scenegraph::frameAll(camera, m_sceneRoot, m_viewer.getViewportRegion());
+    scenegraph::keepLeftOf(camera, m_sceneRoot, m_viewer.getViewportRegion(), m_rightMargin_px);
 }
 
 void WellNavigator::viewFrom(scenegraph::ViewDirection direction) {
     SoCamera* camera = m_viewer.getCamera();
     if (!camera) return;
+    leaveInside();
     scenegraph::frameFrom(camera, m_sceneRoot, m_viewer.getViewportRegion(), direction);
+    scenegraph::keepLeftOf(camera, m_sceneRoot, m_viewer.getViewportRegion(), m_rightMargin_px);
+}
+
+void WellNavigator::frameLogs(const std::vector<SoNode*>& wells) {
+    SoCamera* camera = m_viewer.getCamera();
+    if (!camera || wells.empty() || m_inside) return;
+    auto* logs = new SoSeparator;
+    logs->ref();
+    for (SoNode* well : wells) logs->addChild(well);
+    SoGetBoundingBoxAction box(m_viewer.getViewportRegion());
+    box.apply(logs);
+    if (!box.getBoundingBox().isEmpty()) {
+        scenegraph::frameAll(camera, logs, m_viewer.getViewportRegion());
+        scenegraph::keepLeftOf(camera, logs, m_viewer.getViewportRegion(), m_rightMargin_px);
+    }
+    logs->unref();
+}
+
+void WellNavigator::leaveInside() {
+    if (!m_inside) return;
+    m_inside = false;
+    m_insideLook->whichChild = SO_SWITCH_NONE;
+    stopFlight();
+    emit insideChanged(false);
 }
 
 void WellNavigator::updateMarker() {
@@ -178,6 +206,7 @@ void WellNavigator::setInside(bool inside) {
     m_inside = inside;
     m_insideLook->whichChild = inside ? SO_SWITCH_ALL : SO_SWITCH_NONE;
     if (!inside) stopFlight();
+    emit insideChanged(inside);
     follow();
 }
 

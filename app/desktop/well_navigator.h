@@ -4,6 +4,7 @@
 #include <QTimer>
 
 #include <cstddef>
+#include <vector>
 
 #include <Inventor/SbVec3f.h>
 
@@ -39,10 +40,16 @@ public:
     // A section picked in the 3D view becomes current: the marker moves, the camera stays
     // where the user put it.
     void showPicked(int well, std::size_t row, double azimuth_deg);
-    // The whole scene in view, with room for the labels at its ends.
+    // The whole scene in view (from the wellheads), with room for the labels at its ends;
+    // from inside the hole, the camera comes out first.
     void viewAll();
-    // The whole scene from a preset direction.
+    // The whole scene from a preset direction (from outside the hole).
     void viewFrom(scenegraph::ViewDirection direction);
+    // The logs of `wells` (each a well's scene, without the path above its log) in view, as
+    // `caliper3d render` frames them: what a window opens on.
+    void frameLogs(const std::vector<SoNode*>& wells);
+    // What the framings above keep clear at the view's right edge (the colour legend), pixels.
+    void setRightMargin(float px) { m_rightMargin_px = px; }
     // Looks at the current depth: from inside the hole down it, or from outside, from the
     // side the camera looks from now, close enough to see the section.
     void follow();
@@ -66,11 +73,13 @@ public:
 
 signals:
     void flightStopped();
+    void insideChanged(bool inside);
 
 private:
     void onCurrentChanged();
     void updateMarker();
     void flightStep();
+    void leaveInside();  // outside, the camera left where it is
 
     DeskModel& m_model;
     SoQtExaminerViewer& m_viewer;
@@ -81,6 +90,7 @@ private:
     SoCoordinate3* m_markerPoints = nullptr;
     SoLineSet* m_markerLine = nullptr;
     bool m_inside = false;
+    float m_rightMargin_px = 0.0f;
     bool m_picking = false;  // within showPicked: the camera stays
     QTimer m_flight;
     double m_speed_m_s = 5.0;

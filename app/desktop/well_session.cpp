@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <QApplication>
 #include <QElapsedTimer>
@@ -16,6 +17,7 @@
 #include "io/warnings_text.h"
 #include "reconstruction/analysis/wall_colour_request.h"
 #include "reconstruction/load/well_load_pipeline.h"
+#include "scenegraph/picture_scale.h"
 #include "scenegraph/section_pick.h"
 #include "scenegraph/segment_feeder.h"
 #include "scenegraph/well_scene.h"
@@ -25,7 +27,8 @@ namespace caliper3d::app {
 
 namespace {
 
-constexpr double kReadShare = 0.7;  // of a well's progress: reading the log
+constexpr double kReadShare = 0.7;     // of a well's progress: reading the log
+constexpr int kRenderHeight_px = 768;  // caliper3d render's default picture height
 
 QString fileName(const std::string& path) {
     return QFileInfo(QString::fromStdString(path)).fileName();
@@ -157,13 +160,14 @@ int WellSession::addWell(const WellSource& source, const LoadOptions& options) {
     callbacks.finished = [this, &w](std::size_t segments) {
         const DeskWell& record = m_model.well(modelIndex(w));
         const std::size_t warnings = record.diagnostics.warningCount;
-        emit status(QString("%1: %2 segments, %3 triangles at full detail, radii x%4, %5 warning%6")
-                        .arg(w.name)
-                        .arg(segments)
-                        .arg(w.view->scene().fullDetailTriangles())
-                        .arg(record.options.radialExaggeration)
-                        .arg(warnings)
-                        .arg(warnings == 1 ? "" : "s"));
+        // One pass (QString::arg of several strings): the "%1" left for the exaggeration,
+        // which the load's end may choose, is not filled by the numbers after it.
+        m_loadedText =
+            QString("%1: %2 segments, %3 triangles at full detail, radii x%4, %5 warning%6")
+                .arg(w.name, QString::number(segments),
+                     QString::number(w.view->scene().fullDetailTriangles()), QStringLiteral("%1"),
+                     QString::number(warnings), warnings == 1 ? "" : "s");
+        emit status(m_loadedText.arg(record.options.radialExaggeration));
         w.done = true;
         analyse(w);
         // Signalled from the event loop, not from inside the feeder's tick, so a slot may
@@ -261,7 +265,9 @@ LoadProgress WellSession::progress() const {
         const auto& g = m_model.well(modelIndex(*well)).geometry;
         if (!g) {
             sum += kReadShare * well->pipeline->readFraction();
-            out.text = "Reading " + well->name;
+            // A streamed load draws the stretches read while it reads on.
+            out.text =
+                (well->feeder->attached() > 0 ? "Reading and drawing " : "Reading ") + well->name;
         } else {
             const double segments = std::max<double>(1.0, double(g->segmentCount()));
             sum += kReadShare +
@@ -297,6 +303,13 @@ std::vector<WellSource> WellSession::wellSources() const {
 
 const reconstruction::ColourLegend* WellSession::legend() const {
     return m_legend ? &*m_legend : nullptr;
+}
+
+std::vector<SoNode*> WellSession::wellScenes() const {
+    std::vector<SoNode*> out;
+    for (const auto& well : m_wells)
+        if (well->view->visible()) out.push_back(well->view->scene().root());
+    return out;
 }
 
 std::shared_ptr<const reconstruction::WellGeometry> WellSession::geometry(std::size_t i) const {
@@ -439,6 +452,12 @@ void WellSession::applyStyleAfterLoad() {
     if (geometries.empty()) return;
     const reconstruction::ColourRequest colour = m_look.colour;
     bool rebuild = colour.quantity != "departure" || colour.range.has_value();
+    double exaggeration = m_look.radialExaggeration;
+    if (!m_exaggerationKept)  // what render's default picture draws: a hole that reads as a tube
+        exaggeration = scenegraph::chooseExaggeration(
+            geometries, 0.0, std::numeric_limits<double>::infinity(), kRenderHeight_px);
+    const bool chosen = exaggeration != m_look.radialExaggeration;
+    rebuild = rebuild || chosen;
     for (const auto& g : geometries) {
         bool anyBit = false;
         for (std::size_t row = 0; row < g->table().rowCount() && !anyBit; ++row)
@@ -447,9 +466,10 @@ void WellSession::applyStyleAfterLoad() {
     }
     // A restyle here keeps the load's own status line.
     QSignalBlocker quiet(this);
-    if (rebuild && restyle(m_look.radialExaggeration, colour)) {
+    if (rebuild && restyle(exaggeration, colour)) {
         quiet.unblock();
         emit lookChanged();
+        if (chosen) emit status(m_loadedText.arg(exaggeration));
         return;
     }
     // The streamed segments are coloured as asked already: only the legend is new.

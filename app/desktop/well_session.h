@@ -79,6 +79,11 @@ public:
     // while a well still loads or when a well cannot be coloured so (an unknown curve). The
     // colour range is shared by every well.
     bool restyle(double radialExaggeration, const reconstruction::ColourRequest& colour);
+    // The exaggeration is the user's (--exaggerate, the View menu): loads keep it. Until
+    // then, once every well is loaded they are drawn with the one `caliper3d render` chooses
+    // for its default picture of them (scenegraph::chooseExaggeration).
+    void keepExaggeration() { m_exaggerationKept = true; }
+    bool exaggerationKept() const { return m_exaggerationKept; }
     // The same for one well (its record in the model) only, its colour range its own.
     bool restyleWell(int well, const reconstruction::ColourRequest& colour);
     // Shows or hides a well (its record in the model).
@@ -97,6 +102,8 @@ public:
     const LoadOptions& look() const { return m_look; }
     // The legend of the wall's colours (null before a well is loaded).
     const reconstruction::ColourLegend* legend() const;
+    // The visible wells' scenes: their logs, without the path above or the labels.
+    std::vector<SoNode*> wellScenes() const;
     // The geometry well `i` (a record of the model) is drawn from (null until placed).
     std::shared_ptr<const reconstruction::WellGeometry> geometry(std::size_t i) const;
     // What the wall can be coloured by: the built-in quantities and the first well's curves.
@@ -145,6 +152,8 @@ private:
     LoadOptions m_look;
     reconstruction::Wellhead m_origin;  // the first well's wellhead
     bool m_framed = false;              // firstSegmentsShown sent for this opening
+    bool m_exaggerationKept = false;
+    QString m_loadedText;  // the last load's status line, its exaggeration a %1
     // What the legend shows (a copy: the colouring's per-row values stay with the geometry).
     std::optional<reconstruction::ColourLegend> m_legend;
 };

@@ -22,7 +22,8 @@ void WellViewer::setLegend(const reconstruction::ColourLegend* legend) {
         m_legend = nullptr;
     }
     if (legend) {
-        m_legend = scenegraph::makeColourLegend(*legend);
+        // In the lower half: the wells' names are at the top of the view.
+        m_legend = scenegraph::makeColourLegend(*legend, scenegraph::kLowerLegendBar);
         m_legend->ref();
         addSuperimposition(m_legend);
     }

@@ -1,5 +1,6 @@
 #include "scenegraph/picture/picture.h"
 
+#include <algorithm>
 #include <chrono>
 #include <thread>
 
@@ -48,25 +49,36 @@ Picture drawPicture(const std::vector<PictureWell>& wells, const PictureRequest&
     assertMainThread("drawPicture");
     const auto start = std::chrono::steady_clock::now();
     const int width = request.width, height = request.height;
+    // The wells, then the path above each log: a picture framed from `view` frames the logged
+    // wells only, the path drawn where it falls in view (a short log deep in a well is the
+    // picture, not a dot under the path from the wellhead).
     auto* scene = new SoSeparator;
+    auto* logged = new SoSeparator;
+    scene->addChild(logged);
     for (const PictureWell& well : wells) {
-        scene->addChild(well.scene->root());
+        logged->addChild(well.scene->root());
         if (request.unloggedPath)
             if (SoSeparator* above = makeUnloggedPath(*well.geometry)) scene->addChild(above);
     }
     Picture out;
+    const bool framedFromView = !request.camera && !request.pose;
     if (request.camera)
         out.root = makeRef(makeRenderRoot(scene, *request.camera, width, height));
     else if (request.pose)
         out.root = makeRef(makeRenderRoot(scene, *request.pose));
     else
-        out.root = makeRef(makeRenderRoot(scene, request.view, width, height));
+        out.root = makeRef(makeRenderRoot(scene, request.view, width, height, logged));
     SoSeparator* root = out.root.get();
-    // Depth ticks, labels and each well's name for this camera (no part in its framing).
+    // Depth ticks, labels and each well's name for this camera (no part in its framing); in a
+    // picture framed on the logs, from the top of each log (the name there, in view).
     if (const SoCamera* camera = findCamera(root))
         for (const PictureWell& well : wells) {
+            const std::vector<double>& depth = well.geometry->table().depth_m;
+            const double top = framedFromView && !depth.empty()
+                                   ? std::max(request.top_m, depth.front())
+                                   : request.top_m;
             AnnotationView view =
-                pictureAnnotationView(*camera, width, height, request.top_m, request.bottom_m);
+                pictureAnnotationView(*camera, width, height, top, request.bottom_m);
             view.radialExaggeration = request.radialExaggeration;
             view.tickMarks = request.tickMarks;
             root->addChild(makeWellAnnotations(*well.geometry, view));

@@ -42,7 +42,8 @@ struct PictureRequest {
     int width = 1024;
     int height = 768;
     // The camera: a viewer's (copied, its aspect made the picture's), else a pose inside the
-    // hole (unlit wall, fog), else the whole scene framed from `view`.
+    // hole (unlit wall, fog), else the logged wells framed from `view` (the path above each
+    // log drawn where it falls in view; the annotations from each log's top).
     const SoCamera* camera = nullptr;
     std::optional<CameraPose> pose;
     ViewDirection view = ViewDirection::Iso;

@@ -1,5 +1,7 @@
 // The wall's colours from the command line: --colour-by and --colour-range, and the legend
 // every rendered picture carries (its bar in the map's colours, its text).
+#include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 
@@ -142,4 +144,39 @@ TEST(ColourLegendTest, ColourOptionsAreCheckedAndAnUnknownNameListsTheValidOnes)
     r = run("export " + washoutLog() + " -o " + caliper3d::test::scratch("colour.iv").string() +
             " --colour-by diameter");
     EXPECT_EQ(r.status, 0) << r.output;
+}
+
+TEST(ColourLegendTest, EveryLineLiesOnTheLegendsPanelInANarrowPicture) {
+    // 300 pixels across: the title "radius - bit radius (mm)" and the notes are wider than a
+    // fixed share of the picture would be. Looking down from the top, the well is a dot in
+    // the middle, under the panel.
+    const auto png = caliper3d::test::scratch("colour_narrow.png").string();
+    const CommandRun r = run("render " + washoutLog() + " -o " + png +
+                             " --width 300 --height 800 --view top --exaggerate 1");
+    ASSERT_EQ(r.status, 0) << r.output;
+    const QImage image(QString::fromStdString(png));
+    ASSERT_FALSE(image.isNull());
+    const QColor panel(0x26, 0x2B, 0x36);
+    const auto isPanel = [&](int x, int y) {
+        const QColor c = image.pixelColor(x, y);
+        return std::abs(c.red() - panel.red()) <= 2 && std::abs(c.green() - panel.green()) <= 2 &&
+               std::abs(c.blue() - panel.blue()) <= 2;
+    };
+    // The panel's rows: from its top (0.72 up the picture) to below the last note.
+    const int top = static_cast<int>((1.0 - 0.72) / 2.0 * image.height()) + 2;
+    int bottom = top;
+    while (bottom + 1 < image.height() && isPanel(image.width() - 2, bottom + 1)) ++bottom;
+    ASSERT_GT(bottom - top, image.height() / 3) << "the panel runs down the right edge";
+    int left = image.width() - 2;
+    while (left > 0 && isPanel(left - 1, top)) --left;
+    EXPECT_GT(image.width() - left, 120) << "as wide as its title, whatever the picture's width";
+    EXPECT_LT(image.width() - left, 240);
+    // Nothing of the legend's text left of its panel: no light pixel in the 40 columns there
+    // (above the north arrow, in the bottom-left 124 pixels).
+    ASSERT_LT(bottom, image.height() - 124);
+    int outside = 0;
+    for (int y = top; y <= bottom; ++y)
+        for (int x = std::max(0, left - 40); x < left; ++x)
+            outside += image.pixelColor(x, y).lightness() > 150;
+    EXPECT_EQ(outside, 0);
 }

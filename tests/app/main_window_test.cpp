@@ -110,6 +110,7 @@ TEST_F(MainWindowTest, ShowsDepthLabelsTheWellsNameAndTheNorthArrow) {
     window.show();
     app::LoadOptions options;
     options.radialExaggeration = 10.0;
+    window.session().keepExaggeration();  // as caliper3d view --exaggerate 10
     window.session().openWell(QString::fromStdString(log.string()), options);
     ASSERT_TRUE(waitFor(window, &app::WellSession::allWellsLoaded, 60000))
         << "the well did not load";

@@ -19,6 +19,9 @@ namespace {
 using caliper3d::test::CommandRun;
 using caliper3d::test::runCaliper3d;
 using caliper3d::test::scratch;
+namespace io = caliper3d::io;
+namespace reconstruction = caliper3d::reconstruction;
+namespace scenegraph = caliper3d::scenegraph;
 
 // A vertical gauge hole (8.5 in) 1 km long, sampled every 10 cm.
 std::string kilometreWell() {
@@ -95,6 +98,38 @@ TEST(RenderCommandTest, DefaultPictureOfAKilometreWellDrawsTheHoleAsATube) {
         runCaliper3d("render " + kilometreWell() + " -o " + asLogged + " --exaggerate 1").status,
         0);
     EXPECT_LT(medianWallWidth(QImage(QString::fromStdString(asLogged))), 5);
+}
+
+TEST(RenderCommandTest, DefaultPictureOfAShortLogDeepInAWellFramesTheLog) {
+    // 10 m of 8.5 in hole logged from 2000 m: the path from the wellhead is 200 times longer.
+    const auto path = scratch("render_deep_10m.txt");
+    io::SectionTable table =
+        reconstruction::makeSyntheticWell(reconstruction::syntheticProfile("circle", 10.0, 0.01));
+    for (double& md : table.depth_m) md += 2000.0;
+    io::writeColumnTextFile(path.string(), table);
+    const std::string png = scratch("render_deep_10m.png").string();
+    const CommandRun r =
+        runCaliper3d("render " + path.string() + " -o " + png + " --pick 512,384", false);
+    ASSERT_EQ(r.status, 0) << r.output;
+    // The picture's centre is the log: a section of it, not the background.
+    const auto at = r.output.find("\nsection=");
+    ASSERT_NE(at, std::string::npos) << r.output;
+    const auto md = r.output.find("\nmd_m=");
+    ASSERT_NE(md, std::string::npos) << r.output;
+    const double pickedMd = std::stod(r.output.substr(md + 6));
+    EXPECT_GE(pickedMd, 2000.0);
+    EXPECT_LE(pickedMd, 2010.0);
+    // The 10 m fill the picture's height (the dashed path above runs out of it), drawn at
+    // the exaggeration a 10 m picture needs: 1, the 215.9 mm hole about 13 of the 620 pixels
+    // the 10 m span (the 2 km from the wellhead would have called for x 300).
+    const QImage picture(QString::fromStdString(png));
+    const auto [top, bottom] = drawnRows(picture);
+    EXPECT_LT(top, picture.height() / 10);
+    EXPECT_GT(bottom - top, picture.height() * 7 / 10);
+    EXPECT_GT(medianWallWidth(picture), 8);
+    EXPECT_LT(medianWallWidth(picture), 25);
+    // Its name at the top of the log, in the picture.
+    EXPECT_GT(pixelsOfColour(picture, scenegraph::kNameColour, 0, picture.height()), 60);
 }
 
 TEST(RenderCommandTest, DepthDrawsOnlyTheIntervalAndFramesIt) {

@@ -84,3 +84,33 @@ TEST(DeskModelTest, IgnoresWellsWithoutGeometryAndWrapsTheAzimuth) {
     EXPECT_EQ(model.wellCount(), 0);
     EXPECT_EQ(model.currentWell(), -1);
 }
+
+TEST(DeskModelTest, AWellOpensAtItsFirstMeasuredSection) {
+    // The first 3 m of the log have no reading (every arm null), as above a real log's first
+    // reading: the views open on the first section with one, not on "no data".
+    io::SectionTable table =
+        reconstruction::makeSyntheticWell(reconstruction::syntheticProfile("example", 20.0, 0.1));
+    for (std::size_t row = 0; row < 30; ++row)
+        for (int arm = 0; arm < table.armCount; ++arm) table.radii(row)[arm] = std::nan("");
+    app::DeskWell w;
+    w.name = "late";
+    w.geometry = std::make_shared<const reconstruction::WellGeometry>(
+        std::make_shared<const io::SectionTable>(std::move(table)),
+        reconstruction::GeometryOptions{});
+    ASSERT_FALSE(w.geometry->measured(29));
+    ASSERT_TRUE(w.geometry->measured(30));
+    EXPECT_EQ(app::DeskModel::firstMeasuredRow(*w.geometry), 30u);
+    app::DeskModel model;
+    model.addWell(w);
+    EXPECT_EQ(model.currentWell(), 0);
+    EXPECT_EQ(model.currentRow(), 30u);
+    EXPECT_DOUBLE_EQ(model.currentDepth_m(), w.geometry->table().depth_m[30]);
+    // A well whose geometry comes later (a load) opens there too.
+    app::DeskModel loading;
+    app::DeskWell pending = w;
+    pending.geometry.reset();
+    loading.addWell(pending);
+    EXPECT_EQ(loading.currentWell(), -1);
+    loading.updateWell(0, w);
+    EXPECT_EQ(loading.currentRow(), 30u);
+}

@@ -6,6 +6,9 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <QApplication>
+#include <QGraphicsScene>
+#include <QGraphicsTextItem>
 #include <QTest>
 #include <QWheelEvent>
 #include <QtCharts/QAreaSeries>
@@ -211,4 +214,28 @@ TEST_F(LogTrackDockTest, DrawsTheCurvesAndTheBands) {
     // The breakout's band: the palette's orange (230, 159, 0) at alpha 120 over white.
     const QColor band(243, 210, 135);
     EXPECT_GT(test::pixelsNear(*dock->chartView(), band, 12), 500);
+}
+
+TEST_F(LogTrackDockTest, TheDiameterAxisLabelsAreNeverCutShort) {
+    app::DeskModel model;
+    model.addWell(test::exampleDeskWell(true));
+    auto dock = shownDock(model);
+    // From the dock's narrowest to a wide one: as many labels as fit whole, never "1...".
+    for (int width : {150, 180, 200, 240, 320, 480}) {
+        dock->resize(width, 720);
+        QTest::qWait(80);  // the chart's layout, then the queued fit to its width
+        QApplication::processEvents();
+        const qreal top = dock->chart()->plotArea().top();
+        int labels = 0;
+        for (QGraphicsItem* item : dock->chart()->scene()->items()) {
+            auto* text = dynamic_cast<QGraphicsTextItem*>(item);
+            if (!text || !text->isVisible()) continue;
+            const QString shown = text->toPlainText();
+            EXPECT_FALSE(shown.contains(QChar(0x2026)) || shown.contains("..."))
+                << "width " << width << ": '" << shown.toStdString() << "'";
+            if (text->sceneBoundingRect().bottom() <= top && !shown.isEmpty() && shown[0].isDigit())
+                ++labels;  // a value label above the plot
+        }
+        EXPECT_GE(labels, 2) << "width " << width;
+    }
 }

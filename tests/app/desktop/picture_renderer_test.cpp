@@ -50,6 +50,7 @@ TEST(PictureRendererTest, SavePictureDrawsWhatRenderDrawsForTheSameCamera) {
     app::LoadOptions options;
     options.read.bitSize_mm = 215.9;
     options.radialExaggeration = 30.0;
+    window.session().keepExaggeration();  // as caliper3d view --exaggerate 30
     window.session().openWell(QString::fromStdString(log.string()), options);
     ASSERT_TRUE(test::waitUntil(
         [&] { return window.model().wellCount() == 1 && !window.session().loading(); }, 120000))

@@ -124,6 +124,11 @@ TEST_F(WellSessionTest, CancelRemovesOnlyTheWellsStillLoading) {
     EXPECT_TRUE(session.progress().busy);
     EXPECT_TRUE(session.progress().text.startsWith("Reading "))
         << session.progress().text.toStdString();
+    // A streamed load draws what it has read while it reads on, and says so.
+    EXPECT_TRUE(test::waitUntil(
+        [&] { return session.progress().text.startsWith("Reading and drawing desktop_example_"); },
+        20000))
+        << session.progress().text.toStdString();
     session.cancelLoading();
     EXPECT_EQ(cancelled.count(), 1);
     EXPECT_FALSE(session.loading());
