@@ -1,5 +1,6 @@
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include "app/commands.h"
@@ -13,6 +14,7 @@
 #include "reconstruction/analysis/borehole_classifier.h"
 #include "reconstruction/load/load_well.h"
 #include "reconstruction/path/survey_interpolation.h"
+#include "reconstruction/section/invalid_arm_readings.h"
 #include "reconstruction/section/section_coverage.h"
 
 namespace caliper3d::app {
@@ -76,6 +78,26 @@ void printCasingReadings(const io::LogInfo& info, const std::vector<RowReading>&
     }
 }
 
+// What --survey and --wellhead give a well, as every other verb uses them.
+void printWellSource(const WellSource& source, const LoadOptions& options) {
+    if (!source.surveyPath.empty()) {
+        const reconstruction::CheckedSurvey survey =
+            reconstruction::readCheckedSurvey(source.surveyPath, options.read, nullptr);
+        const io::SurveyTable& t = survey.table;
+        std::printf(
+            "survey:    %s: %zu stations, MD %.2f to %.2f m; the path is drawn from it, "
+            "not from the log's inclination and azimuth\n",
+            source.surveyPath.c_str(), t.stationCount(), t.md_m.front(), t.md_m.back());
+        const std::string check = reconstruction::describeSurveyPositionCheck(survey.check);
+        if (!check.empty()) std::printf("check:     %s\n", check.c_str());
+    }
+    if (source.wellhead)
+        std::printf(
+            "wellhead:  E %.2f m, N %.2f m, elevation %.2f m (--wellhead; places the well "
+            "in the scene)\n",
+            source.wellhead->easting_m, source.wellhead->northing_m, source.wellhead->elevation_m);
+}
+
 }  // namespace
 
 int runInfo(const QStringList& args) {
@@ -84,14 +106,17 @@ int runInfo(const QStringList& args) {
             "info", "FILE...",
             "Describe caliper logs: format, depth range, curves and their roles, nulls, warnings.");
         addInputOptions(verb.parser());
+        addWellSourceOptions(verb.parser());
         addSummaryOption(verb.parser());
         if (!verb.parse(args, 1)) return kExitOk;
         rejectInapplicable(verb.parser(), "info", {OptionEffect::Geometry, OptionEffect::Picture},
                            "info describes the file as read; these shape the 3D reconstruction");
         const LoadOptions options = inputOptionsFrom(verb.parser());
+        const std::vector<WellSource> sources = wellSourcesFrom(verb.parser(), verb.positional());
         int failures = 0;
         SummaryFile summaries(verb.value("summary"));
-        for (const std::string& file : verb.positional()) {
+        for (const WellSource& source : sources) {
+            const std::string& file = source.path;
             InputSummary summary;
             summary.file = file;
             summary.verb = "info";
@@ -103,16 +128,23 @@ int runInfo(const QStringList& args) {
                 std::size_t measured = 0;
                 int needed = 0, arms = 0;
                 std::vector<RowReading> readings;
-                const io::LogInfo info =
-                    io::describeLog(file, options.read, [&](const io::SectionTable& rows) {
+                reconstruction::InvalidArmReadings invalid;
+                const io::LogInfo info = io::describeLog(
+                    file, options.read,
+                    [&](const io::SectionTable& rows) {
                         arms = rows.armCount;
                         needed = reconstruction::minValidArms(arms, geometry.minValidArmFraction);
                         measured += reconstruction::countMeasuredSections(
                             rows, geometry.minValidArmFraction, geometry.minArmRadius_mm,
                             geometry.maxArmRadius_mm);
                         addReadings(rows, readings);
-                    });
+                        if (measured == 0)  // only needed while no section has a shape
+                            invalid.add(rows, geometry.minValidArmFraction,
+                                        geometry.minArmRadius_mm, geometry.maxArmRadius_mm);
+                    },
+                    !source.surveyPath.empty());
                 std::fputs(io::formatLogInfo(info).c_str(), stdout);
+                printWellSource(source, options);
                 summary.rows = info.rows;
                 summary.top_m = info.top_m;
                 summary.bottom_m = info.bottom_m;
@@ -132,15 +164,21 @@ int runInfo(const QStringList& args) {
                         measured, info.rows, needed, arms);
                     printCasingReadings(info, readings);
                     if (measured == 0) {
-                        // Described, but every other verb refuses it: say so and fail.
+                        // Described, but every other verb refuses it: say why and where, and fail.
                         ++failures;
                         char why[160];
                         std::snprintf(why, sizeof why,
                                       "no usable caliper data: no section has at least %d of its "
-                                      "%d arms with a valid reading",
+                                      "%d arms with a valid reading: ",
                                       needed, arms);
-                        std::fprintf(stderr, "caliper3d info: %s: %s\n", file.c_str(), why);
-                        summary.error = InputError{file, 0, why};
+                        std::string reason =
+                            why + reconstruction::describeInvalidArmReadings(
+                                      invalid, geometry.minArmRadius_mm, geometry.maxArmRadius_mm);
+                        if (info.firstDataLine > 0)
+                            reason += "; the first at line " + std::to_string(info.firstDataLine);
+                        std::fprintf(stderr, "caliper3d info: %s: %s\n", file.c_str(),
+                                     reason.c_str());
+                        summary.error = InputError{file, info.firstDataLine, reason};
                     }
                 }
                 if (info.survey) {

@@ -21,7 +21,8 @@ namespace caliper3d::app {
 
 namespace {
 
-// synth --field N: N wells of `length` metres, each a profile in turn (their hole azimuths
+// synth --field N: N wells of `length` metres, named FIELD-000, FIELD-001, ... (as their
+// files well-000.las, ...), each a profile in turn (their hole azimuths
 // turned 37 degrees a well, so no two builds point alike), wellheads 25 m apart on a square
 // grid, and DIR/manifest.csv listing them for caliper3d batch.
 void writeField(const std::string& folder, std::size_t wells, double length, double step,
@@ -43,10 +44,14 @@ void writeField(const std::string& folder, std::size_t wells, double length, dou
             reconstruction::syntheticProfile(profile, length, step);
         spec.armCount = arms;
         spec.holeAzimuth_deg = std::fmod(spec.holeAzimuth_deg + 37.0 * double(w), 360.0);
-        char name[64];
+        char name[64], wellName[64];
         std::snprintf(name, sizeof name, "well-%0*zu.las", digits, w);
+        // Each well its own name in the header (WELL), numbered as its file.
+        std::snprintf(wellName, sizeof wellName, "FIELD-%0*zu", digits, w);
+        io::LasWriteOptions las;
+        las.wellName = wellName;
         const io::SectionTable table = reconstruction::makeSyntheticWell(spec);
-        io::writeLasFile((fs::path(folder) / name).string(), table);
+        io::writeLasFile((fs::path(folder) / name).string(), table, las);
         sections += table.rowCount();
         const std::size_t gridColumn = w % columns, gridRow = w / columns;
         char line[160];

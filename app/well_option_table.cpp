@@ -577,7 +577,7 @@ const WellOption* findWellOption(const std::string& name) {
 const std::vector<std::string>& verbsTaking(OptionGroup group) {
     static const std::vector<std::string> kReading = {"view", "info", "export", "render", "report"};
     static const std::vector<std::string> kColour = {"view", "export", "render"};
-    static const std::vector<std::string> kPerWell = {"view", "export", "render", "report"};
+    static const std::vector<std::string> kPerWell = {"view", "info", "export", "render", "report"};
     switch (group) {
         case OptionGroup::Reading:
             return kReading;

@@ -217,3 +217,43 @@ TEST(CommandLineTest, VerbsThatOpenNoWindowRunWhereNoDisplayCanBeReached) {
     std::getline(in, header);
     EXPECT_EQ(header.rfind("#Inventor V2.1", 0), 0U) << header;
 }
+
+// Every verb takes --survey and --wellhead (once per file); info shows what each well is given.
+TEST(CommandLineTest, InfoTakesSurveyAndWellheadAndShowsThem) {
+    const auto folder = caliper3d::test::scratch("info_survey");
+    std::filesystem::create_directories(folder);
+    const std::string log = (folder / "well.las").string();
+    const std::string survey = (folder / "survey.csv").string();
+    ASSERT_EQ(run("synth -o " + log + " --length 30 --step 0.1").status, 0);
+    { std::ofstream(survey) << "MD,INC,AZI\n0,0,0\n50,2,90\n100,4,90\n"; }
+    const CommandRun r =
+        run("info " + log + " --survey " + survey + " --wellhead 512300,6801200,25.5");
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("survey:    " + survey + ": 3 stations, MD 0.00 to 100.00 m"),
+              std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("wellhead:  E 512300.00 m, N 6801200.00 m, elevation 25.50 m"),
+              std::string::npos)
+        << r.output;
+    // Once per file, as for every verb.
+    EXPECT_EQ(run("info " + log + " " + log + " --survey " + survey).status, 2);
+    // A survey that cannot be read fails that file, naming the survey.
+    const CommandRun bad = run("info " + log + " --survey " + (folder / "none.csv").string());
+    EXPECT_EQ(bad.status, 1) << bad.output;
+    EXPECT_NE(bad.output.find("none.csv"), std::string::npos) << bad.output;
+}
+
+// synth --field names each well after its file (FIELD-000 in well-000.las), in the LAS header.
+TEST(CommandLineTest, SynthFieldNamesEveryWell) {
+    const auto folder = caliper3d::test::scratch("synth_field_names");
+    std::filesystem::remove_all(folder);
+    ASSERT_EQ(run("synth --field 3 --length 20 -o " + folder.string() + "/").status, 0);
+    for (int w = 0; w < 3; ++w) {
+        const std::string file = (folder / ("well-00" + std::to_string(w) + ".las")).string();
+        const CommandRun info = run("info " + file);
+        EXPECT_EQ(info.status, 0) << info.output;
+        EXPECT_NE(info.output.find("well:      FIELD-00" + std::to_string(w) + "\n"),
+                  std::string::npos)
+            << info.output;
+    }
+}

@@ -130,6 +130,11 @@ TEST(NoDataCommandTest, LogWithoutUsableCaliperDataFailsWithExitOneNamingTheFile
     EXPECT_NE(info.output.find("caliper:   0 of 601 sections measured"), std::string::npos)
         << info.output;
     EXPECT_NE(info.output.find(log + ": no usable caliper data"), std::string::npos) << info.output;
+    // Why, and where: the first data line of the file the writer wrote (after its header).
+    EXPECT_NE(info.output.find("every arm reading is null (NaN or the file's NULL value); the "
+                               "first at line "),
+              std::string::npos)
+        << info.output;
 }
 
 TEST(NoDataCommandTest, StarLogNullIntervalsAreNoDataAndEverythingElseIsMeasured) {
