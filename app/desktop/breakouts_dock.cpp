@@ -16,6 +16,7 @@
 
 #include "app/desktop/desk_model.h"
 #include "reconstruction/analysis/breakout_rose.h"
+#include "reconstruction/analysis/pick_comparison.h"
 #include "reconstruction/analysis/wall_colour_request.h"
 
 QT_CHARTS_USE_NAMESPACE
@@ -121,6 +122,7 @@ void BreakoutsDock::sync() {
         m_well = index;
         m_analysis = well->analysis;
         fillRose(*m_analysis);
+        addPicks(well->picks);
         fillSummary(*m_analysis);
         fillTable(*m_analysis);
     }
@@ -171,6 +173,19 @@ void BreakoutsDock::fillRose(const reconstruction::WellAnalysis& analysis) {
                     QPen(Qt::black, 2.5));
     }
     if (largest_m <= 0.0) m_chart->setTitle("No breakouts");
+}
+
+// Breakouts picked on an image log (--picks): a thin magenta axis each, inside the rose's
+// reach, to compare with the caliper's (docs/analysis.md, "Picks").
+void BreakoutsDock::addPicks(const std::vector<io::Pick>& picks) {
+    const double reach = 0.85 * m_radial->max();
+    int shown = 0;
+    for (const io::Pick& p : picks) {
+        if (!reconstruction::isBreakoutPick(p.type) || !std::isfinite(p.azimuth_deg)) continue;
+        if (++shown > 200) break;  // beyond that the rose is a disc of lines
+        addAxisLine(p.azimuth_deg, reach, "image-log pick " + degrees(p.azimuth_deg),
+                    QPen(QColor(0xFF, 0x00, 0xFF), 1));
+    }
 }
 
 void BreakoutsDock::addAxisLine(double azimuth_deg, double length, const QString& name,

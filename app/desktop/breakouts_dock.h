@@ -1,10 +1,12 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include <QDockWidget>
 #include <QtCharts/QChartGlobal>
 
+#include "io/picks_reader.h"
 #include "reconstruction/analysis/well_analysis.h"
 
 class QLabel;
@@ -48,6 +50,7 @@ private:
     void fillSummary(const reconstruction::WellAnalysis& analysis);
     void fillTable(const reconstruction::WellAnalysis& analysis);
     void addAxisLine(double azimuth_deg, double length, const QString& name, const QPen& pen);
+    void addPicks(const std::vector<io::Pick>& picks);
     void selectZoneAt(double md_m);
     void rowClicked(int row);
 

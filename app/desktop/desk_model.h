@@ -8,6 +8,7 @@
 #include <QString>
 
 #include "io/diagnostics.h"
+#include "io/picks_reader.h"
 #include "reconstruction/analysis/well_analysis.h"
 #include "reconstruction/load/load_well.h"
 #include "reconstruction/well_geometry.h"
@@ -28,6 +29,7 @@ struct DeskWell {
     // made, on a worker, once the well has loaded.
     std::shared_ptr<const reconstruction::WellAnalysis> analysis;
     io::Diagnostics diagnostics;  // reader, survey and geometry warnings
+    std::vector<io::Pick> picks;  // image-log picks (--picks), shown in the 3D, rose and log track
     QString error;                // why the load failed (empty when it did not)
     bool visible = true;
 };

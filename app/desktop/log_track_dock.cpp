@@ -197,6 +197,7 @@ void LogTrackDock::sync() {
     }
     m_well = index;
     m_analysis = well->analysis;
+    m_picks = well->picks;
     loadCurves(*m_analysis);
     m_stack->setCurrentWidget(m_track);
     defaultWindow();
@@ -296,6 +297,7 @@ void LogTrackDock::redraw() {
     addCurve(m_dmax_mm, "dmax", QPen(Qt::black, 1.2));
     addCurve(m_dmin_mm, "dmin", QPen(QColor(0x00, 0x9E, 0x73), 1.2));
     addCurve(m_bit_mm, "bit size", QPen(QColor(0x56, 0xB4, 0xE9), 1.5, Qt::DashLine));
+    addPicks();
     m_chart->addSeries(m_cursor);  // last: drawn over the rest
     m_cursor->attachAxis(m_valueAxis);
     m_cursor->attachAxis(m_depthAxis);
@@ -384,6 +386,28 @@ void LogTrackDock::addCurve(const std::vector<double>& values, const QString& na
         series->setName(name);
         series->setPen(pen);
         series->setPointsVisible(run.size() == 1);  // a lone row between gaps: a dot
+        m_chart->addSeries(series);
+        series->attachAxis(m_valueAxis);
+        series->attachAxis(m_depthAxis);
+    }
+}
+
+// Image-log picks (--picks) at the right edge of the track: a magenta bar over a pick's
+// depths, a tick at a pick's one depth.
+void LogTrackDock::addPicks() {
+    const double right = m_valueHigh_mm, tick = 0.08 * (m_valueHigh_mm - m_valueLow_mm);
+    for (const io::Pick& p : m_picks) {
+        if (p.bottom_m < top_m() || p.top_m > bottom_m()) continue;
+        auto* series = new QLineSeries;
+        if (p.bottom_m > p.top_m) {
+            series->append(right - tick / 2, p.top_m);
+            series->append(right - tick / 2, p.bottom_m);
+        } else {
+            series->append(right - tick, p.top_m);
+            series->append(right, p.top_m);
+        }
+        series->setName("image-log pick");
+        series->setPen(QPen(QColor(0xFF, 0x00, 0xFF), 3));
         m_chart->addSeries(series);
         series->attachAxis(m_valueAxis);
         series->attachAxis(m_depthAxis);

@@ -129,8 +129,10 @@ int WellSession::addWell(const WellSource& source, const LoadOptions& options) {
             // A small file, read here where the markers are made; a bad one is a warning.
             try {
                 io::PickFile picks = io::readPicks(picksPath);
-                edit(w,
-                     [&picks](DeskWell& record) { record.diagnostics.merge(picks.diagnostics); });
+                edit(w, [&picks](DeskWell& record) {
+                    record.diagnostics.merge(picks.diagnostics);
+                    record.picks = picks.picks;
+                });
                 w.view->setPicks(std::move(picks.picks));
             } catch (const std::exception& e) {
                 io::Diagnostics d;
