@@ -82,6 +82,10 @@ std::string casingSummary(const WellAnalysis& a) {
     for (const CasingCheck& c : a.casing) {
         s += "casing " + io::describeCasing(c.casing) + "\n";
         s += "  reading in casing: ";
+        if (a.sections.empty() || c.casing.bottom_m < a.sections[0].md_m) {
+            s += "none (the log starts below its shoe)\n";
+            continue;
+        }
         if (c.sections == 0) {
             s += "none (no measured section inside it)\n";
             continue;
