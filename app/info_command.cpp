@@ -7,6 +7,7 @@
 #include "io/log_reader.h"
 #include "io/survey_reader.h"
 #include "reconstruction/load/load_well.h"
+#include "reconstruction/path/north_reference.h"
 #include "reconstruction/path/survey_interpolation.h"
 #include "reconstruction/section/section_coverage.h"
 
@@ -36,7 +37,7 @@ int runInfo(const QStringList& args) {
                     reconstruction::geometryOptions(options);
                 std::size_t measured = 0;
                 int needed = 0, arms = 0;
-                const io::LogInfo info =
+                io::LogInfo info =
                     io::describeLog(file, options.read, [&](const io::SectionTable& rows) {
                         arms = rows.armCount;
                         needed = reconstruction::minValidArms(arms, geometry.minValidArmFraction);
@@ -44,6 +45,12 @@ int runInfo(const QStringList& args) {
                             rows, geometry.minValidArmFraction, geometry.minArmRadius_mm,
                             geometry.maxArmRadius_mm);
                     });
+                // Which north its azimuths are from, as the other verbs settle it.
+                const reconstruction::NorthCorrection north =
+                    reconstruction::resolveNorth(info.north, info.location, options.read);
+                info.north.resolved = north.summary;
+                for (const std::string& warning : north.warnings)
+                    info.diagnostics.warn(file, 0, warning);
                 std::fputs(io::formatLogInfo(info).c_str(), stdout);
                 summary.rows = info.rows;
                 summary.top_m = info.top_m;
