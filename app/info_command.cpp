@@ -13,6 +13,7 @@
 #include "io/survey_reader.h"
 #include "reconstruction/analysis/borehole_classifier.h"
 #include "reconstruction/load/load_well.h"
+#include "reconstruction/path/north_reference.h"
 #include "reconstruction/path/survey_interpolation.h"
 #include "reconstruction/section/invalid_arm_readings.h"
 #include "reconstruction/section/section_coverage.h"
@@ -129,7 +130,7 @@ int runInfo(const QStringList& args) {
                 int needed = 0, arms = 0;
                 std::vector<RowReading> readings;
                 reconstruction::InvalidArmReadings invalid;
-                const io::LogInfo info = io::describeLog(
+                io::LogInfo info = io::describeLog(
                     file, options.read,
                     [&](const io::SectionTable& rows) {
                         arms = rows.armCount;
@@ -143,6 +144,12 @@ int runInfo(const QStringList& args) {
                                         geometry.minArmRadius_mm, geometry.maxArmRadius_mm);
                     },
                     !source.surveyPath.empty());
+                // Which north its azimuths are from, as the other verbs settle it.
+                const reconstruction::NorthCorrection north =
+                    reconstruction::resolveNorth(info.north, info.location, options.read);
+                info.north.resolved = north.summary;
+                for (const std::string& warning : north.warnings)
+                    info.diagnostics.warn(file, 0, warning);
                 std::fputs(io::formatLogInfo(info).c_str(), stdout);
                 printWellSource(source, options);
                 summary.rows = info.rows;

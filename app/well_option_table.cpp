@@ -366,6 +366,82 @@ void fileRows(Rows& rows) {
     };
 }
 
+// Which north the azimuths are from (docs/conventions.md, "North").
+void northRows(Rows& rows) {
+    WellOption& declination = rows.add(
+        "declination", "DEG", G::Reading,
+        "Magnetic declination, degrees east positive, applied to azimuths from magnetic north "
+        "(default: the header's MDEC, DECL, ..., else the World Magnetic Model's).",
+        [](const std::string& t, WellSource&, LoadOptions& o) {
+            const double deg = number(t, "declination");
+            if (!(std::fabs(deg) <= 180.0))
+                throw UsageError(
+                    "--declination: expected degrees from -180 to 180 (east positive)");
+            o.read.declination_deg = deg;
+        },
+        [](const WellSource&, const LoadOptions& o) -> std::optional<std::string> {
+            if (!o.read.declination_deg) return std::nullopt;
+            return exact(*o.read.declination_deg);
+        });
+    declination.column = "declination";
+    declination.field = "Declination (deg E)";
+    declination.blank = "the header's, else the magnetic model's";
+    declination.blankFor = [](const io::LogInfo& info) -> std::string {
+        if (info.north.declination.found())
+            return "the header's: " + exact(info.north.declination.deg) + " (" +
+                   info.north.declination.source + ")";
+        return "none in the header: the magnetic model's";
+    };
+
+    WellOption& convergence = rows.add(
+        "grid-convergence", "DEG", G::Reading,
+        "Grid convergence (grid north clockwise from true north), degrees, applied to azimuths "
+        "from grid north (default: the header's GRIDCONV, GCONV, ...).",
+        [](const std::string& t, WellSource&, LoadOptions& o) {
+            const double deg = number(t, "grid-convergence");
+            if (!(std::fabs(deg) <= 90.0))
+                throw UsageError("--grid-convergence: expected degrees from -90 to 90");
+            o.read.gridConvergence_deg = deg;
+        },
+        [](const WellSource&, const LoadOptions& o) -> std::optional<std::string> {
+            if (!o.read.gridConvergence_deg) return std::nullopt;
+            return exact(*o.read.gridConvergence_deg);
+        });
+    convergence.column = "grid_convergence";
+    convergence.field = "Grid convergence (deg)";
+    convergence.blank = "the header's";
+
+    WellOption& north = rows.add(
+        "azimuth-north", "true|magnetic|grid", G::Reading,
+        "The north of azimuth curves whose description does not say (default: taken as true "
+        "north, with a warning).",
+        [](const std::string& t, WellSource&, LoadOptions& o) {
+            const io::North n = io::parseNorthWord(t);
+            if (n == io::North::Unknown)
+                throw UsageError("--azimuth-north: expected 'true', 'magnetic' or 'grid', found '" +
+                                 t + "'");
+            o.read.azimuthNorth = n;
+        },
+        [](const WellSource&, const LoadOptions& o) -> std::optional<std::string> {
+            switch (o.read.azimuthNorth) {
+                case io::North::True:
+                    return std::string("true");
+                case io::North::Magnetic:
+                    return std::string("magnetic");
+                case io::North::Grid:
+                    return std::string("grid");
+                case io::North::Unknown:
+                    break;
+            }
+            return std::nullopt;
+        });
+    north.value = OptionValue::Choice;
+    north.choices = {"true", "magnetic", "grid"};
+    north.column = "azimuth_north";
+    north.field = "Azimuth north";
+    north.blank = "the curves' descriptions";
+}
+
 // How the well is reconstructed and drawn.
 void geometryRows(Rows& rows) {
     rows.add(
@@ -552,9 +628,10 @@ void perWellRows(Rows& rows) {
 // line's (tests check them).
 std::vector<WellOption> makeTable() {
     Rows rows;
-    rows.list.reserve(32);  // a row is finished through a reference before the next is added
+    rows.list.reserve(40);  // a row is finished through a reference before the next is added
     curveRows(rows);
     fileRows(rows);
+    northRows(rows);
     geometryRows(rows);
     colourRows(rows);
     perWellRows(rows);

@@ -20,6 +20,7 @@
 #include <QVBoxLayout>
 
 #include "io/log_reader.h"
+#include "reconstruction/path/north_reference.h"
 
 namespace caliper3d::app {
 
@@ -219,6 +220,12 @@ void OpenWellDialog::describe() {
             throw;
         }
         QApplication::restoreOverrideCursor();
+        // Which north its azimuths are from, with these options (docs/conventions.md, "North").
+        const reconstruction::NorthCorrection north =
+            reconstruction::resolveNorth(m_info->north, m_info->location, read);
+        m_info->north.resolved = north.summary;
+        for (const std::string& warning : north.warnings)
+            m_info->diagnostics.warn(m_path.toStdString(), 0, warning);
         if (m_info->survey)
             throw std::runtime_error(m_path.toStdString() +
                                      ": a deviation survey, not a caliper log: open the log "
@@ -245,6 +252,8 @@ void OpenWellDialog::showInfo() {
     summary += "Bit size in the log: " + bitSizeText(info) + "<br>";
     if (!info.holeAzimuth.empty())
         summary += "Hole azimuth: " + text(info.holeAzimuth).toHtmlEscaped() + "<br>";
+    if (!info.north.resolved.empty())
+        summary += "North: " + text(info.north.resolved).toHtmlEscaped() + "<br>";
     summary += QString("Warnings: %1").arg(info.diagnostics.warningCount);
     constexpr std::size_t kWarningsShown = 4;
     for (std::size_t i = 0; i < info.diagnostics.warnings.size() && i < kWarningsShown; ++i) {

@@ -262,11 +262,18 @@ void SectionInspectorDock::showNumbers() {
         return;
     }
     const std::size_t row = m_model->currentRow();
-    m_heading->setText(QString("<b>%1</b> at MD %2 m (section %3 of %4)")
+    // Which north the azimuths below are from, and the declination applied
+    // (docs/conventions.md, "North").
+    const std::string& north = well->geometry->table().north;
+    m_heading->setText(QString("<b>%1</b> at MD %2 m (section %3 of %4)%5")
                            .arg(well->name.toHtmlEscaped())
                            .arg(m_model->currentDepth_m(), 0, 'f', 2)
                            .arg(row + 1)
-                           .arg(well->geometry->table().rowCount()));
+                           .arg(well->geometry->table().rowCount())
+                           .arg(north.empty() ? QString()
+                                              : "<br><small>North: " +
+                                                    QString::fromStdString(north).toHtmlEscaped() +
+                                                    "</small>"));
     if (!well->analysis || row >= well->analysis->sections.size()) {
         setAllValues("analysing...");
         return;
