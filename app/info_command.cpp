@@ -99,6 +99,81 @@ void printWellSource(const WellSource& source, const LoadOptions& options) {
             source.wellhead->easting_m, source.wellhead->northing_m, source.wellhead->elevation_m);
 }
 
+// Describes one file on standard output; false where no verb could use it (the reason in
+// `summary`).
+bool describeWell(const WellSource& source, const LoadOptions& options, InputSummary& summary) {
+    const std::string& file = source.path;
+    bool ok = true;
+    // Rows with a section shape, by the rule the other verbs draw and analyse with.
+    const reconstruction::GeometryOptions geometry = reconstruction::geometryOptions(options);
+    std::size_t measured = 0;
+    int needed = 0, arms = 0;
+    std::vector<RowReading> readings;
+    reconstruction::InvalidArmReadings invalid;
+    io::LogInfo info = io::describeLog(
+        file, options.read,
+        [&](const io::SectionTable& rows) {
+            arms = rows.armCount;
+            needed = reconstruction::minValidArms(arms, geometry.minValidArmFraction);
+            measured += reconstruction::countMeasuredSections(rows, geometry.minValidArmFraction,
+                                                              geometry.minArmRadius_mm,
+                                                              geometry.maxArmRadius_mm);
+            addReadings(rows, readings);
+            if (measured == 0)  // only needed while no section has a shape
+                invalid.add(rows, geometry.minValidArmFraction, geometry.minArmRadius_mm,
+                            geometry.maxArmRadius_mm);
+        },
+        !source.surveyPath.empty());
+    // Which north its azimuths are from, as the other verbs settle it.
+    const reconstruction::NorthCorrection north =
+        reconstruction::resolveNorth(info.north, info.location, options.read);
+    info.north.resolved = north.summary;
+    for (const std::string& warning : north.warnings) info.diagnostics.warn(file, 0, warning);
+    std::fputs(io::formatLogInfo(info).c_str(), stdout);
+    printWellSource(source, options);
+    summary.rows = info.rows;
+    summary.top_m = info.top_m;
+    summary.bottom_m = info.bottom_m;
+    summary.addWarnings(info.diagnostics);
+    if (!info.survey && info.arms == 0) {
+        // Described, but no verb can draw it: say why and fail.
+        ok = false;
+        const std::string why =
+            "no caliper curve recognised: name the curves with --radii or "
+            "--diameters";
+        std::printf("caliper:   none recognised\n");
+        std::fprintf(stderr, "caliper3d info: %s: %s\n", file.c_str(), why.c_str());
+        summary.error = InputError{file, 0, why};
+    } else if (!info.survey) {
+        std::printf("caliper:   %zu of %zu sections measured (at least %d of %d arms valid)\n",
+                    measured, info.rows, needed, arms);
+        printCasingReadings(info, readings);
+        if (measured == 0) {
+            // Described, but every other verb refuses it: say why and where, and fail.
+            ok = false;
+            char why[160];
+            std::snprintf(why, sizeof why,
+                          "no usable caliper data: no section has at least %d of its "
+                          "%d arms with a valid reading: ",
+                          needed, arms);
+            std::string reason =
+                why + reconstruction::describeInvalidArmReadings(invalid, geometry.minArmRadius_mm,
+                                                                 geometry.maxArmRadius_mm);
+            if (info.firstDataLine > 0)
+                reason += "; the first at line " + std::to_string(info.firstDataLine);
+            std::fprintf(stderr, "caliper3d info: %s: %s\n", file.c_str(), reason.c_str());
+            summary.error = InputError{file, info.firstDataLine, reason};
+        }
+    }
+    if (info.survey) {
+        // The positions a survey writes, checked against minimum curvature.
+        const std::string check = reconstruction::describeSurveyPositionCheck(
+            reconstruction::readCheckedSurvey(file, options.read, nullptr).check);
+        if (!check.empty()) std::printf("check:     %s\n", check.c_str());
+    }
+    return ok;
+}
+
 }  // namespace
 
 int runInfo(const QStringList& args) {
@@ -123,77 +198,7 @@ int runInfo(const QStringList& args) {
             summary.verb = "info";
             const double start = steadySeconds();
             try {
-                // Rows with a section shape, by the rule the other verbs draw and analyse with.
-                const reconstruction::GeometryOptions geometry =
-                    reconstruction::geometryOptions(options);
-                std::size_t measured = 0;
-                int needed = 0, arms = 0;
-                std::vector<RowReading> readings;
-                reconstruction::InvalidArmReadings invalid;
-                io::LogInfo info = io::describeLog(
-                    file, options.read,
-                    [&](const io::SectionTable& rows) {
-                        arms = rows.armCount;
-                        needed = reconstruction::minValidArms(arms, geometry.minValidArmFraction);
-                        measured += reconstruction::countMeasuredSections(
-                            rows, geometry.minValidArmFraction, geometry.minArmRadius_mm,
-                            geometry.maxArmRadius_mm);
-                        addReadings(rows, readings);
-                        if (measured == 0)  // only needed while no section has a shape
-                            invalid.add(rows, geometry.minValidArmFraction,
-                                        geometry.minArmRadius_mm, geometry.maxArmRadius_mm);
-                    },
-                    !source.surveyPath.empty());
-                // Which north its azimuths are from, as the other verbs settle it.
-                const reconstruction::NorthCorrection north =
-                    reconstruction::resolveNorth(info.north, info.location, options.read);
-                info.north.resolved = north.summary;
-                for (const std::string& warning : north.warnings)
-                    info.diagnostics.warn(file, 0, warning);
-                std::fputs(io::formatLogInfo(info).c_str(), stdout);
-                printWellSource(source, options);
-                summary.rows = info.rows;
-                summary.top_m = info.top_m;
-                summary.bottom_m = info.bottom_m;
-                summary.addWarnings(info.diagnostics);
-                if (!info.survey && info.arms == 0) {
-                    // Described, but no verb can draw it: say why and fail.
-                    ++failures;
-                    const std::string why =
-                        "no caliper curve recognised: name the curves with --radii or "
-                        "--diameters";
-                    std::printf("caliper:   none recognised\n");
-                    std::fprintf(stderr, "caliper3d info: %s: %s\n", file.c_str(), why.c_str());
-                    summary.error = InputError{file, 0, why};
-                } else if (!info.survey) {
-                    std::printf(
-                        "caliper:   %zu of %zu sections measured (at least %d of %d arms valid)\n",
-                        measured, info.rows, needed, arms);
-                    printCasingReadings(info, readings);
-                    if (measured == 0) {
-                        // Described, but every other verb refuses it: say why and where, and fail.
-                        ++failures;
-                        char why[160];
-                        std::snprintf(why, sizeof why,
-                                      "no usable caliper data: no section has at least %d of its "
-                                      "%d arms with a valid reading: ",
-                                      needed, arms);
-                        std::string reason =
-                            why + reconstruction::describeInvalidArmReadings(
-                                      invalid, geometry.minArmRadius_mm, geometry.maxArmRadius_mm);
-                        if (info.firstDataLine > 0)
-                            reason += "; the first at line " + std::to_string(info.firstDataLine);
-                        std::fprintf(stderr, "caliper3d info: %s: %s\n", file.c_str(),
-                                     reason.c_str());
-                        summary.error = InputError{file, info.firstDataLine, reason};
-                    }
-                }
-                if (info.survey) {
-                    // The positions a survey writes, checked against minimum curvature.
-                    const std::string check = reconstruction::describeSurveyPositionCheck(
-                        reconstruction::readCheckedSurvey(file, options.read, nullptr).check);
-                    if (!check.empty()) std::printf("check:     %s\n", check.c_str());
-                }
+                if (!describeWell(source, options, summary)) ++failures;
             } catch (const std::exception& e) {
                 ++failures;
                 std::fprintf(stderr, "caliper3d info: %s\n", e.what());

@@ -223,7 +223,10 @@ void curveRows(Rows& rows) {
     diameters.column = "diameters";
     diameters.field = "Diameter curves";
     diameters.blank = "detected";
+}
 
+// Which curves give the tool's orientation and the hole's direction.
+void orientationRows(Rows& rows) {
     using io::RoleOverrides;
     WellOption& padAzimuth =
         rows.add(kPadAzimuth, "MNEM|none", G::Reading,
@@ -630,6 +633,7 @@ std::vector<WellOption> makeTable() {
     Rows rows;
     rows.list.reserve(40);  // a row is finished through a reference before the next is added
     curveRows(rows);
+    orientationRows(rows);
     fileRows(rows);
     northRows(rows);
     geometryRows(rows);

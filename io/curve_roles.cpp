@@ -272,13 +272,17 @@ void overrideAngle(const std::vector<std::string>& mnemonics, const std::string&
     if (name.empty()) return;
     slot = canonical(name) == "NONE" ? -1 : indexOf(mnemonics, name);
 }
-}  // namespace
 
-CurveRoles assignRoles(const std::vector<std::string>& mnemonics, const RoleOverrides& overrides) {
-    CurveRoles roles;
+// Every curve's guess: the single roles set in `roles` (first curve of each), the arm curves
+// gathered for the choice of arms.
+struct ArmCandidates {
     std::map<int, int> radii, fingers;
     std::vector<PairCurve> pairs;
     std::vector<int> singles;  // one-diameter calipers, in file order
+};
+
+ArmCandidates collectRoles(const std::vector<std::string>& mnemonics, CurveRoles& roles) {
+    ArmCandidates c;
     for (std::size_t i = 0; i < mnemonics.size(); ++i) {
         if (mnemonics[i].find(':') != std::string::npos) continue;  // a duplicate: never a role
         const int index = static_cast<int>(i);
@@ -291,16 +295,16 @@ CurveRoles assignRoles(const std::vector<std::string>& mnemonics, const RoleOver
                 first(roles.depth);
                 break;
             case CurveRole::Radius:
-                radii.emplace(g.arm, index);
+                c.radii.emplace(g.arm, index);
                 break;
             case CurveRole::Finger:
-                fingers.emplace(g.arm, index);
+                c.fingers.emplace(g.arm, index);
                 break;
             case CurveRole::Diameter:
                 if (g.arm > 0)
-                    pairs.push_back({index, g});
+                    c.pairs.push_back({index, g});
                 else
-                    singles.push_back(index);
+                    c.singles.push_back(index);
                 break;
             case CurveRole::PadAzimuth:
                 first(roles.padAzimuth);
@@ -321,6 +325,17 @@ CurveRoles assignRoles(const std::vector<std::string>& mnemonics, const RoleOver
                 break;
         }
     }
+    return c;
+}
+}  // namespace
+
+CurveRoles assignRoles(const std::vector<std::string>& mnemonics, const RoleOverrides& overrides) {
+    CurveRoles roles;
+    const ArmCandidates candidates = collectRoles(mnemonics, roles);
+    const std::map<int, int>& radii = candidates.radii;
+    const std::map<int, int>& fingers = candidates.fingers;
+    const std::vector<PairCurve>& pairs = candidates.pairs;
+    const std::vector<int>& singles = candidates.singles;
     if (roles.depth < 0 && !mnemonics.empty())
         roles.depth = 0;  // LAS: the first curve is the index
     overrideAngle(mnemonics, overrides.padAzimuth, roles.padAzimuth);

@@ -48,7 +48,7 @@ struct SectionTable {
     // Where hole_azimuth came from (docs/conventions.md, "Hole azimuth"):
     // read from the log (or not needed: no HAZI and no inclination), derived
     // from P1AZ and RB by a known tool's convention, or unknown (the log is
-    // inclined but gives no azimuth: the path is drawn leaning north and the
+    // inclined but gives no azimuth: the path is drawn without a departure and the
     // report leaves what depends on it empty).
     enum class HoleAzimuth : unsigned char { Read, Derived, Unknown };
     HoleAzimuth holeAzimuth = HoleAzimuth::Read;

@@ -42,6 +42,7 @@ struct WellSession::Well {
     int id = -1;
     QString name;  // the file's name, for messages
     std::unique_ptr<scenegraph::WellView> view;
+    io::Diagnostics picksDiagnostics;  // the picks file's, kept beside the load's warnings
     std::unique_ptr<reconstruction::WellLoadPipeline> pipeline;
     std::unique_ptr<scenegraph::SegmentFeeder> feeder;
     std::unique_ptr<AnalysisJob> analysisJob;  // after the load, until the analysis is in
@@ -101,6 +102,20 @@ int WellSession::addWell(const QString& path, const LoadOptions& options) {
     return addWell(WellSource{path.toStdString(), {}, {}, {}}, options);
 }
 
+namespace {
+// A well's image-log picks (a small file, read where the markers are made); a file that
+// cannot be read is a warning of the well, not a failed load.
+io::PickFile picksOf(const std::string& path) {
+    io::PickFile picks;
+    try {
+        picks = io::readPicks(path);
+    } catch (const std::exception& e) {
+        picks.diagnostics.warn(path, 0, std::string("picks not shown: ") + e.what());
+    }
+    return picks;
+}
+}  // namespace
+
 int WellSession::addWell(const WellSource& source, const LoadOptions& options) {
     auto owned = std::make_unique<Well>();
     Well& w = *owned;
@@ -126,19 +141,13 @@ int WellSession::addWell(const WellSource& source, const LoadOptions& options) {
     callbacks.geometry = [this, &w, picksPath = source.picksPath](
                              std::shared_ptr<const reconstruction::WellGeometry> g) {
         if (!picksPath.empty()) {
-            // A small file, read here where the markers are made; a bad one is a warning.
-            try {
-                io::PickFile picks = io::readPicks(picksPath);
-                edit(w, [&picks](DeskWell& record) {
-                    record.diagnostics.merge(picks.diagnostics);
-                    record.picks = picks.picks;
-                });
-                w.view->setPicks(std::move(picks.picks));
-            } catch (const std::exception& e) {
-                io::Diagnostics d;
-                d.warn(picksPath, 0, std::string("picks not shown: ") + e.what());
-                edit(w, [&d](DeskWell& record) { record.diagnostics.merge(d); });
-            }
+            io::PickFile picks = picksOf(picksPath);
+            w.picksDiagnostics = picks.diagnostics;
+            edit(w, [&picks](DeskWell& record) {
+                record.diagnostics.merge(picks.diagnostics);
+                record.picks = picks.picks;
+            });
+            w.view->setPicks(std::move(picks.picks));
         }
         w.view->annotate(*g, m_model.well(modelIndex(w)).options.radialExaggeration);
         m_detail->addWell(w.view->scene(), g);
@@ -149,7 +158,10 @@ int WellSession::addWell(const WellSource& source, const LoadOptions& options) {
         });
     };
     callbacks.warnings = [this, &w](const io::Diagnostics& diagnostics) {
-        edit(w, [&diagnostics](DeskWell& record) { record.diagnostics = diagnostics; });
+        edit(w, [&diagnostics, &w](DeskWell& record) {
+            record.diagnostics = diagnostics;
+            record.diagnostics.merge(w.picksDiagnostics);
+        });
         emit warningsChanged();
     };
     callbacks.progress = [this, &w](std::size_t attached) {

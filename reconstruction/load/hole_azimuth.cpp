@@ -25,8 +25,9 @@ void resolveHoleAzimuth(io::SectionTable& table, const io::HoleAzimuthPlan& plan
     } else if (plan.kind == io::SectionTable::HoleAzimuth::Unknown && diagnostics) {
         diagnostics->warn(table.source, 0,
                           "hole azimuth " + plan.description +
-                              ". The path is drawn leaning north, and the report leaves "
-                              "north, east and azimuth empty where they depend on it");
+                              ". The path is drawn straight down at its TVD (the direction of its "
+                              "departure is not known), and the report leaves north, east and "
+                              "azimuth empty where they depend on it");
     }
 }
 

@@ -96,6 +96,34 @@ private:
     std::size_t m_sent = 0;
 };
 
+// Hands each stretch the reader has parsed to the builder until the reader is done; stops
+// feeding (the reader then keeps only the whole table) where a stretch cannot be streamed.
+// Throws GeometryCancelled when the load is cancelled.
+void feedStretches(Handover& handover, StretchBuilder& builder, const LoadOptions& options) {
+    bool streaming = true;
+    for (;;) {
+        io::SectionTable rows;
+        bool done = false;
+        {
+            std::unique_lock<std::mutex> lock(handover.mutex);
+            handover.changed.wait(lock,
+                                  [&] { return handover.done || handover.pending.rowCount() > 0; });
+            rows = std::move(handover.pending);
+            handover.pending = io::SectionTable{};
+            done = handover.done;
+            streaming = streaming && handover.feeding;
+        }
+        if (options.cancel && options.cancel->load()) throw GeometryCancelled();
+        if (streaming && rows.rowCount() > 0 && !builder.add(std::move(rows))) {
+            streaming = false;
+            const std::lock_guard<std::mutex> lock(handover.mutex);
+            handover.feeding = false;
+            handover.pending = io::SectionTable{};
+        }
+        if (done) break;
+    }
+}
+
 }  // namespace
 
 LoadedWell loadWellStreamed(const WellSource& source, const LoadOptions& options,
@@ -158,28 +186,7 @@ LoadedWell loadWellStreamed(const WellSource& source, const LoadOptions& options
 
     StretchBuilder builder(geometry, sink);
     try {
-        bool streaming = true;
-        for (;;) {
-            io::SectionTable rows;
-            bool done = false;
-            {
-                std::unique_lock<std::mutex> lock(handover.mutex);
-                handover.changed.wait(
-                    lock, [&] { return handover.done || handover.pending.rowCount() > 0; });
-                rows = std::move(handover.pending);
-                handover.pending = io::SectionTable{};
-                done = handover.done;
-                streaming = streaming && handover.feeding;
-            }
-            if (options.cancel && options.cancel->load()) throw GeometryCancelled();
-            if (streaming && rows.rowCount() > 0 && !builder.add(std::move(rows))) {
-                streaming = false;
-                const std::lock_guard<std::mutex> lock(handover.mutex);
-                handover.feeding = false;
-                handover.pending = io::SectionTable{};
-            }
-            if (done) break;
-        }
+        feedStretches(handover, builder, options);
     } catch (...) {
         {
             const std::lock_guard<std::mutex> lock(handover.mutex);

@@ -159,3 +159,24 @@ TEST_F(WellSessionTest, AFailedWellSaysWhichFileAndLine) {
 }
 
 }  // namespace
+
+TEST_F(WellSessionTest, AWellsImageLogPicksAreReadAndDrawnOnTheWall) {
+    const auto log = test::syntheticLog("example", 100.0, 0.1);
+    const auto picks = test::scratch("session_picks.csv");
+    std::ofstream(picks) << "md,azimuth,type\n70,317,BREAKOUT\n75,140,breakout\nx,1,bad row\n";
+    app::DeskModel model;
+    app::WellSession session(model, nullptr);
+    session.openWell(app::WellSource{log.string(), {}, {}, picks.string()}, eightAndAHalfInch());
+    ASSERT_TRUE(
+        test::waitUntil([&] { return model.wellCount() == 1 && model.well(0).analysis; }, 120000));
+    const app::DeskWell& well = model.well(0);
+    ASSERT_EQ(well.picks.size(), 2u);
+    EXPECT_EQ(well.picks[0].azimuth_deg, 317.0);
+    // The row that is not a pick is a counted warning of the well, with its line.
+    bool warned = false;
+    for (const io::Warning& w : well.diagnostics.warnings)
+        warned = warned || (w.file == picks.string() && w.line == 4);
+    EXPECT_TRUE(warned);
+    // The markers hang under the well's annotations.
+    EXPECT_NE(SoNode::getByName("image_log_picks"), nullptr);
+}
