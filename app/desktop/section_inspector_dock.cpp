@@ -274,6 +274,7 @@ void SectionInspectorDock::showNumbers() {
                                               : "<br><small>North: " +
                                                     QString::fromStdString(north).toHtmlEscaped() +
                                                     "</small>"));
+    fitHeading();
     if (!well->analysis || row >= well->analysis->sections.size()) {
         setAllValues("analysing...");
         return;
@@ -311,6 +312,14 @@ void SectionInspectorDock::resizeEvent(QResizeEvent* event) {
     m_layout->setDirection(event->size().width() > event->size().height() * 5 / 4
                                ? QBoxLayout::LeftToRight
                                : QBoxLayout::TopToBottom);
+    fitHeading();
+}
+
+// A wrapped label in a form gets the height of its first lines only: give it the height its
+// text takes at its width (the north line can run to four lines).
+void SectionInspectorDock::fitHeading() {
+    const int width = std::max(m_heading->width(), 200);
+    m_heading->setMinimumHeight(m_heading->heightForWidth(width));
 }
 
 }  // namespace caliper3d::app

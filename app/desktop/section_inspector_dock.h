@@ -52,6 +52,7 @@ protected:
     void resizeEvent(QResizeEvent* event) override;
 
 private:
+    void fitHeading();
     void buildChart();
     void buildNumbers(QWidget* panel);
     void showOutline();
