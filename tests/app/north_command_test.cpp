@@ -1,8 +1,6 @@
 // `caliper3d info` says which north every azimuth is from and which declination was
 // applied (docs/conventions.md, "North"), with the options --declination,
 // --grid-convergence and --azimuth-north.
-#include <sys/wait.h>
-
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -10,27 +8,14 @@
 
 #include <gtest/gtest.h>
 
+#include "cli_run.h"
 #include "test_support.h"
 
 using namespace caliper3d;
+using caliper3d::test::CommandRun;
+using caliper3d::test::runCaliper3d;
 
 namespace {
-
-struct CommandRun {
-    int status = -1;
-    std::string output;  // stdout and stderr together
-};
-
-CommandRun runCaliper3d(const std::string& arguments) {
-    CommandRun r;
-    FILE* pipe = popen((std::string(CALIPER3D_BINARY) + " " + arguments + " 2>&1").c_str(), "r");
-    if (!pipe) return r;
-    char buffer[4096];
-    while (std::fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
-    const int raw = pclose(pipe);
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    return r;
-}
 
 // Six arms, P1AZ 100 and HAZI 50 degrees from magnetic north on every row.
 std::string magneticLog() {
