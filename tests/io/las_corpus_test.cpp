@@ -12,6 +12,7 @@
 #include "io/las_reader.h"
 #include "io/log_reader.h"
 #include "io/parse_error.h"
+#include "support/curve_lookup.h"
 #include "test_support.h"
 
 using namespace caliper3d::io;
@@ -49,17 +50,8 @@ const Warning* warning(const Diagnostics& d, const std::string& text) {
     return nullptr;
 }
 
-const CurveInfo* curve(const LogInfo& info, const std::string& mnemonic) {
-    for (const CurveInfo& c : info.curves)
-        if (c.mnemonic == mnemonic) return &c;
-    return nullptr;
-}
-
-const ExtraCurve* extra(const SectionTable& t, const std::string& mnemonic) {
-    for (const ExtraCurve& c : t.extraCurves)
-        if (c.mnemonic == mnemonic) return &c;
-    return nullptr;
-}
+using caliper3d::test::curve;
+using caliper3d::test::extra;
 
 // A six-arm log written here: DEPT, six radii in millimetres and the curves in `more`
 // (names and units), with the data lines given.

@@ -10,6 +10,7 @@
 
 #include "io/log_reader.h"
 #include "io/parse_error.h"
+#include "support/curve_lookup.h"
 #include "test_support.h"
 
 using namespace caliper3d::io;
@@ -24,17 +25,8 @@ LoadedLog load(const std::string& name) {
     return loadCaliperLog((edgeCases() / name).string(), ReadOptions{});
 }
 
-const CurveInfo* curve(const LogInfo& info, const std::string& mnemonic) {
-    for (const CurveInfo& c : info.curves)
-        if (c.mnemonic == mnemonic) return &c;
-    return nullptr;
-}
-
-const ExtraCurve* extra(const SectionTable& t, const std::string& mnemonic) {
-    for (const ExtraCurve& c : t.extraCurves)
-        if (c.mnemonic == mnemonic) return &c;
-    return nullptr;
-}
+using caliper3d::test::curve;
+using caliper3d::test::extra;
 
 bool warned(const LogInfo& info, const std::string& text) {
     for (const Warning& w : info.diagnostics.warnings)
