@@ -196,6 +196,7 @@ LogicalFileSpec sixArmLogWithParameters(const SixArmShape& s, const WellParamete
         {"MDEC", "deg", "Magnetic declination", {p.declination_deg}, {}, FDOUBL});
     f.parameters.push_back({"LATI", "deg", "Latitude", {p.latitude_deg}, {}, FDOUBL});
     f.parameters.push_back({"LONG", "deg", "Longitude", {p.longitude_deg}, {}, FDOUBL});
+    f.parameters.push_back({"LMF", "", "Logging measured from", {}, {"KB"}, ASCII});
     f.parameters.push_back(
         {"EKB", "m", "Elevation of kelly bushing", {p.kellyBushing_m}, {}, FDOUBL});
     return f;

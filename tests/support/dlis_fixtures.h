@@ -84,7 +84,7 @@ LogicalFileSpec padImagerLog(const PadImagerShape& shape);
 std::vector<LogicalFileSpec> twoRunLogs(const SixArmShape& first, const SixArmShape& second);
 
 // (e) A six-arm log whose parameters give the casing (CSGL, CSGS, CSGW, CSGT), the magnetic
-// declination (MDEC) and the location (LATI, LONG, EKB).
+// declination (MDEC) and the location (LATI, LONG; depths from LMF = KB at EKB).
 struct WellParameters {
     double casingShoe_m = 1020.0;
     double casingSize_in = 9.625;
