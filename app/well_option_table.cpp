@@ -284,6 +284,21 @@ void fileRows(Rows& rows) {
         });
     rowStep.columnTextOnly = true;
 
+    WellOption& logicalFile = rows.add(
+        "file", "N", G::Reading,
+        "DLIS: the logical file (run) to read, 1 for the first; default the first that holds "
+        "caliper curves (`info` lists them).",
+        [](const std::string& t, WellSource&, LoadOptions& o) {
+            o.read.logicalFile = wholeNumber(t, "file", 1, 100000);
+        },
+        [](const WellSource&, const LoadOptions& o) -> std::optional<std::string> {
+            if (o.read.logicalFile == 0) return std::nullopt;
+            return std::to_string(o.read.logicalFile);
+        });
+    logicalFile.column = "logical_file";
+    logicalFile.field = "DLIS logical file";
+    logicalFile.blank = "the first with caliper curves";
+
     rows.add(
             "nulls", "declared|common", G::Reading,
             "Null values: declared (the file's NULL) or common (also -999.25, -9999, 9999, ERR, "

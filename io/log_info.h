@@ -42,6 +42,9 @@ struct LogInfo {
     std::string declaredNull;       // LAS: the header's NULL as written ("" when none is declared)
     std::size_t firstDataLine = 0;  // 1-based line of the first data row in the file
     std::vector<CurveInfo> curves;
+    // What a structured format says beyond the curves, as `info` prints it, one line each
+    // (DLIS: origin, logical files, frames, channels with their dimensions, parameters).
+    std::vector<std::string> details;
     Diagnostics diagnostics;
     bool cancelled = false;  // the read was stopped by its cancellation token
     bool survey = false;     // a deviation survey, described by describeLog: rows are stations

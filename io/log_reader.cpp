@@ -193,6 +193,8 @@ std::string formatLogInfo(const LogInfo& info) {
     std::ostringstream out;
     out << "file:      " << info.file << "\n";
     out << "format:    " << info.format << "\n";
+    for (std::size_t i = 0; i < info.details.size(); ++i)
+        out << (i == 0 ? "contents:  " : "           ") << info.details[i] << "\n";
     if (!info.wellName.empty()) out << "well:      " << info.wellName << "\n";
     out << formatWellLocation(info.location);
     out << "rows:      " << info.rows << (info.survey ? " stations\n" : " sections\n");

@@ -12,17 +12,20 @@
 
 #include "io/azimuth_north.h"
 #include "io/curve_plan.h"
+#include "io/dlis/dlis_reader.h"
+#include "io/dlis/dlis_stream.h"
 #include "io/las_header.h"
 #include "io/las_reader.h"
 #include "io/layout/column_text_layout.h"
 #include "io/layout/format_sniffing.h"
 #include "io/layout/las_layout.h"
-#include "io/median.h"
 #include "io/number_parsing.h"
 #include "io/parse_error.h"
 #include "io/stream/depth_order.h"
+#include "io/stream/mapped_file.h"
 #include "io/stream/piece_sharing.h"
 #include "io/stream/row_parser.h"
+#include "io/stream/row_tally.h"
 #include "io/stream/text_source.h"
 #include "io/text.h"
 #include "io/text_encoding.h"
@@ -31,7 +34,6 @@ namespace caliper3d::io {
 
 namespace {
 
-constexpr std::size_t kStepSamples = 65536;
 constexpr std::size_t kMinSplitBytes = 256u << 10;
 constexpr std::size_t kMaxPieces = 16;
 
@@ -355,17 +357,7 @@ private:
 
     void deliver(const SectionTable& chunk) {
         if (chunk.rowCount() == 0) return;
-        const std::size_t before = m_info.rows;
-        m_info.rows += chunk.rowCount();
-        if (before == 0) m_info.top_m = chunk.depth_m.front();
-        m_info.bottom_m = chunk.depth_m.back();
-        for (double b : chunk.bitSize_mm)
-            if (std::isfinite(b)) {
-                m_bitSizeMin = std::min(m_bitSizeMin, b);
-                m_bitSizeMax = std::max(m_bitSizeMax, b);
-            }
-        for (std::size_t r = 1; r < chunk.rowCount() && m_steps.size() < kStepSamples; ++r)
-            m_steps.push_back(chunk.depth_m[r] - chunk.depth_m[r - 1]);
+        m_tally.add(chunk, m_info);
         m_consumer(chunk);
     }
 
@@ -403,11 +395,7 @@ private:
             m_info.curves[c].nulls = m_nulls[c];
         if (m_layout.radiiOnly && !m_info.curves.empty()) m_info.curves.front().nulls = 0;
         m_info.arms = plan.armCount;
-        if (m_bitSizeMin <= m_bitSizeMax) {
-            m_info.bitSize_mm = m_bitSizeMin;
-            m_info.bitSizeMax_mm = m_bitSizeMax;
-        }
-        if (!m_steps.empty()) m_info.step_m = medianInPlace(m_steps);
+        m_tally.finish(m_info);
         if (!m_info.cancelled) checkDeclaredRange();
         if (m_info.rows == 0 && !m_info.cancelled) {
             if (m_layout.format.las)
@@ -439,14 +427,23 @@ private:
     std::vector<BadValues> m_bad;  // per column: values that were not numbers (lenient curves)
     std::optional<LasItem> m_declared[3];  // STRT, STOP, STEP of a LAS header, when numbers
     double m_declaredValue[3] = {0.0, 0.0, 0.0};
-    std::vector<double> m_steps;
-    double m_bitSizeMin = 1e300, m_bitSizeMax = -1e300;
+    RowTally m_tally;
 };
 
 }  // namespace
 
 LogInfo streamCaliperLog(const std::string& path, const ReadOptions& options,
                          const ChunkConsumer& consumer, const StreamOptions& stream) {
+    {
+        // DLIS is binary and read by offset: mapped, not streamed as text.
+        FileSource head(path);
+        std::string start(512, '\0');
+        start.resize(head.read(start.data(), start.size()));
+        if (dlis::looksLikeDlis(start)) {
+            const MappedFile file(path);
+            return streamDlis(file.bytes(), path, options, consumer, stream);
+        }
+    }
     FileSource source(path);
     return LogStreamer(path, options, consumer, stream).run(source);
 }
@@ -454,6 +451,8 @@ LogInfo streamCaliperLog(const std::string& path, const ReadOptions& options,
 LogInfo streamCaliperText(std::string_view text, const std::string& name,
                           const ReadOptions& options, const ChunkConsumer& consumer,
                           const StreamOptions& stream) {
+    if (dlis::looksLikeDlis(text.substr(0, 512)))
+        return streamDlis(text, name, options, consumer, stream);
     MemorySource source(text);
     return LogStreamer(name, options, consumer, stream).run(source);
 }

@@ -50,6 +50,9 @@ struct ReadOptions {
     std::optional<double> gridConvergence_deg;
     North azimuthNorth = North::Unknown;
     std::vector<CasingString> casing;  // --casing: replaces the file's casing program
+    // DLIS: the logical file to read (1-based, --file N); 0 reads the first that holds
+    // caliper curves (docs/formats.md, "DLIS").
+    int logicalFile = 0;
 };
 // Two wells read alike: the window compares the options its wells were opened with.
 inline bool operator==(const ReadOptions& a, const ReadOptions& b) {
@@ -58,7 +61,7 @@ inline bool operator==(const ReadOptions& a, const ReadOptions& b) {
            a.nullPolicy == b.nullPolicy && a.depthOrder == b.depthOrder && a.roles == b.roles &&
            a.bitSize_mm == b.bitSize_mm && a.declination_deg == b.declination_deg &&
            a.gridConvergence_deg == b.gridConvergence_deg && a.azimuthNorth == b.azimuthNorth &&
-           a.casing == b.casing;
+           a.casing == b.casing && a.logicalFile == b.logicalFile;
 }
 inline bool operator!=(const ReadOptions& a, const ReadOptions& b) {
     return !(a == b);

@@ -11,7 +11,7 @@ set -euo pipefail
 seconds=${1:-60}
 root=$(cd "$(dirname "$0")/.." && pwd)
 build="$root/build/fuzz"
-targets=(fuzz_las_reader fuzz_las_header fuzz_column_text fuzz_survey_reader fuzz_batch_manifest)
+targets=(fuzz_las_reader fuzz_las_header fuzz_column_text fuzz_survey_reader fuzz_batch_manifest fuzz_dlis_reader)
 
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_COMPILER=clang++ \
@@ -20,13 +20,17 @@ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 cmake --build "$build" -j2 --target "${targets[@]}"
 
 mkdir -p "$build/crashes" "$build/logs"
-for kind in las text survey manifest; do
+for kind in las text survey manifest dlis; do
   mkdir -p "$build/corpus/$kind"
-  cp "$root"/tests/fuzz/corpus/$kind/* "$build/corpus/$kind/"
+  if [ -d "$root/tests/fuzz/corpus/$kind" ]; then cp "$root"/tests/fuzz/corpus/$kind/* "$build/corpus/$kind/"; fi
 done
 shared="$root/../shared/data"
 if [ -d "$shared/las_edge_cases" ]; then
   cp "$shared"/las_edge_cases/*.las "$build/corpus/las/"
+fi
+if [ -d "$shared/dlis" ]; then
+  # dlisio's small synthetic files (the envelope, sets, every representation code, frames).
+  find "$shared/dlis" -name '*.dlis' -size -64k -exec cp {} "$build/corpus/dlis/" \;
 fi
 if [ -d "$shared/surveys" ]; then
   cp "$shared"/surveys/*.csv "$shared"/surveys/*.txt "$build/corpus/survey/" 2>/dev/null || true
@@ -38,6 +42,7 @@ corpusOf() {
     fuzz_column_text) echo "$build/corpus/text" ;;
     fuzz_survey_reader) echo "$build/corpus/survey" ;;
     fuzz_batch_manifest) echo "$build/corpus/manifest" ;;
+    fuzz_dlis_reader) echo "$build/corpus/dlis" ;;
     *) echo "$build/corpus/las" ;;
   esac
 }

@@ -109,7 +109,7 @@ QString FileMenu::startFolder() const {
 void FileMenu::openDialog(bool add) {
     const QString path = QFileDialog::getOpenFileName(
         &m_window, add ? "Add caliper log" : "Open caliper log", startFolder(),
-        "Caliper logs (*.txt *.las *.LAS *.csv);;All files (*)");
+        "Caliper logs (*.txt *.las *.LAS *.csv *.dlis *.DLIS);;All files (*)");
     if (!path.isEmpty()) openFile(path, add);
 }
 

@@ -27,6 +27,7 @@ const std::map<std::string, std::vector<std::string>>& samples() {
         {"radii", {"RAD1,RAD2,RAD3,RAD4", " R1 , R2 ", "RAD[]"}},
         {"diameters", {"CALI", "C1,C2,C3"}},
         {"row-step", {"0.0254", "2,5", "1e-3"}},
+        {"file", {"2", "1", "17"}},
         {"nulls", {"declared"}},
         {"bit-size", {"8.5in", "215.9mm", "6.125", "21.59cm", "155.575mm"}},
         {"casing", {"88.3,7in,17lb/ft", "30,177.8mm,166.1mm;1200,9.625,47lb/ft", "100,7"}},

@@ -1,0 +1,21 @@
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "io/log_info.h"
+#include "io/log_stream.h"
+#include "io/read_options.h"
+
+namespace caliper3d::io {
+
+// Reads a DLIS file held in `bytes` (mapped, or in memory) as a caliper log, through the
+// same roles, units, parameters and depth ordering as a LAS file: one logical file
+// (ReadOptions::logicalFile, else the first that holds caliper curves) and, in it, the
+// frame that holds the most arms. Array channels become columns NAME[1]..NAME[n]; arrays
+// of more than one dimension are listed, not read. `info.details` describes the file.
+// Throws ParseError naming `name` and a byte offset for what cannot be read.
+LogInfo streamDlis(std::string_view bytes, const std::string& name, const ReadOptions& options,
+                   const ChunkConsumer& consumer, const StreamOptions& stream);
+
+}  // namespace caliper3d::io
