@@ -66,7 +66,7 @@ dlis::SixArmShape sixArmShape() {
 }
 
 std::string sixArmFile() {
-    const std::string path = scratch("dlis_cli_six_arm.dlis").string();
+    std::string path = scratch("dlis_cli_six_arm.dlis").string();
     dlis::writeDlisFile(path, {dlis::sixArmLog(sixArmShape())});
     return path;
 }

@@ -34,13 +34,13 @@ namespace {
 
 std::string write(const std::string& name, const std::vector<dlis::LogicalFileSpec>& files,
                   const dlis::WriteOptions& options = {}) {
-    const std::string path = scratch(name).string();
+    std::string path = scratch(name).string();
     dlis::writeDlisFile(path, files, options);
     return path;
 }
 
 std::string writeBytes(const std::string& name, const std::string& bytes) {
-    const std::string path = scratch(name).string();
+    std::string path = scratch(name).string();
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
     out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
     return path;
