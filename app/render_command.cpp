@@ -182,9 +182,10 @@ int renderPicture(const std::vector<WellSource>& sources, const RenderSettings& 
     scenegraph::writePng(picture.image, out);
     if (r.stats)
         std::printf(
-            "triangles_drawn=%zu frame_ms=%.1f rss_mb=%.0f first_picture_ms=%.0f load_ms=%.0f\n",
-            picture.trianglesDrawn, picture.frame_ms, scenegraph::peakRss_mb(), firstPicture_ms,
-            scene.load_ms);
+            "triangles_drawn=%zu nodes_traversed=%zu frame_ms=%.1f rss_mb=%.0f "
+            "first_picture_ms=%.0f load_ms=%.0f\n",
+            picture.trianglesDrawn, picture.nodesTraversed, picture.frame_ms,
+            scenegraph::peakRss_mb(), firstPicture_ms, scene.load_ms);
     std::printf("wrote %s (%dx%d)\n", out.c_str(), r.width, r.height);
     if (r.pick)
         std::fputs(describePick(scene, picture.root.get(), r.width, r.height, *r.pick).c_str(),

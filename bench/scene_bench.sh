@@ -12,8 +12,8 @@ lengths=("$@")
 [ ${#lengths[@]} -gt 0 ] || lengths=(10 100 1000 4000)
 bin="$build/app/caliper3d"
 work=${SCENE_BENCH_DIR:-$(mktemp -d)}
-echo "| length_m | view | sections | segments | triangles_full | triangles_drawn | frame_ms | first_picture_ms | load_ms | rss_mb |"
-echo "|---|---|---|---|---|---|---|---|---|---|"
+echo "| length_m | view | sections | segments | triangles_full | triangles_drawn | nodes_traversed | frame_ms | first_picture_ms | load_ms | rss_mb |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|"
 for length in "${lengths[@]}"; do
   log="$work/well_${length}m.txt"
   [ -f "$log" ] || "$bin" synth -o "$log" --length "$length" --step 0.0025 >/dev/null
@@ -27,7 +27,7 @@ for length in "${lengths[@]}"; do
     segments=$(printf '%s' "$well" | sed -E 's/.* ([0-9]+) segments.*/\1/')
     full=$(printf '%s' "$well" | sed -E 's/.* ([0-9]+) triangles at full detail.*/\1/')
     value() { printf '%s' "$stats" | sed -E "s/.*$1=([0-9.]+).*/\\1/"; }
-    echo "| $length | $view | $sections | $segments | $full | $(value triangles_drawn) | $(value frame_ms) | $(value first_picture_ms) | $(value load_ms) | $(value rss_mb) |"
+    echo "| $length | $view | $sections | $segments | $full | $(value triangles_drawn) | $(value nodes_traversed) | $(value frame_ms) | $(value first_picture_ms) | $(value load_ms) | $(value rss_mb) |"
   done
 done
 [ -n "${SCENE_BENCH_DIR:-}" ] || rm -rf "$work"

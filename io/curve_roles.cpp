@@ -145,6 +145,16 @@ RoleGuess guessRole(std::string_view mnemonic) {
     if (startsWith(m, "F")) {
         if (int n = numberAfter(m, 1, false)) return {CurveRole::Finger, n};
     }
+    // Elements of an array channel named for its radii or fingers as a whole (DLIS and LAS
+    // 3.0 arrays: "RADI[7]", "FINGERS[40]").
+    const std::size_t bracket = m.find('[');
+    if (bracket != std::string::npos && bracket > 0) {
+        const std::string base = m.substr(0, bracket);
+        const int n = numberAfter(m, bracket, false);
+        if (n && (base == "RADI" || base == "RADII" || base == "RADS" || base == "RADIUS"))
+            return {CurveRole::Radius, n};
+        if (n && (base == "FINGERS" || base == "FINGER")) return {CurveRole::Finger, n};
+    }
     // DIab: the diameter between pads a and b of a tool with 2 (b - a) pads (Weatherford
     // CMI: DI15, DI26, DI37, DI48, "Imager Diameter 2 - 6").
     if (m.size() == 4 && m[0] == 'D' && m[1] == 'I' && m[2] >= '1' && m[2] <= '9' && m[3] > m[2] &&

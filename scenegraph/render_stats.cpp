@@ -3,6 +3,7 @@
 #include <sys/resource.h>
 
 #include <Inventor/SbViewportRegion.h>
+#include <Inventor/actions/SoCallbackAction.h>
 #include <Inventor/actions/SoGetPrimitiveCountAction.h>
 #include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/nodes/SoCamera.h>
@@ -45,6 +46,22 @@ std::size_t trianglesDrawn(SoNode* root, int width, int height) {
         SbViewportRegion(static_cast<short>(width), static_cast<short>(height)));
     count.apply(root);
     return static_cast<std::size_t>(count.getTriangleCount());
+}
+
+std::size_t nodesTraversed(SoNode* root, int width, int height) {
+    assertMainThread("nodesTraversed");
+    SoCallbackAction action(
+        SbViewportRegion(static_cast<short>(width), static_cast<short>(height)));
+    std::size_t nodes = 0;
+    action.addPreCallback(
+        SoNode::getClassTypeId(),
+        [](void* count, SoCallbackAction*, const SoNode*) {
+            ++*static_cast<std::size_t*>(count);
+            return SoCallbackAction::CONTINUE;
+        },
+        &nodes);
+    action.apply(root);
+    return nodes;
 }
 
 double peakRss_mb() {

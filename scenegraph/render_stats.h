@@ -17,6 +17,11 @@ float fogVisibility(SoNode* root);
 // child from the camera as when rendering (SoGetPrimitiveCountAction).
 std::size_t trianglesDrawn(SoNode* root, int width, int height);
 
+// Nodes a render of `root` at width x height visits: every node of the graph on the way, but
+// of each SoLOD only the child it picks from the camera (SoCallbackAction, which switches
+// level of detail as rendering does). What a frame costs beside its triangles.
+std::size_t nodesTraversed(SoNode* root, int width, int height);
+
 // Peak resident memory of this process, MiB (getrusage).
 double peakRss_mb();
 

@@ -87,8 +87,8 @@ struct Attribute {
     // The i-th value as a number (the first component of a compound); NaN when there is
     // none or it is not a number.
     double number(std::size_t i = 0) const;
-    // The i-th value as text (numbers written shortest, names by identifier, trailing
-    // blanks dropped); "" when none.
+    // The i-th value as text (numbers written shortest, names by identifier, leading
+    // and trailing blanks dropped); "" when none.
     std::string text(std::size_t i = 0) const;
 };
 

@@ -240,7 +240,7 @@ public:
                                         " is an array of more than one dimension (an image) or of "
                                         "text; listed, not read");
         for (std::size_t j = 0; j < file.frames.size(); ++j)
-            if (j != choice.frame)
+            if (j != choice.frame && file.frames[j].records > 0)
                 m_info.diagnostics.warn(m_name, 0,
                                         "frame " + file.frames[j].name.id +
                                             " of the same logical file is not read "

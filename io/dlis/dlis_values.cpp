@@ -294,8 +294,9 @@ std::string Attribute::text(std::size_t i) const {
     }
     if (const auto* s = std::get_if<std::string>(&v)) {
         // Producers pad fixed-width texts with blanks.
-        const std::size_t end = s->find_last_not_of(' ');
-        return end == std::string::npos ? std::string() : s->substr(0, end + 1);
+        const std::size_t begin = s->find_first_not_of(' ');
+        if (begin == std::string::npos) return std::string();
+        return s->substr(begin, s->find_last_not_of(' ') + 1 - begin);
     }
     if (const auto* n = std::get_if<ObjectName>(&v)) return n->id;
     if (const auto* r = std::get_if<ObjectRef>(&v)) return r->name.id;

@@ -6,9 +6,11 @@
 #include <vector>
 
 #include <Inventor/actions/SoGetPrimitiveCountAction.h>
+#include <Inventor/nodes/SoCube.h>
 #include <Inventor/nodes/SoLOD.h>
 #include <Inventor/nodes/SoPerspectiveCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
+#include <Inventor/nodes/SoSphere.h>
 
 #include <glm/geometric.hpp>
 
@@ -189,4 +191,25 @@ TEST_F(LevelOfDetailTest, PartsNearTheEyeDrawEverySectionAndFartherPartsTheReduc
     auto* first = static_cast<SoLOD*>(static_cast<SoGroup*>(lod->getChild(0))->getChild(0));
     EXPECT_FLOAT_EQ(first->range[0],
                     scenegraph::partSwitchDistance(part, segment.partError_mm, tall));
+}
+
+TEST_F(LevelOfDetailTest, NodesTraversedCountsOnlyTheChildEachLodPicks) {
+    // root: camera, LOD { near: separator of two cubes, far: one sphere } switching at 10 m.
+    auto root = scenegraph::makeRef(new SoSeparator);
+    auto* camera = new SoPerspectiveCamera;
+    root->addChild(camera);
+    auto* lod = new SoLOD;
+    lod->range.setValue(10.0f);
+    auto* near = new SoSeparator;
+    near->addChild(new SoCube);
+    near->addChild(new SoCube);
+    lod->addChild(near);
+    lod->addChild(new SoSphere);
+    root->addChild(lod);
+    camera->position.setValue(0.0f, 0.0f, 5.0f);
+    camera->pointAt(SbVec3f(0, 0, 0));
+    EXPECT_EQ(scenegraph::nodesTraversed(root.get(), 1280, 800),
+              6u);  // root camera lod sep 2 cubes
+    camera->position.setValue(0.0f, 0.0f, 50.0f);
+    EXPECT_EQ(scenegraph::nodesTraversed(root.get(), 1280, 800), 4u);  // root camera lod sphere
 }
