@@ -92,8 +92,18 @@ TEST(DlisCommandTest, InfoNamesTheWellArmsDepthsAndBitSize) {
 TEST(DlisCommandTest, ReportFindsTheEllipseAndItsMajorAxis) {
     const dlis::SixArmShape shape = sixArmShape();
     const auto csv = scratch("dlis_cli_six_arm.csv");
-    const CommandRun r = runCaliper3d("report " + sixArmFile() + " -o " + csv.string());
+    const auto zones = scratch("dlis_cli_six_arm_zones.csv");
+    const CommandRun r = runCaliper3d("report " + sixArmFile() + " -o " + csv.string() +
+                                      " --zones " + zones.string());
     ASSERT_EQ(r.status, 0) << r.output;
+    // One breakout zone over the whole log, its mean axis the ellipse's (zones of at least
+    // 1 m of breakout sections, docs/analysis.md).
+    const Csv zoneTable = readCsv(zones);
+    ASSERT_EQ(zoneTable.rows.size(), 1u) << r.output;
+    EXPECT_EQ(zoneTable.rows[0].at("kind"), "breakout");
+    EXPECT_NEAR(zoneTable.number(0, "top_m"), shape.depth_m(0), 0.01);
+    EXPECT_NEAR(zoneTable.number(0, "bottom_m"), shape.depth_m(shape.rows - 1), 0.2);
+    EXPECT_NEAR(zoneTable.number(0, "mean_azimuth_deg"), shape.majorAzimuth_deg, 1.5);
     const Csv report = readCsv(csv);
     ASSERT_EQ(report.rows.size(), shape.rows) << r.output;
     for (std::size_t i = 0; i < report.rows.size(); ++i) {
