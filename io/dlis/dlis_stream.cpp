@@ -153,7 +153,7 @@ std::vector<std::string> describeIndex(const DlisIndex& index, std::size_t chose
             const Frame& fr = f.frames[j];
             std::string line = "  frame " + fr.name.id +
                                (i == chosenFile && j == chosenFrame ? " (read)" : "") + ": " +
-                               std::to_string(fr.records) + " frames, " +
+                               std::to_string(fr.records) + " frame records, " +
                                std::to_string(fr.channels.size()) + " channels";
             if (!fr.indexType.empty()) line += ", index " + fr.indexType;
             if (!fr.direction.empty()) line += " " + fr.direction;
