@@ -1,6 +1,7 @@
 // Reading speed and peak memory of the log readers on a 4 km well at 2.5 mm
-// sampling (1.6 M rows), as column text and as LAS 2.0, against a plain
-// single-thread std::from_chars loop over the same file (the practical limit).
+// sampling (1.6 M rows), as column text, as LAS 2.0 and as DLIS (RP66 v1, written by
+// the tests' DLIS writer), against a plain single-thread std::from_chars loop over the
+// same text file (the practical limit; for DLIS, reading the file's bytes and summing them).
 //
 //   io_read_bench [--length M] [--step M] [--dir DIR] [--threads N] [--repeat N] [--keep 1]
 //                 [--reuse 1]   (read the files a kept run wrote instead of writing them again)
@@ -26,6 +27,7 @@
 #include "io/las_writer.h"
 #include "io/log_reader.h"
 #include "reconstruction/synthetic/synthetic_well.h"
+#include "support/dlis_writer.h"
 
 namespace {
 
@@ -73,9 +75,65 @@ int readOne(const std::string& path, int threads) {
     return 0;
 }
 
+bool isDlis(const std::string& path) {
+    return path.size() > 5 && path.substr(path.size() - 5) == ".dlis";
+}
+
+// A binary file's practical limit: the same big reads, every byte summed.
+int plainBytes(const std::string& path) {
+    const auto start = Clock::now();
+    std::FILE* f = std::fopen(path.c_str(), "rb");
+    if (!f) return 1;
+    std::vector<unsigned char> buffer(8u << 20);
+    std::size_t bytes = 0;
+    unsigned long long sum = 0;
+    for (std::size_t got; (got = std::fread(buffer.data(), 1, buffer.size(), f)) > 0;) {
+        for (std::size_t i = 0; i < got; ++i) sum += buffer[i];
+        bytes += got;
+    }
+    std::fclose(f);
+    const double s = seconds(start, Clock::now());
+    const double mb = static_cast<double>(bytes) / 1e6;
+    std::printf("RESULT plain %.4f s %.1f MB/s bytes %zu (sum %llu) peak %.1f MiB cpu %.3f s\n", s,
+                mb / s, bytes, sum, peakMiB(), cpuSeconds());
+    return 0;
+}
+
+// The 4 km well as one DLIS frame: DEPT (m, FDOUBL), R1..RN (mm), P1AZ, DEVI, HAZI, RB
+// (deg) and BS (mm) as FSINGL, as a logging company writes a caliper.
+void writeDlisWell(const std::string& path, const caliper3d::io::SectionTable& t) {
+    namespace dlis = caliper3d::test::dlis;
+    dlis::LogicalFileSpec file;
+    file.fileId = "IO BENCH";
+    file.wellName = t.wellName.empty() ? "CALIPER3D" : t.wellName;
+    dlis::FrameSpec frame;
+    frame.channels.push_back({"DEPT", "m", "Depth", dlis::FDOUBL, {1}});
+    for (int k = 1; k <= t.armCount; ++k)
+        frame.channels.push_back({"R" + std::to_string(k), "mm", "Radius", dlis::FSINGL, {1}});
+    const std::pair<const char*, const std::vector<double>*> optional[] = {{"P1AZ", &t.p1az_deg},
+                                                                           {"DEVI", &t.devi_deg},
+                                                                           {"HAZI", &t.hazi_deg},
+                                                                           {"RB", &t.rb_deg},
+                                                                           {"BS", &t.bitSize_mm}};
+    for (const auto& [name, values] : optional)
+        if (!values->empty())
+            frame.channels.push_back(
+                {name, std::string(name) == "BS" ? "mm" : "deg", name, dlis::FSINGL, {1}});
+    frame.values.reserve(t.rowCount() * frame.width());
+    for (std::size_t row = 0; row < t.rowCount(); ++row) {
+        frame.values.push_back(t.depth_m[row]);
+        for (int k = 0; k < t.armCount; ++k) frame.values.push_back(t.radii(row)[k]);
+        for (const auto& [name, values] : optional)
+            if (!values->empty()) frame.values.push_back((*values)[row]);
+    }
+    file.frames.push_back(std::move(frame));
+    dlis::writeDlisFile(path, {file});
+}
+
 // The practical limit: the same big reads, every number parsed with
 // std::from_chars, nothing stored.
 int plainLoop(const std::string& path) {
+    if (isDlis(path)) return plainBytes(path);
     const auto start = Clock::now();
     std::FILE* f = std::fopen(path.c_str(), "rb");
     if (!f) return 1;
@@ -215,40 +273,52 @@ int main(int argc, char** argv) {
     if (!plainPath.empty()) return plainLoop(plainPath);
 
     std::filesystem::create_directories(dir);
-    const std::string text = dir + "/well.txt", las = dir + "/well.las";
-    if (!(reuse && std::filesystem::exists(text) && std::filesystem::exists(las))) {
+    const std::string text = dir + "/well.txt", las = dir + "/well.las",
+                      dlisFile = dir + "/well.dlis";
+    if (!(reuse && std::filesystem::exists(text) && std::filesystem::exists(las) &&
+          std::filesystem::exists(dlisFile))) {
         const auto start = Clock::now();
         const caliper3d::io::SectionTable well = caliper3d::reconstruction::makeSyntheticWell(
             caliper3d::reconstruction::syntheticProfile("example", length, step));
         caliper3d::io::writeColumnTextFile(text, well, caliper3d::io::LengthUnit::Millimetre);
         caliper3d::io::writeLasFile(las, well);
-        std::printf("wrote %zu rows: %s (%.1f MB), %s (%.1f MB) in %.1f s\n", well.rowCount(),
-                    text.c_str(), static_cast<double>(std::filesystem::file_size(text)) / 1e6,
-                    las.c_str(), static_cast<double>(std::filesystem::file_size(las)) / 1e6,
+        writeDlisWell(dlisFile, well);
+        std::printf("wrote %zu rows: %s (%.1f MB), %s (%.1f MB), %s (%.1f MB) in %.1f s\n",
+                    well.rowCount(), text.c_str(),
+                    static_cast<double>(std::filesystem::file_size(text)) / 1e6, las.c_str(),
+                    static_cast<double>(std::filesystem::file_size(las)) / 1e6, dlisFile.c_str(),
+                    static_cast<double>(std::filesystem::file_size(dlisFile)) / 1e6,
                     seconds(start, Clock::now()));
     }
     // Each measurement `repeat` times, interleaved so that load from other jobs
     // falls on all three alike; best and median reported.
-    for (const std::string& file : {text, las}) {
+    for (const std::string& file : {text, las, dlisFile}) {
         runChild(argv[0], "--plain " + file);  // warm the page cache
         const std::string commands[3] = {"--plain " + file,
                                          "--read " + file + " --threads " + std::to_string(threads),
                                          "--read " + file + " --threads 1"};
-        const char* labels[3] = {"plain from_chars loop", "", "reader, 1 thread"};
+        const char* labels[3] = {
+            isDlis(file) ? "plain read, bytes summed" : "plain from_chars loop", "",
+            "reader, 1 thread"};
         std::vector<Run> runs[3];
         for (int i = 0; i < repeat; ++i)
             for (int k = 0; k < 3; ++k) runs[k].push_back(parseRun(runChild(argv[0], commands[k])));
         std::printf("%s (%.1f MB), %d runs each\n", file.c_str(),
                     static_cast<double>(std::filesystem::file_size(file)) / 1e6, repeat);
+        // The files differ in size (DLIS is binary): the median seconds per read compare them.
+        const double megabytes = static_cast<double>(std::filesystem::file_size(file)) / 1e6;
         Summary summary[3];
         for (int k = 0; k < 3; ++k) {
             summary[k] = summarise(runs[k]);
             const std::string label =
                 k == 1 ? "reader, " + std::to_string(threads) + " threads" : labels[k];
             std::printf(
-                "  %-22s best %6.1f MB/s  median %6.1f  worst %6.1f  cpu %.3f s  peak %.1f MiB%s\n",
-                label.c_str(), summary[k].best, summary[k].median, summary[k].worst, summary[k].cpu,
-                summary[k].peak, k == 0 ? "" : (" (" + summary[k].ratioText + ")").c_str());
+                "  %-24s best %6.1f MB/s  median %6.1f (%.3f s)  worst %6.1f  cpu %.3f s  peak "
+                "%.1f "
+                "MiB%s\n",
+                label.c_str(), summary[k].best, summary[k].median, megabytes / summary[k].median,
+                summary[k].worst, summary[k].cpu, summary[k].peak,
+                k == 0 ? "" : (" (" + summary[k].ratioText + ")").c_str());
         }
         std::printf(
             "  reader / plain: best %.2f, median %.2f (%d threads); best %.2f, median %.2f (1 "
@@ -259,6 +329,7 @@ int main(int argc, char** argv) {
     if (!keep) {
         std::filesystem::remove(text);
         std::filesystem::remove(las);
+        std::filesystem::remove(dlisFile);
     }
     return 0;
 }
