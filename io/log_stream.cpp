@@ -441,7 +441,8 @@ LogInfo streamCaliperLog(const std::string& path, const ReadOptions& options,
         start.resize(head.read(start.data(), start.size()));
         if (dlis::looksLikeDlis(start)) {
             const MappedFile file(path);
-            return streamDlis(file.bytes(), path, options, consumer, stream);
+            return streamDlis(file.bytes(), path, options, consumer, stream,
+                              [&file](std::size_t end) { file.release(end); });
         }
     }
     FileSource source(path);

@@ -34,11 +34,13 @@ int roleOf(std::uint8_t descriptor) {
 
 // Reads an attribute component whose descriptor is `descriptor`; what it leaves out is
 // taken from `defaults` (the template's attribute, or the standard's defaults).
-Attribute readAttribute(Cursor& c, std::uint8_t descriptor, const Attribute& defaults) {
+Attribute readAttribute(Cursor& c, std::uint8_t descriptor, const Attribute& defaults,
+                        bool inObject = false) {
     Attribute a = defaults;
     a.absent = false;
-    a.invariant = roleOf(descriptor) == kInvariantAttribute;
-    if (descriptor & 0x10) a.label = c.ident();
+    a.invariant = !inObject && roleOf(descriptor) == kInvariantAttribute;
+    // An object's attributes have no label (RP66 v1 3.2.2.2): a set label flag is ignored.
+    if ((descriptor & 0x10) && !inObject) a.label = c.ident();
     const bool countGiven = (descriptor & 0x08) != 0, codeGiven = (descriptor & 0x04) != 0;
     if (countGiven) a.count = c.uvari();
     if (codeGiven) a.repCode = c.ushort();
@@ -59,7 +61,7 @@ Attribute readAttribute(Cursor& c, std::uint8_t descriptor, const Attribute& def
     return a;
 }
 
-Set readSet(const LogicalRecord& record) {
+Set readSet(const LogicalRecord& record, std::vector<std::string>& notes) {
     Cursor c(record.body, record.size);
     Set set;
     set.recordType = record.type;
@@ -71,13 +73,18 @@ Set readSet(const LogicalRecord& record) {
             0, "expected a set component, found a component of role " + std::to_string(role));
     set.redundant = role == kRedundantSet;
     set.replacement = role == kReplacementSet;
-    if (!(head & 0x10)) throw BodyError(0, "expected the set's type, found none");
+    // The type is mandatory: a set without its flag still holds it.
+    if (!(head & 0x10)) notes.push_back("set type flag not set; type read anyway");
     set.type = c.ident();
     if (head & 0x08) set.name = c.ident();
     // The template: attribute components up to the first object.
     while (!c.atEnd() && roleOf(c.peek()) != kObject) {
         const std::uint8_t d = c.ushort();
         const int r = roleOf(d);
+        if (r == kAbsentAttribute) {
+            notes.push_back("absent attribute in the template of " + set.type + "; ignored");
+            continue;
+        }
         if (r != kAttribute && r != kInvariantAttribute)
             throw BodyError(c.position() - 1,
                             "expected an attribute in the set's template, found "
@@ -91,8 +98,7 @@ Set readSet(const LogicalRecord& record) {
             throw BodyError(c.position() - 1, "expected an object, found a component of role " +
                                                   std::to_string(roleOf(d)));
         Object object;
-        if (!(d & 0x10))
-            throw BodyError(c.position() - 1, "expected the object's name, found none");
+        if (!(d & 0x10)) notes.push_back("object name flag not set; name read anyway");
         object.name = c.obname();
         for (const Attribute& t : set.templ) {
             if (t.invariant) {
@@ -110,8 +116,11 @@ Set readSet(const LogicalRecord& record) {
                 absent.label = t.label;
                 absent.absent = true;
                 object.attributes.push_back(absent);
-            } else if (r == kAttribute) {
-                Attribute a = readAttribute(c, ad, t);
+            } else if (r == kAttribute || r == kInvariantAttribute) {
+                if (r == kInvariantAttribute || (ad & 0x10))
+                    notes.push_back("attribute " + t.label + " of object " + object.name.id +
+                                    " has an invariant or label flag; read as an attribute");
+                Attribute a = readAttribute(c, ad, t, true);
                 a.label = t.label;
                 object.attributes.push_back(std::move(a));
             } else {
@@ -250,8 +259,12 @@ void countFrameRecord(const LogicalRecord& record, LogicalFile& file, FrameCount
 
 void readEflr(const LogicalRecord& record, LogicalFile& file, const std::string& name,
               Diagnostics* diagnostics) {
+    std::vector<std::string> notes;
     try {
-        file.sets.push_back(readSet(record));
+        file.sets.push_back(readSet(record, notes));
+        if (diagnostics)
+            for (const std::string& n : notes)
+                diagnostics->warn(name, 0, "byte " + std::to_string(record.offset) + ": " + n);
         if (file.sets.back().type == "FILE-HEADER")
             for (const Object& o : file.sets.back().objects)
                 if (const Attribute* id = o.attribute("ID")) file.id = id->text();
@@ -406,21 +419,29 @@ void readFrames(std::string_view bytes, const std::string& name, const DlisIndex
             if (record.explicitlyFormatted || record.encrypted || record.type != kFrameData)
                 continue;
             Cursor c(record.body, record.size);
-            bool whole = false;
-            std::uint32_t number = 0;
             try {
                 if (c.obname() != frame.name) continue;
-                number = c.uvari();
-                std::fill(values.begin(), values.end(), std::numeric_limits<double>::quiet_NaN());
-                whole = decodeFrame(c, slots, values.data());
             } catch (const BodyError&) {
-                whole = false;
-            }
-            if (!whole) {
-                if (shortRecords++ == 0) firstShort = record.offset;
+                if (shortRecords++ == 0) firstShort = record.offset;  // its name cut short
                 continue;
             }
-            if (!consumer(number, values.data(), record.offset)) break;
+            // A record may hold several frames, each its number and its values.
+            bool whole = true, stop = false;
+            do {
+                std::uint32_t number = 0;
+                try {
+                    number = c.uvari();
+                    std::fill(values.begin(), values.end(),
+                              std::numeric_limits<double>::quiet_NaN());
+                    whole = decodeFrame(c, slots, values.data());
+                } catch (const BodyError&) {
+                    whole = false;
+                }
+                if (!whole) break;
+                if (!consumer(number, values.data(), record.offset)) stop = true;
+            } while (!stop && !c.atEnd());
+            if (!whole && shortRecords++ == 0) firstShort = record.offset;
+            if (stop) break;
         }
     } catch (const EnvelopeError& e) {
         if (diagnostics)

@@ -127,6 +127,11 @@ void RecordStream::unwrapTapeImage() {
         previous = at;
         at = next;
     }
+    if (at < m_data.size() && at + kTapeMarkBytes > m_data.size() &&
+        !std::all_of(m_data.begin() + static_cast<std::ptrdiff_t>(at), m_data.end(),
+                     [](char c) { return c == 0; }))
+        warnAtFileByte(at, "tape-image mark cut short: " + std::to_string(m_data.size() - at) +
+                               " of its " + std::to_string(kTapeMarkBytes) + " bytes");
     m_data = m_unwrapped;
 }
 
@@ -330,10 +335,14 @@ bool RecordStream::next(LogicalRecord& record) {
                                     "logical record at byte " + std::to_string(record.offset) +
                                         " cut short: its next segment is missing");
             single = false;
-            if (!(attributes & 0x40) || (attributes & 0x80) != (previousAttributes & 0x80) ||
-                type != previousType) {
+            if (!(attributes & 0x40) || (attributes & 0x80) != (previousAttributes & 0x80)) {
                 damaged = true;
-                problem = "its segments disagree on the record's type or order";
+                problem = "its segments disagree on the record's form or order";
+            } else if (type != previousType) {
+                warn(start, "segment of type " + std::to_string(type) +
+                                " continues a record of type " + std::to_string(previousType) +
+                                "; read as type " + std::to_string(previousType));
+                type = previousType;
             }
         }
         if (!single && !damaged && !record.encrypted) {

@@ -153,7 +153,7 @@ std::vector<std::string> describeIndex(const DlisIndex& index, std::size_t chose
             const Frame& fr = f.frames[j];
             std::string line = "  frame " + fr.name.id +
                                (i == chosenFile && j == chosenFrame ? " (read)" : "") + ": " +
-                               std::to_string(fr.records) + " frames, " +
+                               std::to_string(fr.records) + " frame records, " +
                                std::to_string(fr.channels.size()) + " channels";
             if (!fr.indexType.empty()) line += ", index " + fr.indexType;
             if (!fr.direction.empty()) line += " " + fr.direction;
@@ -215,17 +215,20 @@ std::optional<FrameChoice> bestFrame(const DlisIndex& index, std::size_t file,
 class DlisStreamer {
 public:
     DlisStreamer(std::string_view bytes, std::string name, const ReadOptions& options,
-                 const ChunkConsumer& consumer, const StreamOptions& stream)
+                 const ChunkConsumer& consumer, const StreamOptions& stream,
+                 const std::function<void(std::size_t)>& release)
         : m_bytes(bytes),
           m_name(std::move(name)),
           m_options(options),
           m_consumer(consumer),
-          m_stream(stream) {
+          m_stream(stream),
+          m_release(release) {
         m_info.file = m_name;
     }
 
     LogInfo run() {
         const DlisIndex index = dlis::indexDlis(m_bytes, m_name, &m_info.diagnostics);
+        if (m_release) m_release(m_bytes.size());  // read again from the start for the frames
         const FrameChoice choice = choose(index);
         const LogicalFile& file = index.files[choice.file];
         const Frame& frame = file.frames[choice.frame];
@@ -359,6 +362,7 @@ private:
                 ordinals.push_back(ordinal);
                 if (rows.rowCount() >= m_stream.chunkRows) {
                     flush();
+                    if (m_release) m_release(offset);
                     if (cancelled()) return false;
                 }
                 return true;
@@ -407,6 +411,7 @@ private:
     const ReadOptions& m_options;
     const ChunkConsumer& m_consumer;
     const StreamOptions& m_stream;
+    const std::function<void(std::size_t)>& m_release;
     LogInfo m_info;
     RowTally m_tally;
     std::vector<std::size_t> m_nulls;
@@ -415,8 +420,9 @@ private:
 }  // namespace
 
 LogInfo streamDlis(std::string_view bytes, const std::string& name, const ReadOptions& options,
-                   const ChunkConsumer& consumer, const StreamOptions& stream) {
-    return DlisStreamer(bytes, name, options, consumer, stream).run();
+                   const ChunkConsumer& consumer, const StreamOptions& stream,
+                   const std::function<void(std::size_t end)>& release) {
+    return DlisStreamer(bytes, name, options, consumer, stream, release).run();
 }
 
 }  // namespace caliper3d::io

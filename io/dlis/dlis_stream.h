@@ -1,5 +1,7 @@
 #pragma once
 
+#include <cstddef>
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -15,7 +17,10 @@ namespace caliper3d::io {
 // frame that holds the most arms. Array channels become columns NAME[1]..NAME[n]; arrays
 // of more than one dimension are listed, not read. `info.details` describes the file.
 // Throws ParseError naming `name` and a byte offset for what cannot be read.
+// `release`, when given, is told the byte before which the file will not be read again
+// (after the index, then as the frames are read), so that a mapped file's pages may go.
 LogInfo streamDlis(std::string_view bytes, const std::string& name, const ReadOptions& options,
-                   const ChunkConsumer& consumer, const StreamOptions& stream);
+                   const ChunkConsumer& consumer, const StreamOptions& stream,
+                   const std::function<void(std::size_t end)>& release = {});
 
 }  // namespace caliper3d::io

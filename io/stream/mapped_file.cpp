@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 
@@ -39,6 +40,14 @@ MappedFile::MappedFile(const std::string& path) {
 #endif
     }
     ::close(fd);
+}
+
+void MappedFile::release(std::size_t end) const {
+    const long page = ::sysconf(_SC_PAGESIZE);
+    if (!m_data || page <= 0) return;
+    end = std::min(end, m_size) / static_cast<std::size_t>(page) * static_cast<std::size_t>(page);
+    // A private read-only file mapping: the pages are dropped, never written back.
+    if (end > 0) ::madvise(m_data, end, MADV_DONTNEED);
 }
 
 MappedFile::~MappedFile() {

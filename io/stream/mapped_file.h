@@ -18,6 +18,10 @@ public:
     MappedFile& operator=(const MappedFile&) = delete;
 
     std::string_view bytes() const { return {static_cast<const char*>(m_data), m_size}; }
+    // Gives back the pages of bytes [0, end) read so far: they leave the resident set and are
+    // read again from the file if touched again (a reader that has done with them keeps its
+    // memory to what it parsed).
+    void release(std::size_t end) const;
 
 private:
     void* m_data = nullptr;
