@@ -90,6 +90,7 @@ LoadedLog loadCaliperLog(const std::string& path, const ReadOptions& options,
         },
         stream);
     loaded.table.source = path;
+    loaded.table.wellName = loaded.info.wellName;
     loaded.table.casing = options.casing.empty() ? loaded.info.casing : options.casing;
     return loaded;
 }
@@ -102,6 +103,7 @@ LoadedLog loadCaliperText(std::string_view text, const std::string& name,
         },
         stream);
     loaded.table.source = name;
+    loaded.table.wellName = loaded.info.wellName;
     loaded.table.casing = options.casing.empty() ? loaded.info.casing : options.casing;
     return loaded;
 }

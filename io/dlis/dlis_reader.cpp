@@ -334,7 +334,8 @@ DlisIndex indexDlis(std::string_view bytes, const std::string& name, Diagnostics
             diagnostics->warn(
                 name, 0,
                 "byte " + std::to_string(f.offset) + ": " + std::to_string(f.encryptedRecords) +
-                    " encrypted records skipped in logical file " + std::to_string(i + 1));
+                    (f.encryptedRecords == 1 ? " encrypted record" : " encrypted records") +
+                    " skipped in logical file " + std::to_string(i + 1));
     }
     return index;
 }

@@ -51,11 +51,21 @@ bool tapeMarkAt(std::string_view d, std::size_t at, std::size_t previous) {
     return type <= 1 && prev == previous && next >= at + kTapeMarkBytes;
 }
 
+// The first mark of a tape image: a mark whose record ends within the file, or is followed by
+// a label, a visible record or another mark (so that NUL bytes of leading garbage are not
+// taken for one).
+bool tapeImageAt(std::string_view d) {
+    if (!tapeMarkAt(d, 0, 0)) return false;
+    const std::size_t next = le32(bytesOf(d) + 8);
+    return next <= d.size() || labelAt(d, kTapeMarkBytes) ||
+           looksLikeVisibleRecord(d, kTapeMarkBytes) || tapeMarkAt(d, kTapeMarkBytes, 0);
+}
+
 }  // namespace
 
 bool looksLikeDlis(std::string_view start) {
     // A tape-image mark (NUL bytes a text never starts with) wraps nothing but DLIS here.
-    if (tapeMarkAt(start, 0, 0)) return true;
+    if (tapeImageAt(start)) return true;
     const std::size_t from = 0;
     const std::size_t last = std::min(start.size(), from + kSearchBytes);
     for (std::size_t at = from; at <= last && at + 15 <= start.size(); ++at)
@@ -73,7 +83,7 @@ bool looksLikeDlis(std::string_view start) {
 RecordStream::RecordStream(std::string_view bytes, const std::string& name,
                            Diagnostics* diagnostics)
     : m_data(bytes), m_name(name), m_diagnostics(diagnostics) {
-    if (tapeMarkAt(m_data, 0, 0)) unwrapTapeImage();
+    if (tapeImageAt(m_data)) unwrapTapeImage();
     findLabel();
 }
 

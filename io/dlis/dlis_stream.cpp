@@ -8,6 +8,7 @@
 #include <optional>
 #include <sstream>
 
+#include "io/azimuth_north.h"
 #include "io/curve_plan.h"
 #include "io/dlis/dlis_reader.h"
 #include "io/las_header.h"
@@ -55,7 +56,9 @@ FrameColumns frameColumns(const LogicalFile& file, const Frame& frame) {
         const auto [scale, unit] = scaledUnit(ch.units);
         const std::size_t n = ch.elements();
         const bool oneDimension = ch.dimension.size() == 1 && n >= 1 && n <= kMaxArms;
-        if (!oneDimension || dlis::repCodeSize(ch.repCode) == 0) {
+        const bool number = dlis::repCodeSize(ch.repCode) > 0 || ch.repCode == dlis::kUVARI ||
+                            ch.repCode == dlis::kORIGIN;
+        if (!oneDimension || !number) {
             out.notRead.push_back(ch.name.id);
             continue;
         }
@@ -233,6 +236,8 @@ public:
         const LogicalFile& file = index.files[choice.file];
         const Frame& frame = file.frames[choice.frame];
         const LogLayout layout = lasLayout(choice.header, m_name, m_options, m_info);
+        m_info.north =
+            readAzimuthNorth(&choice.header, layout.columns, layout.plan, &m_info.diagnostics);
         m_info.format = "DLIS (RP66 " + index.version + "), logical file " +
                         std::to_string(choice.file + 1) + " of " +
                         std::to_string(index.files.size()) + ", frame " + frame.name.id;

@@ -1,5 +1,6 @@
 // The representation codes of RP66 v1, Appendix B. Written here rather than taken from a
 // library: no DLIS library is packaged for Debian (the open one, dlisio, is not).
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -324,9 +325,19 @@ const Channel* LogicalFile::channel(const ObjectName& name) const {
 
 std::vector<const Object*> LogicalFile::objects(std::string_view type) const {
     std::vector<const Object*> out;
-    for (const Set& s : sets)
-        if (s.type == type)
-            for (const Object& o : s.objects) out.push_back(&o);
+    for (const Set& s : sets) {
+        // A redundant set repeats objects already given; a replacement set's objects stand
+        // for the earlier ones of the same name (RP66 v1 3.2.2.1).
+        if (s.type != type || s.redundant) continue;
+        for (const Object& o : s.objects) {
+            auto same = std::find_if(out.begin(), out.end(),
+                                     [&](const Object* p) { return p->name == o.name; });
+            if (s.replacement && same != out.end())
+                *same = &o;
+            else
+                out.push_back(&o);
+        }
+    }
     return out;
 }
 
