@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "io/atomic_output.h"
 #include "io/casing_program.h"
 #include "io/dlis/dlis_reader.h"
 #include "io/log_reader.h"
@@ -41,8 +42,9 @@ std::string write(const std::string& name, const std::vector<dlis::LogicalFileSp
 
 std::string writeBytes(const std::string& name, const std::string& bytes) {
     std::string path = scratch(name).string();
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    caliper3d::io::AtomicOutput out(path);  // whole, for tests that run at once
+    out.stream().write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    out.commit();
     return path;
 }
 

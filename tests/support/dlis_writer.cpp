@@ -1,5 +1,7 @@
 #include "support/dlis_writer.h"
 
+#include "io/atomic_output.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -706,9 +708,10 @@ std::string writeDlis(const std::vector<LogicalFileSpec>& files, const WriteOpti
 void writeDlisFile(const std::string& path, const std::vector<LogicalFileSpec>& files,
                    const WriteOptions& options) {
     const std::string bytes = writeDlis(files, options);
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    if (!out) throw std::runtime_error(path + ": cannot be written");
+    // Whole or not at all: tests running at once may write and read the same fixture.
+    io::AtomicOutput out(path);
+    out.stream().write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    out.commit();
 }
 
 Layout checkLayout(const std::string& input) {
