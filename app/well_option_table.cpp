@@ -270,7 +270,8 @@ void orientationRows(Rows& rows) {
 }
 
 // How a file is read: its rows, nulls and bit size.
-void fileRows(Rows& rows) {
+// Which rows and which run of the file are read.
+void layoutRows(Rows& rows) {
     WellOption& rowStep = rows.add(
         "row-step", "METRES", G::Reading,
         "Depth step per row of a radii-only text file, metres (default 0.01).",
@@ -298,7 +299,10 @@ void fileRows(Rows& rows) {
     logicalFile.column = "logical_file";
     logicalFile.field = "DLIS logical file";
     logicalFile.blank = "the first with caliper curves";
+}
 
+// How the file's data are read: nulls, bit size, casing.
+void fileRows(Rows& rows) {
     rows.add(
             "nulls", "declared|common", G::Reading,
             "Null values: declared (the file's NULL) or common (also -999.25, -9999, 9999, ERR, "
@@ -649,6 +653,7 @@ std::vector<WellOption> makeTable() {
     rows.list.reserve(40);  // a row is finished through a reference before the next is added
     curveRows(rows);
     orientationRows(rows);
+    layoutRows(rows);
     fileRows(rows);
     northRows(rows);
     geometryRows(rows);

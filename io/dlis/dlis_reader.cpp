@@ -74,7 +74,7 @@ Set readSet(const LogicalRecord& record, std::vector<std::string>& notes) {
     set.redundant = role == kRedundantSet;
     set.replacement = role == kReplacementSet;
     // The type is mandatory: a set without its flag still holds it.
-    if (!(head & 0x10)) notes.push_back("set type flag not set; type read anyway");
+    if (!(head & 0x10)) notes.emplace_back("set type flag not set; type read anyway");
     set.type = c.ident();
     if (head & 0x08) set.name = c.ident();
     // The template: attribute components up to the first object.
@@ -98,7 +98,7 @@ Set readSet(const LogicalRecord& record, std::vector<std::string>& notes) {
             throw BodyError(c.position() - 1, "expected an object, found a component of role " +
                                                   std::to_string(roleOf(d)));
         Object object;
-        if (!(d & 0x10)) notes.push_back("object name flag not set; name read anyway");
+        if (!(d & 0x10)) notes.emplace_back("object name flag not set; name read anyway");
         object.name = c.obname();
         for (const Attribute& t : set.templ) {
             if (t.invariant) {
