@@ -160,6 +160,7 @@ bool describeWell(const WellSource& source, const LoadOptions& options,
             "no caliper curve recognised: name the curves with --radii or "
             "--diameters";
         std::printf("caliper:   none recognised\n");
+        std::fflush(stdout);  // the description before the error, where both go to one pipe
         std::fprintf(stderr, "caliper3d info: %s: %s\n", file.c_str(), why.c_str());
         summary.error = InputError{file, 0, why};
     } else if (!info.survey) {
@@ -179,6 +180,7 @@ bool describeWell(const WellSource& source, const LoadOptions& options,
                                                                  geometry.maxArmRadius_mm);
             if (info.firstDataLine > 0)
                 reason += "; the first at line " + std::to_string(info.firstDataLine);
+            std::fflush(stdout);
             std::fprintf(stderr, "caliper3d info: %s: %s\n", file.c_str(), reason.c_str());
             summary.error = InputError{file, info.firstDataLine, reason};
         }

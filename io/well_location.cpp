@@ -62,6 +62,69 @@ double metres(const LasHeader& h, const char* mnemonic, const std::string& file,
     return v * toMetres(*u);
 }
 
+// The depth reference and its elevation (docs/conventions.md, "Depth reference, tie-in and
+// well location"), with a warning where it disagrees with EPD + APD.
+void readDepthReference(const LasHeader& h, WellLocation& w, const std::string& file,
+                        Diagnostics* diagnostics) {
+    // The depth reference: EREF says it outright; otherwise the elevation of
+    // the reference that LMF (DREF, DMF) names; otherwise the permanent datum's
+    // elevation plus the reference's height above it.
+    for (const char* m : {"LMF", "DREF", "DMF"}) {
+        if (const LasItem* i = item(h, m)) {
+            w.depthReference = i->value;
+            break;
+        }
+    }
+    const std::string code = referenceCode(w.depthReference);
+    const double epd = metres(h, "EPD", file, diagnostics);
+    const double apd = metres(h, "APD", file, diagnostics);
+    const double eref = metres(h, "EREF", file, diagnostics);
+    if (std::isfinite(eref)) {
+        w.referenceElevation_m = eref;
+        w.elevationSource = "EREF";
+    } else {
+        // The named reference's elevation item, or the item named as the reference itself
+        // ("KB.M 25.0"); then ELEV, the elevation of whatever reference LMF (DREF, DMF) or
+        // PDAT names.
+        static const char* const kKb[] = {"EKB", "KB", nullptr};
+        static const char* const kDf[] = {"EDF", "DF", nullptr};
+        static const char* const kGl[] = {"EGL", nullptr};
+        const char* const* named = code == "KB"   ? kKb
+                                   : code == "DF" ? kDf
+                                   : code == "GL" ? kGl
+                                                  : nullptr;
+        for (const char* const* m = named; m && *m && !std::isfinite(w.referenceElevation_m); ++m) {
+            const double e = metres(h, *m, file, diagnostics);
+            if (!std::isfinite(e)) continue;
+            w.referenceElevation_m = e;
+            w.elevationSource = *m;
+        }
+        if (!std::isfinite(w.referenceElevation_m) && (!code.empty() || item(h, "PDAT"))) {
+            const double e = metres(h, "ELEV", file, diagnostics);
+            if (std::isfinite(e)) {
+                w.referenceElevation_m = e;
+                w.elevationSource = "ELEV";
+                if (w.depthReference.empty())
+                    if (const LasItem* pdat = item(h, "PDAT")) w.depthReference = pdat->value;
+            }
+        }
+        if (!std::isfinite(w.referenceElevation_m) && std::isfinite(epd) && std::isfinite(apd)) {
+            w.referenceElevation_m = epd + apd;
+            w.elevationSource = "EPD + APD";
+        }
+    }
+    if (std::isfinite(w.referenceElevation_m) && std::isfinite(epd) && std::isfinite(apd) &&
+        std::abs(w.referenceElevation_m - (epd + apd)) > 0.05 && diagnostics) {
+        char buf[200];
+        std::snprintf(buf, sizeof buf,
+                      "depth reference elevation %.2f m (%s) differs from EPD + APD = %.2f m; "
+                      "%.2f m is used",
+                      w.referenceElevation_m, w.elevationSource.c_str(), epd + apd,
+                      w.referenceElevation_m);
+        diagnostics->warn(file, item(h, "APD")->line, buf);
+    }
+}
+
 }  // namespace
 
 bool WellLocation::hasProjected() const {
@@ -146,23 +209,29 @@ double parseGeographicDegrees(const std::string& textIn) {
 WellLocation readWellLocationOf(const std::string& path, Diagnostics* diagnostics) {
     std::ifstream in(path, std::ios::binary);
     if (!in) return {};
-    // The header ends at the ~A line; read blocks until it (a header is a few kilobytes; the
-    // 4 MB bound keeps a file that is not LAS from being read whole).
+    // The header ends at the first log data section (~A, LAS 3's ~Log_Data); read blocks
+    // until its title line (a header is a few kilobytes; the 4 MB bound keeps a file that is
+    // not LAS from being read whole).
     std::string text;
     char block[65536];
     std::size_t end = std::string::npos;
-    while (in && text.size() < (std::size_t{4} << 20)) {
+    std::size_t lineStart = 0;  // the first line not yet looked at
+    while (end == std::string::npos && text.size() < (std::size_t{4} << 20)) {
         in.read(block, sizeof block);
-        const std::size_t from = text.size() > 3 ? text.size() - 3 : 0;
-        text.append(block, static_cast<std::size_t>(in.gcount()));
-        for (std::size_t at = text.find("~A", from); at != std::string::npos;
-             at = text.find("~A", at + 1))
-            if (at == 0 || text[at - 1] == '\n' || text[at - 1] == '\r' || text[at - 1] == ' ' ||
-                text[at - 1] == '\t') {
-                end = at;
-                break;
-            }
-        if (end != std::string::npos) break;
+        const auto got = static_cast<std::size_t>(in.gcount());
+        text.append(block, got);
+        const bool last = got < sizeof block;
+        while (end == std::string::npos) {
+            const std::size_t nl = text.find('\n', lineStart);
+            if (nl == std::string::npos && !last) break;  // the line goes on in the next block
+            const std::size_t stop = nl == std::string::npos ? text.size() : nl;
+            const std::string_view line =
+                trim(std::string_view(text).substr(lineStart, stop - lineStart));
+            if (!line.empty() && line.front() == '~' && isLasDataTitle(line)) end = lineStart;
+            if (nl == std::string::npos) break;
+            lineStart = nl + 1;
+        }
+        if (last) break;
     }
     if (end == std::string::npos) return {};
     text.resize(end);
@@ -184,63 +253,7 @@ WellLocation readWellLocation(const LasHeader& h, const std::string& file,
         for (const LasItem& v : h.versionItems)
             if (upper(v.mnemonic) == "PROD") w.serviceCompany = v.value;
 
-    // The depth reference: EREF says it outright; otherwise the elevation of
-    // the reference that LMF (DREF, DMF) names; otherwise the permanent datum's
-    // elevation plus the reference's height above it.
-    for (const char* m : {"LMF", "DREF", "DMF"}) {
-        if (const LasItem* i = item(h, m)) {
-            w.depthReference = i->value;
-            break;
-        }
-    }
-    const std::string code = referenceCode(w.depthReference);
-    const double epd = metres(h, "EPD", file, diagnostics);
-    const double apd = metres(h, "APD", file, diagnostics);
-    const double eref = metres(h, "EREF", file, diagnostics);
-    if (std::isfinite(eref)) {
-        w.referenceElevation_m = eref;
-        w.elevationSource = "EREF";
-    } else {
-        // The named reference's elevation item, or the item named as the reference itself
-        // ("KB.M 25.0"); then ELEV, the elevation of whatever reference LMF (DREF, DMF) or
-        // PDAT names.
-        static const char* const kKb[] = {"EKB", "KB", nullptr};
-        static const char* const kDf[] = {"EDF", "DF", nullptr};
-        static const char* const kGl[] = {"EGL", nullptr};
-        const char* const* named = code == "KB"   ? kKb
-                                   : code == "DF" ? kDf
-                                   : code == "GL" ? kGl
-                                                  : nullptr;
-        for (const char* const* m = named; m && *m && !std::isfinite(w.referenceElevation_m); ++m) {
-            const double e = metres(h, *m, file, diagnostics);
-            if (!std::isfinite(e)) continue;
-            w.referenceElevation_m = e;
-            w.elevationSource = *m;
-        }
-        if (!std::isfinite(w.referenceElevation_m) && (!code.empty() || item(h, "PDAT"))) {
-            const double e = metres(h, "ELEV", file, diagnostics);
-            if (std::isfinite(e)) {
-                w.referenceElevation_m = e;
-                w.elevationSource = "ELEV";
-                if (w.depthReference.empty())
-                    if (const LasItem* pdat = item(h, "PDAT")) w.depthReference = pdat->value;
-            }
-        }
-        if (!std::isfinite(w.referenceElevation_m) && std::isfinite(epd) && std::isfinite(apd)) {
-            w.referenceElevation_m = epd + apd;
-            w.elevationSource = "EPD + APD";
-        }
-    }
-    if (std::isfinite(w.referenceElevation_m) && std::isfinite(epd) && std::isfinite(apd) &&
-        std::abs(w.referenceElevation_m - (epd + apd)) > 0.05 && diagnostics) {
-        char buf[200];
-        std::snprintf(buf, sizeof buf,
-                      "depth reference elevation %.2f m (%s) differs from EPD + APD = %.2f m; "
-                      "%.2f m is used",
-                      w.referenceElevation_m, w.elevationSource.c_str(), epd + apd,
-                      w.referenceElevation_m);
-        diagnostics->warn(file, item(h, "APD")->line, buf);
-    }
+    readDepthReference(h, w, file, diagnostics);
     w.groundElevation_m = metres(h, "EGL", file, diagnostics);
     if (!std::isfinite(w.groundElevation_m)) w.groundElevation_m = metres(h, "GL", file, nullptr);
 

@@ -35,7 +35,7 @@ using Pj = std::unique_ptr<PJ, PjDelete>;
 // "32631", "EPSG 32631", "epsg::32631" -> "EPSG:32631"; "UTM zone 31N", "UTM 31 S" -> the
 // WGS 84 UTM zone; anything else as written (PROJ reads names, WKT and PROJ strings).
 std::string normalisedCrs(const std::string& written) {
-    const std::string t(io::trim(written));
+    std::string t(io::trim(written));
     const std::string u = io::upper(t);
     std::string digits;
     for (char c : u)
@@ -75,7 +75,7 @@ std::string geographicCrsOf(const io::WellLocation& w, Context& c) {
                                              {"SIRGAS2000", "EPSG:4674"}, {"WGS72", "EPSG:4322"}};
     for (const auto& d : kDatums)
         if (letters == d[0]) return d[1];
-    const std::string text = normalisedCrs(w.geodeticDatum);
+    std::string text = normalisedCrs(w.geodeticDatum);
     Pj crs(proj_create(c.ctx, text.c_str()));
     if (crs && (proj_get_type(crs.get()) == PJ_TYPE_GEOGRAPHIC_2D_CRS ||
                 proj_get_type(crs.get()) == PJ_TYPE_GEOGRAPHIC_3D_CRS))
@@ -146,7 +146,7 @@ std::string elevationText(const io::WellLocation& w) {
 std::string fieldFrameOf(const io::WellLocation& w) {
     if (!w.crs.empty()) {
         Context c;
-        const std::string text = normalisedCrs(w.crs);
+        std::string text = normalisedCrs(w.crs);
         const Crs crs = crsOf(c, text);
         // A geographic system names the datum of the latitude and longitude, not a grid.
         const bool geographic = crs.pj && (crs.type == PJ_TYPE_GEOGRAPHIC_2D_CRS ||

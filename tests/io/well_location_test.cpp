@@ -156,6 +156,18 @@ TEST(WellLocationTest, HeaderAloneIsReadFromTheFile) {
     const WellLocation w = readWellLocationOf(path.string(), nullptr);
     EXPECT_DOUBLE_EQ(w.latitude_deg, 57.0175);
     EXPECT_NEAR(w.longitude_deg, -111.419, 1e-12);
+    // LAS 3.0: the header ends at ~Log_Data.
+    const auto las3 = caliper3d::test::scratch("header_only_3.las");
+    {
+        std::ofstream out(las3);
+        out << "~Version\n VERS. 3.0 :\n WRAP. NO :\n DLM. COMMA :\n~Well\n LATI. 34.5 :\n"
+               " LONG. -102.25 :\n GDAT. NAD83 :\n~Log_Definition\n DEPT.M :\n R1.IN :\n"
+               "~Log_Data | Log_Definition\n1,4\n2,4\n";
+    }
+    const WellLocation w3 = readWellLocationOf(las3.string(), nullptr);
+    EXPECT_DOUBLE_EQ(w3.latitude_deg, 34.5);
+    EXPECT_DOUBLE_EQ(w3.longitude_deg, -102.25);
+    EXPECT_EQ(w3.geodeticDatum, "NAD83");
     // Not LAS, or not there: nothing.
     const auto text = caliper3d::test::scratch("header_only.csv");
     { std::ofstream(text) << "DEPT,R1\n1,4\n~A\n"; }
