@@ -13,6 +13,7 @@
 #include "io/survey_reader.h"
 #include "reconstruction/analysis/borehole_classifier.h"
 #include "reconstruction/load/load_well.h"
+#include "reconstruction/load/wellhead_placement.h"
 #include "reconstruction/path/north_reference.h"
 #include "reconstruction/path/survey_interpolation.h"
 #include "reconstruction/section/invalid_arm_readings.h"
@@ -79,8 +80,10 @@ void printCasingReadings(const io::LogInfo& info, const std::vector<RowReading>&
     }
 }
 
-// What --survey and --wellhead give a well, as every other verb uses them.
-void printWellSource(const WellSource& source, const LoadOptions& options) {
+// What --survey and --wellhead give a well, as every other verb uses them, and where the
+// well is placed in the scene of all the files given (`origin`, sceneOrigin).
+void printWellSource(const WellSource& source, const LoadOptions& options,
+                     const reconstruction::Wellhead& origin) {
     if (!source.surveyPath.empty()) {
         const reconstruction::CheckedSurvey survey =
             reconstruction::readCheckedSurvey(source.surveyPath, options.read, nullptr);
@@ -97,11 +100,26 @@ void printWellSource(const WellSource& source, const LoadOptions& options) {
             "wellhead:  E %.2f m, N %.2f m, elevation %.2f m (--wellhead; places the well "
             "in the scene)\n",
             source.wellhead->easting_m, source.wellhead->northing_m, source.wellhead->elevation_m);
+    const reconstruction::WellPlacement placed = reconstruction::placeWell(source, origin);
+    if (!placed.wellhead) {
+        std::printf("placement: at the %s: %s\n",
+                    origin.frame.empty() ? "scene origin" : "first well's head (not placed)",
+                    placed.description.c_str());
+        return;
+    }
+    const reconstruction::Ned offset = reconstruction::wellheadOffset(*placed.wellhead, origin);
+    std::printf("placement: %s\n", placed.description.c_str());
+    if (offset.x == 0.0 && offset.y == 0.0 && offset.z == 0.0)
+        std::printf("           the scene origin\n");
+    else
+        std::printf("           %.2f m north, %.2f m east, %.2f m down from the scene origin\n",
+                    offset.x, offset.y, offset.z);
 }
 
 // Describes one file on standard output; false where no verb could use it (the reason in
 // `summary`).
-bool describeWell(const WellSource& source, const LoadOptions& options, InputSummary& summary) {
+bool describeWell(const WellSource& source, const LoadOptions& options,
+                  const reconstruction::Wellhead& origin, InputSummary& summary) {
     const std::string& file = source.path;
     bool ok = true;
     // Rows with a section shape, by the rule the other verbs draw and analyse with.
@@ -130,7 +148,7 @@ bool describeWell(const WellSource& source, const LoadOptions& options, InputSum
     info.north.resolved = north.summary;
     for (const std::string& warning : north.warnings) info.diagnostics.warn(file, 0, warning);
     std::fputs(io::formatLogInfo(info).c_str(), stdout);
-    printWellSource(source, options);
+    printWellSource(source, options, origin);
     summary.rows = info.rows;
     summary.top_m = info.top_m;
     summary.bottom_m = info.bottom_m;
@@ -142,6 +160,7 @@ bool describeWell(const WellSource& source, const LoadOptions& options, InputSum
             "no caliper curve recognised: name the curves with --radii or "
             "--diameters";
         std::printf("caliper:   none recognised\n");
+        std::fflush(stdout);  // the description before the error, where both go to one pipe
         std::fprintf(stderr, "caliper3d info: %s: %s\n", file.c_str(), why.c_str());
         summary.error = InputError{file, 0, why};
     } else if (!info.survey) {
@@ -161,6 +180,7 @@ bool describeWell(const WellSource& source, const LoadOptions& options, InputSum
                                                                  geometry.maxArmRadius_mm);
             if (info.firstDataLine > 0)
                 reason += "; the first at line " + std::to_string(info.firstDataLine);
+            std::fflush(stdout);
             std::fprintf(stderr, "caliper3d info: %s: %s\n", file.c_str(), reason.c_str());
             summary.error = InputError{file, info.firstDataLine, reason};
         }
@@ -190,6 +210,8 @@ int runInfo(const QStringList& args) {
         const LoadOptions options = inputOptionsFrom(verb.parser());
         const std::vector<WellSource> sources = wellSourcesFrom(verb.parser(), verb.positional());
         int failures = 0;
+        // The files given are one scene: placed as every other verb places them.
+        const reconstruction::Wellhead origin = reconstruction::sceneOrigin(sources);
         SummaryFile summaries(verb.value("summary"));
         for (const WellSource& source : sources) {
             const std::string& file = source.path;
@@ -198,7 +220,7 @@ int runInfo(const QStringList& args) {
             summary.verb = "info";
             const double start = steadySeconds();
             try {
-                if (!describeWell(source, options, summary)) ++failures;
+                if (!describeWell(source, options, origin, summary)) ++failures;
             } catch (const std::exception& e) {
                 ++failures;
                 std::fprintf(stderr, "caliper3d info: %s\n", e.what());

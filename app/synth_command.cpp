@@ -21,10 +21,39 @@ namespace caliper3d::app {
 
 namespace {
 
+// The field's first wellhead (WGS 84, in the North Sea: UTM zone 31N) and the radii of
+// curvature of the WGS 84 ellipsoid there, which turn the grid's metres into degrees.
+constexpr double kFieldLatitude_deg = 60.5;
+constexpr double kFieldLongitude_deg = 2.5;
+constexpr double kRadiansPerDegree = 3.14159265358979323846 / 180.0;
+
+// The header items that place a synthetic well: latitude and longitude (degrees, 8
+// decimals: about 1 mm), the datum, and the kelly bushing and its elevation.
+std::vector<io::LasParameter> fieldLocation(double north_m, double east_m, double elevation_m) {
+    const double a = 6378137.0, f = 1.0 / 298.257223563, e2 = f * (2.0 - f);
+    const double phi = kFieldLatitude_deg * kRadiansPerDegree;
+    const double w = std::sqrt(1.0 - e2 * std::sin(phi) * std::sin(phi));
+    const double meridian = a * (1.0 - e2) / (w * w * w);  // M
+    const double normal = a / w;                           // N
+    const double lat = kFieldLatitude_deg + north_m / meridian / kRadiansPerDegree;
+    const double lon = kFieldLongitude_deg + east_m / (normal * std::cos(phi)) / kRadiansPerDegree;
+    char latText[40], lonText[40], elevation[40];
+    std::snprintf(latText, sizeof latText, "%.8f", lat);
+    std::snprintf(lonText, sizeof lonText, "%.8f", lon);
+    std::snprintf(elevation, sizeof elevation, "%.2f", elevation_m);
+    return {{"LATI", "DEG", latText, "Latitude"},
+            {"LONG", "DEG", lonText, "Longitude"},
+            {"GDAT", "", "WGS84", "Geodetic datum"},
+            {"LMF", "", "KB", "Log measured from"},
+            {"EKB", "M", elevation, "Elevation of the kelly bushing"}};
+}
+
 // synth --field N: N wells of `length` metres, named FIELD-000, FIELD-001, ... (as their
 // files well-000.las, ...), each a profile in turn (their hole azimuths
-// turned 37 degrees a well, so no two builds point alike), wellheads 25 m apart on a square
-// grid, and DIR/manifest.csv listing them for caliper3d batch.
+// turned 37 degrees a well, so no two builds point alike), wellheads about 25 m apart on a
+// square grid (their latitude, longitude and kelly bushing elevation, 25 m plus 1 m a row, in
+// the header: the field opens at its places), and DIR/manifest.csv listing them for caliper3d
+// batch.
 void writeField(const std::string& folder, std::size_t wells, double length, double step,
                 int arms) {
     namespace fs = std::filesystem;
@@ -48,16 +77,17 @@ void writeField(const std::string& folder, std::size_t wells, double length, dou
         std::snprintf(name, sizeof name, "well-%0*zu.las", digits, w);
         // Each well its own name in the header (WELL), numbered as its file.
         std::snprintf(wellName, sizeof wellName, "FIELD-%0*zu", digits, w);
+        const std::size_t gridColumn = w % columns, gridRow = w / columns;
         io::LasWriteOptions las;
         las.wellName = wellName;
+        las.parameters = fieldLocation(25.0 * static_cast<double>(gridRow),
+                                       25.0 * static_cast<double>(gridColumn),
+                                       25.0 + static_cast<double>(gridRow));
         const io::SectionTable table = reconstruction::makeSyntheticWell(spec);
         io::writeLasFile((fs::path(folder) / name).string(), table, las);
         sections += table.rowCount();
-        const std::size_t gridColumn = w % columns, gridRow = w / columns;
-        char line[160];
-        std::snprintf(line, sizeof line, "%s,report,\"%.1f,%.1f,0\"\n", name,
-                      25.0 * static_cast<double>(gridColumn), 25.0 * static_cast<double>(gridRow));
-        manifest << line;
+        // No wellhead column value: each well is placed from its header.
+        manifest << name << ",report,\n";
     }
     manifestFile.commit();
     std::printf("wrote %zu wells (%zu sections, %.1f m each) and %s\n", wells, sections, length,
@@ -86,11 +116,13 @@ int runSynth(const QStringList& args) {
                                             " (default example; their exact answers are listed "
                                             "in docs/analysis.md)."),
                      "NAME", "example"});
-        p.addOption({"field",
-                     "Write N wells instead of one, into the folder -o names (well-000.las, ...: "
-                     "the profiles in turn, hole azimuths varied, wellheads 25 m apart), with "
-                     "a manifest.csv for caliper3d batch.",
-                     "N"});
+        p.addOption(
+            {"field",
+             "Write N wells instead of one, into the folder -o names (well-000.las, ...: "
+             "the profiles in turn, hole azimuths varied, wellheads about 25 m apart by their "
+             "headers' latitude and longitude), with "
+             "a manifest.csv for caliper3d batch.",
+             "N"});
         if (!verb.parse(args, 0)) return kExitOk;
         if (!verb.isSet("output")) throw UsageError("caliper3d synth: -o OUT is required");
         double length = 0, step = 0;

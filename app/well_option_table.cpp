@@ -631,8 +631,9 @@ void perWellRows(Rows& rows) {
     WellOption& wellhead = rows.add(
         "wellhead", "E,N,ELEV", G::PerWell,
         "Wellhead easting, northing and elevation of the depth reference in metres (e.g. "
-        "512300,6801200,25.5); once per FILE, in order. The first well's wellhead is the scene "
-        "origin.",
+        "512300,6801200,25.5); once per FILE, in order. Overrides the header's location (without "
+        "it, a well is placed from its header's latitude/longitude or map coordinates). The "
+        "first well's wellhead is the scene origin.",
         [](const std::string& t, WellSource& w, LoadOptions&) { w.wellhead = parseWellhead(t); },
         [](const WellSource& w, const LoadOptions&) -> std::optional<std::string> {
             if (!w.wellhead) return std::nullopt;
@@ -643,7 +644,7 @@ void perWellRows(Rows& rows) {
     wellhead.effect = OptionEffect::Geometry;
     wellhead.column = "wellhead";
     wellhead.field = "Wellhead";
-    wellhead.blank = "E,N,ELEV in metres, e.g. 512300,6801200,25.5 (none: origin)";
+    wellhead.blank = "E,N,ELEV in metres, e.g. 512300,6801200,25.5 (none: from the header)";
 }
 
 // Each row in the order `caliper3d VERB --help` lists them; the messages are the command

@@ -4,7 +4,10 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <exception>
+#include <fstream>
 #include <sstream>
+#include <string_view>
 
 #include "io/number_parsing.h"
 #include "io/text.h"
@@ -59,63 +62,10 @@ double metres(const LasHeader& h, const char* mnemonic, const std::string& file,
     return v * toMetres(*u);
 }
 
-}  // namespace
-
-bool WellLocation::hasProjected() const {
-    return std::isfinite(easting_m) && std::isfinite(northing_m);
-}
-
-bool WellLocation::empty() const {
-    return uwi.empty() && depthReference.empty() && !std::isfinite(referenceElevation_m) &&
-           !std::isfinite(groundElevation_m) && !hasProjected() && latitudeText.empty() &&
-           longitudeText.empty();
-}
-
-double parseGeographicDegrees(const std::string& textIn) {
-    std::istringstream in(textIn);
-    std::string token;
-    double parts[3] = {0.0, 0.0, 0.0};
-    int count = 0;
-    bool negative = false;
-    while (in >> token) {
-        std::string t;
-        for (char c : token)
-            if (c != '\'' && c != '"') t += c;
-        // A degree sign (UTF-8 or Latin-1) ends a number.
-        for (const char* sign : {"\xC2\xB0", "\xB0"}) {
-            const std::size_t at = t.find(sign);
-            if (at != std::string::npos) t.erase(at, std::char_traits<char>::length(sign));
-        }
-        if (t.empty()) continue;
-        double v = 0.0;
-        if (parseNumber(t, v) && std::isfinite(v)) {
-            if (count == 3) return kNaN;
-            parts[count++] = v;
-            continue;
-        }
-        const std::string u = upper(t);
-        if (u == "S" || u == "W")
-            negative = true;
-        else if (u != "N" && u != "E" && u != "DEG" && u != "DEGREES" && u != "DEGREE")
-            return kNaN;
-    }
-    if (count == 0) return kNaN;
-    const double sign = parts[0] < 0.0 ? -1.0 : 1.0;
-    double degrees = std::abs(parts[0]) + parts[1] / 60.0 + parts[2] / 3600.0;
-    // "-111.419 W" is west once, not east.
-    if (sign < 0.0 || negative) degrees = -degrees;
-    return degrees;
-}
-
-WellLocation readWellLocation(const LasHeader& h, const std::string& file,
-                              Diagnostics* diagnostics) {
-    WellLocation w;
-    w.uwi = text(h, {"UWI", "API", "APIN"});
-    w.serviceCompany = text(h, {"SRVC", "LCNM", "PCON"});
-    if (w.serviceCompany.empty())
-        for (const LasItem& v : h.versionItems)
-            if (upper(v.mnemonic) == "PROD") w.serviceCompany = v.value;
-
+// The depth reference and its elevation (docs/conventions.md, "Depth reference, tie-in and
+// well location"), with a warning where it disagrees with EPD + APD.
+void readDepthReference(const LasHeader& h, WellLocation& w, const std::string& file,
+                        Diagnostics* diagnostics) {
     // The depth reference: EREF says it outright; otherwise the elevation of
     // the reference that LMF (DREF, DMF) names; otherwise the permanent datum's
     // elevation plus the reference's height above it.
@@ -133,15 +83,32 @@ WellLocation readWellLocation(const LasHeader& h, const std::string& file,
         w.referenceElevation_m = eref;
         w.elevationSource = "EREF";
     } else {
-        const char* named = code == "KB"   ? "EKB"
-                            : code == "DF" ? "EDF"
-                            : code == "GL" ? "EGL"
-                                           : nullptr;
-        const double e = named ? metres(h, named, file, diagnostics) : kNaN;
-        if (std::isfinite(e)) {
+        // The named reference's elevation item, or the item named as the reference itself
+        // ("KB.M 25.0"); then ELEV, the elevation of whatever reference LMF (DREF, DMF) or
+        // PDAT names.
+        static const char* const kKb[] = {"EKB", "KB", nullptr};
+        static const char* const kDf[] = {"EDF", "DF", nullptr};
+        static const char* const kGl[] = {"EGL", nullptr};
+        const char* const* named = code == "KB"   ? kKb
+                                   : code == "DF" ? kDf
+                                   : code == "GL" ? kGl
+                                                  : nullptr;
+        for (const char* const* m = named; m && *m && !std::isfinite(w.referenceElevation_m); ++m) {
+            const double e = metres(h, *m, file, diagnostics);
+            if (!std::isfinite(e)) continue;
             w.referenceElevation_m = e;
-            w.elevationSource = named;
-        } else if (std::isfinite(epd) && std::isfinite(apd)) {
+            w.elevationSource = *m;
+        }
+        if (!std::isfinite(w.referenceElevation_m) && (!code.empty() || item(h, "PDAT"))) {
+            const double e = metres(h, "ELEV", file, diagnostics);
+            if (std::isfinite(e)) {
+                w.referenceElevation_m = e;
+                w.elevationSource = "ELEV";
+                if (w.depthReference.empty())
+                    if (const LasItem* pdat = item(h, "PDAT")) w.depthReference = pdat->value;
+            }
+        }
+        if (!std::isfinite(w.referenceElevation_m) && std::isfinite(epd) && std::isfinite(apd)) {
             w.referenceElevation_m = epd + apd;
             w.elevationSource = "EPD + APD";
         }
@@ -156,14 +123,143 @@ WellLocation readWellLocation(const LasHeader& h, const std::string& file,
                       w.referenceElevation_m);
         diagnostics->warn(file, item(h, "APD")->line, buf);
     }
+}
+
+}  // namespace
+
+bool WellLocation::hasProjected() const {
+    return std::isfinite(easting_m) && std::isfinite(northing_m);
+}
+
+bool WellLocation::empty() const {
+    return uwi.empty() && depthReference.empty() && !std::isfinite(referenceElevation_m) &&
+           !std::isfinite(groundElevation_m) && !hasProjected() && latitudeText.empty() &&
+           longitudeText.empty() && crs.empty();
+}
+
+double parseGeographicDegrees(const std::string& textIn) {
+    // Degree, minute and second signs separate numbers, as blanks do: the degree sign and the
+    // masculine ordinal often written for it (UTF-8 or Latin-1), primes and quotes.
+    std::string spaced;
+    for (std::size_t k = 0; k < textIn.size(); ++k) {
+        const unsigned char c = static_cast<unsigned char>(textIn[k]);
+        const std::string_view rest(textIn.data() + k, textIn.size() - k);
+        std::size_t skip = 0;
+        for (const char* sign : {"\xC2\xB0", "\xC2\xBA", "\xE2\x80\xB2", "\xE2\x80\xB3"})
+            if (rest.substr(0, std::char_traits<char>::length(sign)) == sign)
+                skip = std::char_traits<char>::length(sign);
+        if (skip > 0) {
+            spaced += ' ';
+            k += skip - 1;
+            continue;
+        }
+        if (c == 0xB0 || c == 0xBA || c == '\'' || c == '"' || c == ',') {
+            spaced += ' ';
+            continue;
+        }
+        // A hemisphere letter next to a number ("57.5N", "W111") is a word of its own.
+        const char u = static_cast<char>(std::toupper(c));
+        if (u == 'N' || u == 'S' || u == 'E' || u == 'W') {
+            const bool afterDigit =
+                k > 0 &&
+                (std::isdigit(static_cast<unsigned char>(textIn[k - 1])) || textIn[k - 1] == '.');
+            const bool beforeDigit =
+                k + 1 < textIn.size() && (std::isdigit(static_cast<unsigned char>(textIn[k + 1])) ||
+                                          textIn[k + 1] == '-' || textIn[k + 1] == '.');
+            if (afterDigit || beforeDigit) {
+                spaced += ' ';
+                spaced += u;
+                spaced += ' ';
+                continue;
+            }
+        }
+        spaced += static_cast<char>(c);
+    }
+    std::istringstream in(spaced);
+    std::string t;
+    double parts[3] = {0.0, 0.0, 0.0};
+    int count = 0;
+    bool negative = false;
+    int hemispheres = 0;
+    while (in >> t) {
+        double v = 0.0;
+        if (parseNumber(t, v) && std::isfinite(v)) {
+            if (count == 3) return kNaN;
+            // Only the degrees carry a sign; minutes and seconds are under 60.
+            if (count > 0 && (v < 0.0 || v >= 60.0)) return kNaN;
+            parts[count++] = v;
+            continue;
+        }
+        const std::string u = upper(t);
+        if (u == "S" || u == "W" || u == "N" || u == "E") {
+            if (++hemispheres > 1) return kNaN;
+            negative = u == "S" || u == "W";
+        } else if (u != "DEG" && u != "DEGREES" && u != "DEGREE") {
+            return kNaN;
+        }
+    }
+    if (count == 0) return kNaN;
+    const double sign = parts[0] < 0.0 ? -1.0 : 1.0;
+    double degrees = std::abs(parts[0]) + parts[1] / 60.0 + parts[2] / 3600.0;
+    // "-111.419 W" is west once, not east.
+    if (sign < 0.0 || negative) degrees = -degrees;
+    return degrees;
+}
+
+WellLocation readWellLocationOf(const std::string& path, Diagnostics* diagnostics) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return {};
+    // The header ends at the first log data section (~A, LAS 3's ~Log_Data); read blocks
+    // until its title line (a header is a few kilobytes; the 4 MB bound keeps a file that is
+    // not LAS from being read whole).
+    std::string text;
+    char block[65536];
+    std::size_t end = std::string::npos;
+    std::size_t lineStart = 0;  // the first line not yet looked at
+    while (end == std::string::npos && text.size() < (std::size_t{4} << 20)) {
+        in.read(block, sizeof block);
+        const auto got = static_cast<std::size_t>(in.gcount());
+        text.append(block, got);
+        const bool last = got < sizeof block;
+        while (end == std::string::npos) {
+            const std::size_t nl = text.find('\n', lineStart);
+            if (nl == std::string::npos && !last) break;  // the line goes on in the next block
+            const std::size_t stop = nl == std::string::npos ? text.size() : nl;
+            const std::string_view line =
+                trim(std::string_view(text).substr(lineStart, stop - lineStart));
+            if (!line.empty() && line.front() == '~' && isLasDataTitle(line)) end = lineStart;
+            if (nl == std::string::npos) break;
+            lineStart = nl + 1;
+        }
+        if (last) break;
+    }
+    if (end == std::string::npos) return {};
+    text.resize(end);
+    const std::string_view head = trim(text);
+    if (head.empty() || head.front() != '~') return {};  // not LAS text (DLIS, column text)
+    try {
+        return readWellLocation(parseLasHeader(text, path, nullptr), path, diagnostics);
+    } catch (const std::exception&) {
+        return {};  // the reader says what is wrong with the header when the log is read
+    }
+}
+
+WellLocation readWellLocation(const LasHeader& h, const std::string& file,
+                              Diagnostics* diagnostics) {
+    WellLocation w;
+    w.uwi = text(h, {"UWI", "API", "APIN"});
+    w.serviceCompany = text(h, {"SRVC", "LCNM", "PCON"});
+    if (w.serviceCompany.empty())
+        for (const LasItem& v : h.versionItems)
+            if (upper(v.mnemonic) == "PROD") w.serviceCompany = v.value;
+
+    readDepthReference(h, w, file, diagnostics);
     w.groundElevation_m = metres(h, "EGL", file, diagnostics);
     if (!std::isfinite(w.groundElevation_m)) w.groundElevation_m = metres(h, "GL", file, nullptr);
 
-    static const char* const kProjected[][2] = {{"XWELL", "YWELL"},
-                                                {"XCOORD", "YCOORD"},
-                                                {"EASTING", "NORTHING"},
-                                                {"UTMX", "UTMY"},
-                                                {"X", "Y"}};
+    static const char* const kProjected[][2] = {{"XWELL", "YWELL"},      {"XCOORD", "YCOORD"},
+                                                {"EASTING", "NORTHING"}, {"UTMX", "UTMY"},
+                                                {"EAST", "NORTH"},       {"X", "Y"}};
     for (const auto& pair : kProjected) {
         if (!item(h, pair[0]) || !item(h, pair[1])) continue;
         const double e = metres(h, pair[0], file, diagnostics);
@@ -193,6 +289,13 @@ WellLocation readWellLocation(const LasHeader& h, const std::string& file,
             return;
         }
     };
+    for (const char* m : {"PROJ", "EPSG", "CRS", "HZCS"})
+        if (const LasItem* i = item(h, m)) {
+            w.crs = i->value;
+            w.crsSource = m;
+            break;
+        }
+    w.geodeticDatum = text(h, {"GDAT", "DATUM"});
     geographic({"LATI", "LAT", "LATITUDE"}, w.latitudeText, w.latitude_deg, 90.0);
     geographic({"LONG", "LON", "LONGITUDE"}, w.longitudeText, w.longitude_deg, 180.0);
     return w;
@@ -220,6 +323,7 @@ std::string formatWellLocation(const WellLocation& w) {
                       w.easting_m, w.northing_m, w.projectedSource.c_str());
         out += buf;
     }
+    if (!w.crs.empty()) out += "crs:       " + w.crs + " (" + w.crsSource + ")\n";
     if (!w.latitudeText.empty() || !w.longitudeText.empty()) {
         auto degrees = [](double v, const std::string& t) {
             char b[96];
@@ -230,11 +334,9 @@ std::string formatWellLocation(const WellLocation& w) {
             return std::string(b);
         };
         out += "lat/long:  " + degrees(w.latitude_deg, w.latitudeText) + ", " +
-               degrees(w.longitude_deg, w.longitudeText) + "\n";
+               degrees(w.longitude_deg, w.longitudeText) +
+               (w.geodeticDatum.empty() ? "" : " (" + w.geodeticDatum + ")") + "\n";
     }
-    if (std::isfinite(w.referenceElevation_m) || w.hasProjected() || !w.latitudeText.empty())
-        out +=
-            "placement: by --wellhead E,N,ELEV only (the header's location is shown, not used)\n";
     return out;
 }
 

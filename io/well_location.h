@@ -27,6 +27,12 @@ struct WellLocation {
     double easting_m = kNaN;
     double northing_m = kNaN;
     std::string projectedSource;
+    // The coordinate reference system the header names (PROJ, EPSG, CRS, HZCS), as written
+    // ("EPSG:32631", "32631", "WGS 84 / UTM zone 31N"), and the item that gave it; the
+    // geodetic datum of the latitude and longitude (GDAT, else DATUM), as written ("WGS84").
+    std::string crs;
+    std::string crsSource;
+    std::string geodeticDatum;
     // Geographic coordinates, decimal degrees (south and west negative), and
     // the text they were read from.
     double latitude_deg = kNaN;
@@ -45,8 +51,12 @@ struct WellLocation {
 WellLocation readWellLocation(const LasHeader& header, const std::string& file,
                               Diagnostics* diagnostics);
 
-// "57.0175 N", "-111.419 W", "56.934500 degrees", "57 1 3.0 N" as decimal
-// degrees (south and west negative); NaN when the text is none of these.
+// Reads the location from the header of the LAS file at `path` alone (up to its ~A line),
+// without reading its rows: empty for a file that is not LAS text or cannot be read.
+WellLocation readWellLocationOf(const std::string& path, Diagnostics* diagnostics);
+
+// "57.0175 N", "-111.419 W", "56.934500 degrees", "57 1 3.0 N", "57°1'3.0\"N", "N57 01 03"
+// as decimal degrees (south and west negative); NaN when the text is none of these.
 double parseGeographicDegrees(const std::string& text);
 
 // The lines `caliper3d info` prints ("" when the location is empty).

@@ -7,7 +7,7 @@ packages=(
   build-essential cmake ninja-build ccache pkg-config
   libcoin-dev libsoqt520-dev qtbase5-dev libqt5charts5-dev libboost-dev libglm-dev
   libgtest-dev libbenchmark-dev libfast-float-dev libassimp-dev libtinygltf-dev
-  nlohmann-json3-dev libpng-dev libgeographiclib-dev
+  nlohmann-json3-dev libpng-dev libgeographiclib-dev libproj-dev
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri
   xvfb xauth clang libclang-rt-14-dev clang-format clang-tidy locales
   # A one-node Slurm for the test of the cluster examples (tests/cluster/slurm_field_test.sh).

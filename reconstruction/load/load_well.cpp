@@ -1,6 +1,7 @@
 #include "reconstruction/load/load_well.h"
 
 #include <atomic>
+#include <cmath>
 #include <exception>
 
 #include "io/hole_azimuth_plan.h"
@@ -8,6 +9,7 @@
 #include "reconstruction/load/hole_azimuth.h"
 #include "reconstruction/load/well_input.h"
 #include "reconstruction/load/well_warnings.h"
+#include "reconstruction/load/wellhead_placement.h"
 
 namespace caliper3d::reconstruction {
 
@@ -47,7 +49,19 @@ GeometryOptions wellGeometryOptions(const WellSource& source, const LoadOptions&
     if (!source.surveyPath.empty())
         geometry.survey =
             surveyStations(readCheckedSurvey(source.surveyPath, options.read, diagnostics).table);
-    if (source.wellhead) geometry.wellheadOffset = wellheadOffset(*source.wellhead, origin);
+    // A well without --wellhead is placed from its header in the field frame of the first
+    // well (sceneOrigin); with no frame, at the origin as before.
+    if (source.wellhead) {
+        geometry.wellheadOffset = wellheadOffset(*source.wellhead, origin);
+    } else if (!origin.frame.empty()) {
+        const WellPlacement placed = placeWell(source, origin);
+        if (placed.wellhead)
+            geometry.wellheadOffset = wellheadOffset(*placed.wellhead, origin);
+        else if (diagnostics)
+            diagnostics->warn(source.path, 0,
+                              "not placed in the field (" + placed.description +
+                                  "): drawn at the first well's head; give --wellhead E,N,ELEV");
+    }
     return geometry;
 }
 
@@ -75,7 +89,23 @@ LoadedWell loadWell(const WellSource& source, const LoadOptions& options, const 
 }
 
 Wellhead sceneOrigin(const std::vector<WellSource>& wells) {
-    return !wells.empty() && wells.front().wellhead ? *wells.front().wellhead : Wellhead{};
+    if (wells.empty()) return {};
+    const WellSource& first = wells.front();
+    const io::WellLocation location = io::readWellLocationOf(first.path, nullptr);
+    const std::string frame = fieldFrameOf(location);
+    Wellhead origin;
+    if (first.wellhead) {
+        origin = *first.wellhead;  // its values are taken to be in the frame of its header
+    } else {
+        const WellPlacement placed = placeFromHeader(location, frame);
+        if (!placed.wellhead) return {};  // nothing to place the others from
+        origin = *placed.wellhead;
+        if (!std::isfinite(origin.elevation_m)) origin.elevation_m = 0.0;
+    }
+    origin.frame = frame;
+    origin.trueNorthGridAzimuth_deg =
+        trueNorthGridAzimuth(frame, origin.easting_m, origin.northing_m);
+    return origin;
 }
 
 }  // namespace caliper3d::reconstruction

@@ -107,7 +107,10 @@ struct CheckedSurvey {
 CheckedSurvey readCheckedSurvey(const std::string& path, const io::ReadOptions& options,
                                 io::Diagnostics* diagnostics);
 
-// The scene origin: the first well's wellhead (zero when none is given).
+// The scene origin: the first well's wellhead, by --wellhead or from its header
+// (wellhead_placement.h), with the field frame its header defines (Wellhead::frame); zero
+// with no frame when neither gives one. A well without --wellhead is placed from its header
+// in that frame (wellGeometryOptions), relative to this origin.
 Wellhead sceneOrigin(const std::vector<WellSource>& wells);
 
 }  // namespace caliper3d::reconstruction

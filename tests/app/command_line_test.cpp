@@ -1,5 +1,8 @@
+#include <array>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -241,6 +244,96 @@ TEST(CommandLineTest, InfoTakesSurveyAndWellheadAndShowsThem) {
     const CommandRun bad = run("info " + log + " --survey " + (folder / "none.csv").string());
     EXPECT_EQ(bad.status, 1) << bad.output;
     EXPECT_NE(bad.output.find("none.csv"), std::string::npos) << bad.output;
+}
+
+// A synthetic log with these lines added to its ~Well section.
+std::string logWithWellItems(const std::filesystem::path& folder, const std::string& name,
+                             const std::string& items) {
+    const std::string log = (folder / name).string();
+    EXPECT_EQ(run("synth -o " + log + " --length 20 --step 0.1").status, 0);
+    std::ifstream in(log);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::size_t well = text.find("~W");
+    text.insert(text.find('\n', well) + 1, items);
+    std::ofstream(log) << text;
+    return log;
+}
+
+// info shows where the header places a well, the projection, and the offsets of a field.
+TEST(CommandLineTest, InfoShowsTheHeaderPlacementAndItsProjection) {
+    const auto folder = caliper3d::test::freshScratchFolder("info_placement");
+    const std::string a = logWithWellItems(
+        folder, "a.las", " LATI. 60 30 15.24 N :\n LONG. 2 27 36.9 E :\n LMF. KB :\n EKB.M 25 :\n");
+    const std::string b =
+        logWithWellItems(folder, "b.las", " LAT. 60.5 :\n LON. 2.4 :\n EREF.M 40 :\n");
+    const std::string bare = logWithWellItems(folder, "bare.las", "");
+    const CommandRun r = run("info " + a + " " + b + " " + bare);
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("placement: from the header's lat/long (WGS 84: no datum named), UTM "
+                            "zone 31N (EPSG:32631): E "),
+              std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("elevation KB 25.00 m (EKB)\n           the scene origin\n"),
+              std::string::npos)
+        << r.output;
+    // b: 60.5 N 2.4 E; a and b in UTM zone 31N by GeographicLib (a different implementation
+    // from PROJ's): a E 470353.531 N 6707690.204 (meridian convergence -0.469798 degrees),
+    // b E 467039.983 N 6707247.375; the grid offset (-3313.548 E, -442.829 N) turned to true
+    // north at a: 469.984 m south, 3309.805 m west. b's reference is 15 m higher.
+    const std::size_t line = r.output.find("m north, ");
+    ASSERT_NE(line, std::string::npos) << r.output;
+    double north = 0, east = 0, down = 0;
+    ASSERT_EQ(std::sscanf(r.output.c_str() + r.output.rfind('\n', line) + 1,
+                          " %lf m north, %lf m east, %lf m down", &north, &east, &down),
+              3)
+        << r.output;
+    EXPECT_NEAR(north, -469.984, 0.5);
+    EXPECT_NEAR(east, -3309.805, 0.5);
+    EXPECT_DOUBLE_EQ(down, -15.0);
+    EXPECT_NE(r.output.find("placement: at the first well's head (not placed): the header gives "
+                            "no latitude/longitude or map coordinates"),
+              std::string::npos)
+        << r.output;
+    // --wellhead decides; alone, a file without coordinates opens at the origin and says why.
+    const CommandRun given = run("info " + a + " --wellhead 1,2,3");
+    EXPECT_NE(given.output.find("placement: by --wellhead: E 1.00 N 2.00, elevation 3.00 m"),
+              std::string::npos)
+        << given.output;
+    const CommandRun alone = run("info " + bare);
+    EXPECT_NE(alone.output.find("placement: at the scene origin: the header gives no "
+                                "latitude/longitude or map coordinates"),
+              std::string::npos)
+        << alone.output;
+}
+
+// synth --field writes header coordinates: its wells open about 25 m apart, the second row
+// 1 m higher.
+TEST(CommandLineTest, SynthFieldOpensAtItsHeaderPlaces) {
+    const auto folder = caliper3d::test::freshScratchFolder("synth_field_places");
+    ASSERT_EQ(run("synth --field 3 --length 20 -o " + folder.string() + "/").status, 0);
+    std::string files;
+    for (int w = 0; w < 3; ++w)
+        files += " " + (folder / ("well-00" + std::to_string(w) + ".las")).string();
+    const CommandRun r = run("info" + files);
+    ASSERT_EQ(r.status, 0) << r.output;
+    std::vector<std::array<double, 3>> offsets;
+    for (std::size_t at = r.output.find("placement: from"); at != std::string::npos;
+         at = r.output.find("placement: from", at + 1)) {
+        const std::size_t line = r.output.find('\n', at) + 1;
+        std::array<double, 3> o{0.0, 0.0, 0.0};
+        if (std::sscanf(r.output.c_str() + line, " %lf m north, %lf m east, %lf m down", &o[0],
+                        &o[1], &o[2]) != 3)
+            o = {0.0, 0.0, 0.0};  // "the scene origin"
+        offsets.push_back(o);
+    }
+    ASSERT_EQ(offsets.size(), 3U) << r.output;
+    // Grid 2 wide: well 1 east of well 0, well 2 north of it (grid metres differ from the
+    // ground's by the scale factor, 0.9996 near the zone's middle: 1 cm over 25 m).
+    EXPECT_NEAR(offsets[1][0], 0.0, 0.5);
+    EXPECT_NEAR(offsets[1][1], 25.0, 0.5);
+    EXPECT_NEAR(offsets[2][0], 25.0, 0.5);
+    EXPECT_NEAR(offsets[2][1], 0.0, 0.5);
+    EXPECT_DOUBLE_EQ(offsets[2][2], -1.0);
 }
 
 // synth --field names each well after its file (FIELD-000 in well-000.las), in the LAS header.

@@ -3,6 +3,7 @@
 #include "io/well_location.h"
 
 #include <cmath>
+#include <fstream>
 
 #include <gtest/gtest.h>
 
@@ -99,6 +100,79 @@ TEST(WellLocationTest, GeographicDegreesReadHemispheresAndMinutes) {
     EXPECT_DOUBLE_EQ(parseGeographicDegrees("57 1 3.0 N"), 57.0 + 1.0 / 60.0 + 3.0 / 3600.0);
     EXPECT_DOUBLE_EQ(parseGeographicDegrees("33\xC2\xB0 30' S"), -33.5);
     EXPECT_TRUE(std::isnan(parseGeographicDegrees("unknown")));
+}
+
+TEST(WellLocationTest, GeographicDegreesReadSignsQuotesAndHemisphereLetters) {
+    const double dms = 60.0 + 30.0 / 60.0 + 15.24 / 3600.0;
+    EXPECT_DOUBLE_EQ(parseGeographicDegrees("60\xC2\xB0"
+                                            "30'15.24\"N"),
+                     dms);
+    EXPECT_DOUBLE_EQ(parseGeographicDegrees("60\xC2\xBA 30\xE2\x80\xB2 15.24\xE2\x80\xB3 N"), dms);
+    EXPECT_DOUBLE_EQ(parseGeographicDegrees("N60 30 15.24"), dms);
+    EXPECT_DOUBLE_EQ(parseGeographicDegrees("S 60 30 15.24"), -dms);
+    EXPECT_DOUBLE_EQ(parseGeographicDegrees("2.5W"), -2.5);
+    EXPECT_DOUBLE_EQ(parseGeographicDegrees("E002 27 36.9"), 2.0 + 27.0 / 60.0 + 36.9 / 3600.0);
+    EXPECT_DOUBLE_EQ(parseGeographicDegrees("-43.2108"), -43.2108);
+    // Minutes and seconds are under 60 and unsigned; one hemisphere; at most three numbers.
+    EXPECT_TRUE(std::isnan(parseGeographicDegrees("60 75 0 N")));
+    EXPECT_TRUE(std::isnan(parseGeographicDegrees("60 -5 N")));
+    EXPECT_TRUE(std::isnan(parseGeographicDegrees("N 60 S")));
+    EXPECT_TRUE(std::isnan(parseGeographicDegrees("60 1 2 3")));
+}
+
+TEST(WellLocationTest, ReadsTheCoordinateSystemDatumEastNorthAndElev) {
+    const WellLocation w = locationOf(
+        "~Well\n EAST.M 431234.5 :\n NORTH.M 6712345.25 :\n~Parameter\n EPSG. 32631 :\n"
+        " GDAT. WGS84 :\n DREF. DF :\n ELEV.FT 100 :\n");
+    EXPECT_DOUBLE_EQ(w.easting_m, 431234.5);
+    EXPECT_DOUBLE_EQ(w.northing_m, 6712345.25);
+    EXPECT_EQ(w.projectedSource, "EAST, NORTH");
+    EXPECT_EQ(w.crs, "32631");
+    EXPECT_EQ(w.crsSource, "EPSG");
+    EXPECT_EQ(w.geodeticDatum, "WGS84");
+    EXPECT_DOUBLE_EQ(w.referenceElevation_m, 30.48);  // ELEV, the elevation of DREF's DF
+    EXPECT_EQ(w.elevationSource, "ELEV");
+    // The item named as the reference: KB 25 m.
+    const WellLocation kb = locationOf("~Parameter\n LMF. KB :\n KB.M 25.0 :\n");
+    EXPECT_DOUBLE_EQ(kb.referenceElevation_m, 25.0);
+    EXPECT_EQ(kb.elevationSource, "KB");
+    // ELEV with the permanent datum named and no other reference.
+    const WellLocation pdat = locationOf("~Parameter\n PDAT. GL :\n ELEV.M 12.5 :\n");
+    EXPECT_DOUBLE_EQ(pdat.referenceElevation_m, 12.5);
+    EXPECT_EQ(pdat.depthReference, "GL");
+    // ELEV with nothing named is not taken to be the reference's.
+    EXPECT_TRUE(std::isnan(locationOf("~Parameter\n ELEV.M 12.5 :\n").referenceElevation_m));
+    const std::string shown = formatWellLocation(w);
+    EXPECT_NE(shown.find("crs:       32631 (EPSG)"), std::string::npos) << shown;
+}
+
+TEST(WellLocationTest, HeaderAloneIsReadFromTheFile) {
+    const auto path = caliper3d::test::scratch("header_only.las");
+    {
+        std::ofstream out(path);
+        out << "~Version\n VERS. 2.0 :\n WRAP. NO :\n~Well\n LATI. 57 1 3.0 N :\n"
+               " LONG. 111 25 8.4 W :\n~Curve\n DEPT.M :\n R1.IN :\n~A\n1 4\n2 4\n";
+    }
+    const WellLocation w = readWellLocationOf(path.string(), nullptr);
+    EXPECT_DOUBLE_EQ(w.latitude_deg, 57.0175);
+    EXPECT_NEAR(w.longitude_deg, -111.419, 1e-12);
+    // LAS 3.0: the header ends at ~Log_Data.
+    const auto las3 = caliper3d::test::scratch("header_only_3.las");
+    {
+        std::ofstream out(las3);
+        out << "~Version\n VERS. 3.0 :\n WRAP. NO :\n DLM. COMMA :\n~Well\n LATI. 34.5 :\n"
+               " LONG. -102.25 :\n GDAT. NAD83 :\n~Log_Definition\n DEPT.M :\n R1.IN :\n"
+               "~Log_Data | Log_Definition\n1,4\n2,4\n";
+    }
+    const WellLocation w3 = readWellLocationOf(las3.string(), nullptr);
+    EXPECT_DOUBLE_EQ(w3.latitude_deg, 34.5);
+    EXPECT_DOUBLE_EQ(w3.longitude_deg, -102.25);
+    EXPECT_EQ(w3.geodeticDatum, "NAD83");
+    // Not LAS, or not there: nothing.
+    const auto text = caliper3d::test::scratch("header_only.csv");
+    { std::ofstream(text) << "DEPT,R1\n1,4\n~A\n"; }
+    EXPECT_TRUE(readWellLocationOf(text.string(), nullptr).empty());
+    EXPECT_TRUE(readWellLocationOf(path.string() + ".none", nullptr).empty());
 }
 
 }  // namespace
