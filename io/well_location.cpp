@@ -9,7 +9,11 @@
 #include <sstream>
 #include <string_view>
 
+#include "io/dlis/dlis_reader.h"
+#include "io/dlis/dlis_stream.h"
 #include "io/number_parsing.h"
+#include "io/parse_error.h"
+#include "io/stream/mapped_file.h"
 #include "io/text.h"
 #include "io/units.h"
 
@@ -209,6 +213,22 @@ double parseGeographicDegrees(const std::string& textIn) {
 WellLocation readWellLocationOf(const std::string& path, Diagnostics* diagnostics) {
     std::ifstream in(path, std::ios::binary);
     if (!in) return {};
+    {
+        // DLIS: the parameters of its first logical file that gives a place.
+        std::string start(512, '\0');
+        in.read(start.data(), static_cast<std::streamsize>(start.size()));
+        start.resize(static_cast<std::size_t>(in.gcount()));
+        if (dlis::looksLikeDlis(start)) {
+            try {
+                const MappedFile file(path);
+                return readDlisWellLocation(file.bytes(), path, diagnostics);
+            } catch (const ParseError&) {
+                return {};  // the log's own read says what is wrong
+            }
+        }
+        in.clear();
+        in.seekg(0);
+    }
     // The header ends at the first log data section (~A, LAS 3's ~Log_Data); read blocks
     // until its title line (a header is a few kilobytes; the 4 MB bound keeps a file that is
     // not LAS from being read whole).

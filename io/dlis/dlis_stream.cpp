@@ -17,6 +17,7 @@
 #include "io/parse_error.h"
 #include "io/stream/depth_order.h"
 #include "io/stream/row_tally.h"
+#include "io/well_location.h"
 
 namespace caliper3d::io {
 
@@ -423,6 +424,19 @@ private:
 };
 
 }  // namespace
+
+WellLocation readDlisWellLocation(std::string_view bytes, const std::string& name,
+                                  Diagnostics* diagnostics) {
+    const DlisIndex index = dlis::indexDlis(bytes, name, nullptr);
+    WellLocation first;
+    for (std::size_t i = 0; i < index.files.size(); ++i) {
+        const LasHeader h = headerOf(index.files[i], name, {}, nullptr);
+        WellLocation location = readWellLocation(h, name, i == 0 ? diagnostics : nullptr);
+        if (i == 0) first = location;
+        if (location.hasProjected() || std::isfinite(location.latitude_deg)) return location;
+    }
+    return first;
+}
 
 LogInfo streamDlis(std::string_view bytes, const std::string& name, const ReadOptions& options,
                    const ChunkConsumer& consumer, const StreamOptions& stream,

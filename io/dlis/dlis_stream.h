@@ -8,6 +8,7 @@
 #include "io/log_info.h"
 #include "io/log_stream.h"
 #include "io/read_options.h"
+#include "io/well_location.h"
 
 namespace caliper3d::io {
 
@@ -22,5 +23,11 @@ namespace caliper3d::io {
 LogInfo streamDlis(std::string_view bytes, const std::string& name, const ReadOptions& options,
                    const ChunkConsumer& consumer, const StreamOptions& stream,
                    const std::function<void(std::size_t end)>& release = {});
+
+// The well reference point a DLIS file's parameters give (LATI, LONG, EKB...: as a LAS
+// header's, io/well_location.h), from the first logical file that gives one; empty when none
+// does. Reads the explicitly formatted records only.
+WellLocation readDlisWellLocation(std::string_view bytes, const std::string& name,
+                                  Diagnostics* diagnostics);
 
 }  // namespace caliper3d::io

@@ -16,6 +16,7 @@
 #include "io/casing_program.h"
 #include "io/dlis/dlis_reader.h"
 #include "io/log_reader.h"
+#include "io/well_location.h"
 #include "io/parse_error.h"
 #include "support/dlis_fixtures.h"
 #include "support/dlis_writer.h"
@@ -284,6 +285,11 @@ TEST(DlisFixtureTest, ParametersGiveCasingDeclinationAndLocation) {
     EXPECT_NEAR(info.location.longitude_deg, p.longitude_deg, 1e-9);
     EXPECT_NEAR(info.location.referenceElevation_m, p.kellyBushing_m, 1e-9);
     EXPECT_EQ(info.casing.size(), 1u);
+    // The header alone, as a field is placed from it (io::readWellLocationOf).
+    const caliper3d::io::WellLocation head = caliper3d::io::readWellLocationOf(path, nullptr);
+    EXPECT_NEAR(head.latitude_deg, p.latitude_deg, 1e-9);
+    EXPECT_NEAR(head.longitude_deg, p.longitude_deg, 1e-9);
+    EXPECT_NEAR(head.referenceElevation_m, p.kellyBushing_m, 1e-9);
 }
 
 TEST(DlisFixtureTest, EverySegmentLayoutGivesTheSameTable) {
