@@ -77,14 +77,23 @@ double boxDistance(const Bounds& a, const Bounds& b) {
     return glm::length(gap);
 }
 
-double polylineDistance(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& b) {
+// The closest approach of polylines `a` and `b` where it is under `limit` (some distance at
+// least `limit` otherwise): a segment of `a` that far from the box around `b` is passed over.
+double polylineDistance(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& b,
+                        double limit = std::numeric_limits<double>::infinity()) {
     if (a.empty() || b.empty()) return std::numeric_limits<double>::infinity();
-    double best = std::numeric_limits<double>::infinity();
+    Bounds around;
+    for (const glm::dvec3& q : b) around.add(q);
+    double best = limit;
     // A single point is a segment of no length.
     const std::size_t na = std::max<std::size_t>(1, a.size() - 1);
     const std::size_t nb = std::max<std::size_t>(1, b.size() - 1);
     for (std::size_t i = 0; i < na; ++i) {
         const glm::dvec3& p1 = a[std::min(i + 1, a.size() - 1)];
+        Bounds segment;
+        segment.add(a[i]);
+        segment.add(p1);
+        if (boxDistance(segment, around) >= best) continue;
         for (std::size_t j = 0; j < nb; ++j)
             best =
                 std::min(best, segmentDistance(a[i], p1, b[j], b[std::min(j + 1, b.size() - 1)]));
@@ -177,11 +186,11 @@ double chooseExaggeration(
     for (std::size_t i = 0; i < drawn.size(); ++i)
         for (std::size_t j = i + 1; j < drawn.size(); ++j) {
             const double radii = drawn[i].maxRadius_m + drawn[j].maxRadius_m;
-            // Boxes this far apart allow the factor already: no need to look closer.
-            if (boxDistance(drawn[i].box, drawn[j].box) * kTubeClearance >= factor * radii)
-                continue;
+            // Paths this far apart allow the factor already: no need to look closer.
+            const double enough = factor * radii / kTubeClearance;
+            if (boxDistance(drawn[i].box, drawn[j].box) >= enough) continue;
             const double most =
-                separatedExaggeration(polylineDistance(drawn[i].path, drawn[j].path),
+                separatedExaggeration(polylineDistance(drawn[i].path, drawn[j].path, enough),
                                       drawn[i].maxRadius_m, drawn[j].maxRadius_m);
             if (most >= 1.0) factor = std::min(factor, most);
         }
