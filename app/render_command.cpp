@@ -232,7 +232,8 @@ int runRender(const QStringList& args) {
                         "a north arrow and the radial exaggeration. Unless --exaggerate is given, "
                         "radii are drawn\n"
                         "large enough that the hole reads as a tube (at least 1.5 % of the\n"
-                        "picture's height across); looking down the hole, as logged.");
+                        "picture's height across), never so large that two wells' tubes touch;\n"
+                        "looking down the hole, as logged.");
         QCommandLineParser& p = verb.parser();
         addRenderOptions(p);
         addSummaryOption(p);

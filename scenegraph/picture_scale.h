@@ -33,9 +33,25 @@ constexpr double kMinDrawnDiameter_px = 4.0;
 constexpr double kMaxExaggeration = 1000.0;  // as --exaggerate allows
 double autoExaggeration(double extent_m, double typicalRadius_m, int pictureHeight_px);
 
+// Several wells in one scene (a field): the chosen factor never makes two wells' tubes touch.
+// For every two wells A and B it is at most the largest factor F of the 1-2-3-5 series with
+//     F (RA + RB) <= kTubeClearance d
+// where RA, RB are the largest arm radii logged and d the closest approach of the two logged
+// paths (3D, anywhere along them: tubes meet only where their axes come within the sum of
+// their drawn radii, whatever the depths, so deviated wells crossing at different measured
+// depths are caught too). A section is drawn F times larger about its centroid, which lies
+// within R of the path, so a drawn point lies within (2F - 1) R of it (as the level-of-detail
+// bound says); with kTubeClearance = 1/2 the tubes keep at least RA + RB between them even
+// then, and look apart. Two wells that no factor from 1 keeps apart (the same hole logged
+// twice, a sidetrack leaving its parent) share their hole and do not limit it.
+constexpr double kTubeClearance = 0.5;
+// That largest factor, or 0 when even 1 does not keep them apart.
+double separatedExaggeration(double closestApproach_m, double maxRadiusA_m, double maxRadiusB_m);
+
 // The exaggeration a picture `pictureHeight_px` high chooses for `wells` over measured depths
 // [top_m, bottom_m]: autoExaggeration of the extent of each well's logged path there (the
-// path above the log is not what the picture frames) and the thinnest well's typical radius.
+// path above the log is not what the picture frames) and the thinnest well's typical radius,
+// then at most what separatedExaggeration allows every two of the wells.
 // `caliper3d render` and the window, which opens with it, both draw with this.
 double chooseExaggeration(
     const std::vector<std::shared_ptr<const reconstruction::WellGeometry>>& wells, double top_m,
@@ -43,6 +59,8 @@ double chooseExaggeration(
 
 // The smallest of 1, 2, 3, 5 times a power of ten that is at least `value` (> 0).
 double roundUpToSeries(double value);
+// The largest of 1, 2, 3, 5 times a power of ten that is at most `value` (> 0).
+double roundDownToSeries(double value);
 
 // The box around a set of points (scene or analysis frame), empty until one is added.
 struct Bounds {
@@ -61,5 +79,15 @@ void addPathBounds(const reconstruction::WellGeometry& geometry, double top_m, d
 // The median arm radius, in metres, of the rows with data in [top_m, bottom_m] (sampled to a
 // few thousand rows); NaN when there are none.
 double typicalRadius_m(const reconstruction::WellGeometry& geometry, double top_m, double bottom_m);
+
+// The largest arm radius, in metres, of the rows with data in [top_m, bottom_m]; NaN when
+// there are none.
+double maxRadius_m(const reconstruction::WellGeometry& geometry, double top_m, double bottom_m);
+
+// The closest approach, in metres, of the paths of `a` and `b` over measured depths
+// [top_m, bottom_m] (their rows, sampled to a few hundred, joined by straight lines);
+// infinity when either has no row there.
+double closestApproach_m(const reconstruction::WellGeometry& a,
+                         const reconstruction::WellGeometry& b, double top_m, double bottom_m);
 
 }  // namespace caliper3d::scenegraph

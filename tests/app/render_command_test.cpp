@@ -100,6 +100,43 @@ TEST(RenderCommandTest, DefaultPictureOfAKilometreWellDrawsTheHoleAsATube) {
     EXPECT_LT(medianWallWidth(QImage(QString::fromStdString(asLogged))), 5);
 }
 
+// Across each picture row between 30 % and 70 % of its height, left of the colour legend,
+// the runs of pixels that are not the background: their median count (a tick or label joins
+// a few rows only).
+int medianDrawnRuns(const QImage& picture) {
+    const QRgb background = picture.pixel(0, 0);
+    std::vector<int> counts;
+    for (int y = picture.height() * 3 / 10; y < picture.height() * 7 / 10; ++y) {
+        int runs = 0;
+        bool inRun = false;
+        for (int x = 0; x < picture.width() * 7 / 10; ++x) {
+            const bool drawn = picture.pixel(x, y) != background;
+            runs += drawn && !inRun ? 1 : 0;
+            inRun = drawn;
+        }
+        counts.push_back(runs);
+    }
+    std::nth_element(counts.begin(), counts.begin() + static_cast<long>(counts.size() / 2),
+                     counts.end());
+    return counts[counts.size() / 2];
+}
+
+TEST(RenderCommandTest, TwoWellsTenMetresApartAreDrawnApart) {
+    // Two 1 km gauge holes, their wellheads 10 m apart north, seen from the east: alone each
+    // would be drawn x 100 (22 m across, the two one band); the default keeps them apart (x 20).
+    const std::string well = kilometreWell();
+    const std::string wells =
+        well + " --wellhead 0,0,0 " + well + " --wellhead 0,10,0 --view east -o ";
+    const std::string png = scratch("render_two_wells.png").string();
+    const CommandRun r = runCaliper3d("render " + wells + png);
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_EQ(medianDrawnRuns(QImage(QString::fromStdString(png))), 2);
+    // A factor given is drawn as given, touching or not.
+    const std::string given = scratch("render_two_wells_x100.png").string();
+    ASSERT_EQ(runCaliper3d("render " + wells + given + " --exaggerate 100").status, 0);
+    EXPECT_EQ(medianDrawnRuns(QImage(QString::fromStdString(given))), 1);
+}
+
 TEST(RenderCommandTest, DefaultPictureOfAShortLogDeepInAWellFramesTheLog) {
     // 10 m of 8.5 in hole logged from 2000 m: the path from the wellhead is 200 times longer.
     const auto path = scratch("render_deep_10m.txt");

@@ -1,8 +1,15 @@
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
+#include "reconstruction/mesh/lod_levels.h"
+#include "reconstruction/section/section_frame.h"
 #include "reconstruction/synthetic/synthetic_well.h"
 #include "reconstruction/well_geometry.h"
 #include "scenegraph/picture_scale.h"
@@ -45,6 +52,17 @@ TEST(PictureScaleTest, RoundsUpToOneTwoThreeFive) {
     EXPECT_DOUBLE_EQ(roundUpToSeries(300.0), 300.0);
 }
 
+TEST(PictureScaleTest, RoundsDownToOneTwoThreeFive) {
+    EXPECT_DOUBLE_EQ(roundDownToSeries(1.0), 1.0);
+    EXPECT_DOUBLE_EQ(roundDownToSeries(1.9), 1.0);
+    EXPECT_DOUBLE_EQ(roundDownToSeries(2.5), 2.0);
+    EXPECT_DOUBLE_EQ(roundDownToSeries(4.9), 3.0);
+    EXPECT_DOUBLE_EQ(roundDownToSeries(23.16), 20.0);
+    EXPECT_DOUBLE_EQ(roundDownToSeries(100.0), 100.0);
+    EXPECT_DOUBLE_EQ(roundDownToSeries(999.0), 500.0);
+    EXPECT_DOUBLE_EQ(roundDownToSeries(0.7), 0.5);
+}
+
 TEST(PictureScaleTest, AutoExaggerationOfKnownWells) {
     const double r = 0.10795;  // 8.5 in bit
     // 1.5 % of 1000 m is 15 m of diameter: 69.5 times the 0.2159 m hole, stated as 100.
@@ -80,6 +98,78 @@ TEST(PictureScaleTest, TypicalRadiusAndExtentOfAGaugeWell) {
     EXPECT_NEAR(whole.diagonal(), 1000.0, 1e-6);
     EXPECT_NEAR(part.diagonal(), 100.0, 1e-6);
     EXPECT_TRUE(Bounds().empty());
+}
+
+// A `profile` well 1000 m long (8.5 in bit), its wellhead `north_m`, `east_m` from the origin.
+std::shared_ptr<const reconstruction::WellGeometry> wellAt(const std::string& profile,
+                                                           double north_m, double east_m = 0.0) {
+    auto table = std::make_shared<const io::SectionTable>(
+        reconstruction::makeSyntheticWell(reconstruction::syntheticProfile(profile, 1000, 0.5)));
+    reconstruction::GeometryOptions options;
+    options.wellheadOffset = {north_m, east_m, 0.0};
+    return std::make_shared<const reconstruction::WellGeometry>(table, options);
+}
+
+TEST(PictureScaleTest, SeparatedExaggerationKeepsHalfTheSpacingBetweenTheTubes) {
+    const double r = 0.10795;
+    // 10 m apart: 0.5 x 10 / 0.2159 = 23.2, stated as 20.
+    EXPECT_DOUBLE_EQ(separatedExaggeration(10.0, r, r), 20.0);
+    EXPECT_DOUBLE_EQ(separatedExaggeration(100.0, r, r), 200.0);
+    EXPECT_DOUBLE_EQ(separatedExaggeration(1.0e6, r, r), kMaxExaggeration);
+    // Closer than twice the two radii: no factor from 1 keeps them apart.
+    EXPECT_DOUBLE_EQ(separatedExaggeration(0.4, r, r), 0.0);
+    EXPECT_DOUBLE_EQ(separatedExaggeration(0.0, r, r), 0.0);
+}
+
+TEST(PictureScaleTest, ClosestApproachOfTwoVerticalWells) {
+    const auto a = wellAt("circle", 0.0);
+    EXPECT_NEAR(closestApproach_m(*a, *wellAt("circle", 10.0), 0.0, 1000.0), 10.0, 1e-6);
+    EXPECT_NEAR(closestApproach_m(*a, *wellAt("circle", 6.0, 8.0), 0.0, 1000.0), 10.0, 1e-6);
+    EXPECT_NEAR(closestApproach_m(*a, *a, 0.0, 1000.0), 0.0, 1e-9);
+    EXPECT_NEAR(maxRadius_m(*a, 0.0, 1000.0), 0.10795, 1e-9);
+}
+
+TEST(PictureScaleTest, TwoWellsTenMetresApartGetAFactorThatKeepsThemApart) {
+    const auto a = wellAt("circle", 0.0);
+    const double inf = std::numeric_limits<double>::infinity();
+    EXPECT_DOUBLE_EQ(chooseExaggeration({a}, 0.0, inf, 768), 100.0);  // alone, as before
+    EXPECT_DOUBLE_EQ(chooseExaggeration({a, wellAt("circle", 10.0)}, 0.0, inf, 768), 20.0);
+    // 100 m apart they allow x 200: the picture's x 100 stands.
+    EXPECT_DOUBLE_EQ(chooseExaggeration({a, wellAt("circle", 100.0)}, 0.0, inf, 768), 100.0);
+    // The same hole twice: no factor keeps it apart from itself, and it is drawn as alone.
+    EXPECT_DOUBLE_EQ(chooseExaggeration({a, wellAt("circle", 0.0)}, 0.0, inf, 768), 100.0);
+    // Three wells: the nearest two decide.
+    EXPECT_DOUBLE_EQ(
+        chooseExaggeration({a, wellAt("circle", 100.0), wellAt("circle", 0.0, 5.0)}, 0.0, inf, 768),
+        10.0);
+}
+
+// The farthest any drawn wall point lies from the path, over rows sampled every 10 m.
+double drawnReach_m(const reconstruction::WellGeometry& g) {
+    double reach = 0.0;
+    for (std::size_t row = 0; row < g.table().rowCount(); row += 20) {
+        const glm::dvec3 centre = reconstruction::toScene(g.centre(row));
+        for (const glm::vec3& p : reconstruction::sectionRing(g, row))
+            reach = std::max(reach, glm::length(glm::dvec3(p) - centre));
+    }
+    return reach;
+}
+
+TEST(PictureScaleTest, TubesAtTheChosenFactorDoNotOverlap) {
+    const double inf = std::numeric_limits<double>::infinity();
+    for (const char* profile : {"circle", "offcentre", "washout"}) {
+        const auto a = wellAt(profile, 0.0), b = wellAt(profile, 10.0);
+        const double factor = chooseExaggeration({a, b}, 0.0, inf, 768);
+        const double alone = chooseExaggeration({a}, 0.0, inf, 768);
+        ASSERT_LT(factor, alone) << profile;  // the limit is what decides here
+        const double spacing = closestApproach_m(*a, *b, 0.0, 1000.0);
+        const auto clearance = [&](double f) {
+            return spacing - drawnReach_m(a->restyled(f, nullptr)) -
+                   drawnReach_m(b->restyled(f, nullptr));
+        };
+        EXPECT_GT(clearance(factor), 0.0) << profile << " x" << factor;
+        EXPECT_LT(clearance(alone), 0.0) << profile << " x" << alone;  // as drawn before
+    }
 }
 
 }  // namespace
