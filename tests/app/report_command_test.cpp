@@ -11,53 +11,17 @@
 #include <gtest/gtest.h>
 
 #include "cli_run.h"
+#include "csv_table.h"
 #include "test_support.h"
 
 using caliper3d::test::CommandRun;
+using caliper3d::test::Csv;
+using caliper3d::test::parseCsv;
+using caliper3d::test::readCsv;
 using caliper3d::test::runCaliper3d;
 using caliper3d::test::scratch;
 
 namespace {
-
-// A CSV file as rows of named fields.
-struct Csv {
-    std::vector<std::string> names;
-    std::vector<std::map<std::string, std::string>> rows;
-    double number(std::size_t row, const std::string& name) const {
-        const std::string& text = rows.at(row).at(name);
-        return text.empty() ? std::nan("") : std::stod(text);
-    }
-};
-
-std::vector<std::string> split(const std::string& line) {
-    std::vector<std::string> out;
-    std::stringstream in(line);
-    std::string field;
-    while (std::getline(in, field, ',')) out.push_back(field);
-    if (!line.empty() && line.back() == ',') out.emplace_back();
-    return out;
-}
-
-Csv parseCsv(std::istream& in) {
-    Csv csv;
-    std::string line;
-    if (!std::getline(in, line)) return csv;
-    csv.names = split(line);
-    while (std::getline(in, line)) {
-        const std::vector<std::string> fields = split(line);
-        EXPECT_EQ(fields.size(), csv.names.size()) << line;
-        std::map<std::string, std::string> row;
-        for (std::size_t k = 0; k < fields.size() && k < csv.names.size(); ++k)
-            row[csv.names[k]] = fields[k];
-        csv.rows.push_back(std::move(row));
-    }
-    return csv;
-}
-
-Csv readCsv(const std::filesystem::path& path) {
-    std::ifstream in(path);
-    return parseCsv(in);
-}
 
 std::string synth(const std::string& profile, double length, double step) {
     const std::string log = scratch("report_" + profile + ".txt").string();
