@@ -52,7 +52,8 @@ WellLocation readWellLocation(const LasHeader& header, const std::string& file,
                               Diagnostics* diagnostics);
 
 // Reads the location from the header of the LAS file at `path` alone (up to its ~A line),
-// without reading its rows: empty for a file that is not LAS text or cannot be read.
+// or from a DLIS file's parameters (its first logical file that gives a place), without
+// reading its rows: empty for column text or a file that cannot be read.
 WellLocation readWellLocationOf(const std::string& path, Diagnostics* diagnostics);
 
 // "57.0175 N", "-111.419 W", "56.934500 degrees", "57 1 3.0 N", "57°1'3.0\"N", "N57 01 03"
