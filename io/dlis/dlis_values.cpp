@@ -209,20 +209,17 @@ Value Cursor::value(int code) {
     switch (code) {
         case kFSING1:
         case kCSINGL:
-        case kFSING2: {
-            const std::size_t n = code == kFSING2 ? 3 : 2;
-            const unsigned char* p = take(4 * n);
-            std::vector<double> parts;
-            for (std::size_t i = 0; i < n; ++i) parts.push_back(ieeeSingle(p + 4 * i));
-            return parts;
-        }
+        case kFSING2:
         case kFDOUB1:
         case kCDOUBL:
         case kFDOUB2: {
-            const std::size_t n = code == kFDOUB2 ? 3 : 2;
-            const unsigned char* p = take(8 * n);
+            // Compounds: two or three IEEE components of 4 or 8 bytes.
+            const std::size_t n = code == kFSING2 || code == kFDOUB2 ? 3 : 2;
+            const std::size_t part = repCodeSize(code) / n;
+            const unsigned char* p = take(part * n);
             std::vector<double> parts;
-            for (std::size_t i = 0; i < n; ++i) parts.push_back(ieeeDouble(p + 8 * i));
+            for (std::size_t i = 0; i < n; ++i)
+                parts.push_back(part == 4 ? ieeeSingle(p + 4 * i) : ieeeDouble(p + 8 * i));
             return parts;
         }
         case kUVARI:
