@@ -64,18 +64,17 @@ bool waitUntil(Predicate done, int ms) {
 }
 
 // A synthetic well written as column text into the scratch folder (kept between runs when
-// it is there already: the 4 km one takes seconds to write).
+// it is there already: the 4 km one takes seconds to write). Tests run as separate processes
+// at once may both find it missing: the writer's temporary is named by its process and the
+// rename is atomic, so each writes its own whole copy and the last rename wins, never part of one.
 inline std::filesystem::path syntheticLog(const std::string& profile, double length_m,
                                           double step_m) {
     const auto path = scratch("desktop_" + profile + "_" + std::to_string(int(length_m)) + "m_" +
                               std::to_string(int(step_m * 1000)) + "mm.txt");
-    if (!std::filesystem::exists(path)) {
-        const auto partial = path.string() + ".part";
-        io::writeColumnTextFile(partial,
+    if (!std::filesystem::exists(path))
+        io::writeColumnTextFile(path.string(),
                                 reconstruction::makeSyntheticWell(
                                     reconstruction::syntheticProfile(profile, length_m, step_m)));
-        std::filesystem::rename(partial, path);
-    }
     return path;
 }
 
