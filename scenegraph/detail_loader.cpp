@@ -66,6 +66,9 @@ bool DetailLoader::tick() {
     }
     const std::optional<DetailView> view = m_probe ? m_probe() : std::nullopt;
     if (view && (m_changed || !m_last || !sameView(*view, *m_last))) request(*view);
+    // Levels attached or dropped left their spans' boxes stale (no culling there until
+    // recomputed); where nothing changed the root's valid cache answers at once.
+    for (auto& [key, entry] : m_wells) entry.scene->cacheBounds();
     return m_requested.empty() && m_worker->pending() == 0;
 }
 
@@ -88,8 +91,8 @@ void DetailLoader::request(const DetailView& view) {
             if (m_requested.count({key, r.segment})) continue;
             wanted.push_back({r.distance, {key, entry.geometry, r.segment, r.level, r.heldFrom}});
         }
-        entry.scene->evictFineLevels(m_budget / std::max<std::size_t>(m_wells.size(), 1));
     }
+    evictBeyondBudget();
     std::sort(wanted.begin(), wanted.end(),
               [](const Wanted& a, const Wanted& b) { return a.distance < b.distance; });
     std::vector<reconstruction::DetailJob> jobs;
@@ -99,6 +102,30 @@ void DetailLoader::request(const DetailView& view) {
         jobs.push_back(std::move(w.job));
     }
     m_worker->replaceJobs(std::move(jobs));
+}
+
+void DetailLoader::evictBeyondBudget() {
+    // One budget for the whole scene: the segments idle longest go first, whichever well
+    // holds them (each well counts its wants alike: every request asks every well).
+    std::size_t held = 0;
+    struct Idle {
+        WellScene* scene;
+        WellScene::IdleDetail detail;
+    };
+    std::vector<Idle> idle;
+    for (auto& [key, entry] : m_wells) {
+        held += entry.scene->fineTriangles();
+        for (const WellScene::IdleDetail& d : entry.scene->idleDetail())
+            idle.push_back({entry.scene, d});
+    }
+    if (held <= m_budget) return;
+    std::sort(idle.begin(), idle.end(),
+              [](const Idle& a, const Idle& b) { return a.detail.idleFor > b.detail.idleFor; });
+    for (const Idle& i : idle) {
+        if (held <= m_budget) break;
+        i.scene->dropFineLevels(i.detail.segment);
+        held -= i.detail.triangles;
+    }
 }
 
 }  // namespace caliper3d::scenegraph

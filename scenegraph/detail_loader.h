@@ -30,8 +30,9 @@ struct DetailView {
 // watches the camera; when it moves (or the viewport or field of view changes) each well says
 // which finer levels its segments want (WellScene::wantedDetail), the worker builds them,
 // nearest first, and the timer attaches what it built, then drops the finer levels least
-// recently wanted beyond the triangle budget. The coarse levels stay meanwhile, so a segment
-// is never missing. Main thread only; the worker makes no Coin call.
+// recently wanted beyond the triangle budget, one budget for every well of the scene. The
+// coarse levels stay meanwhile, so a segment is never missing. Main thread only; the worker makes
+// no Coin call.
 class DetailLoader {
 public:
     using CameraProbe = std::function<std::optional<DetailView>()>;
@@ -56,6 +57,8 @@ public:
 private:
     static void onTimer(void* data, SoSensor*);
     void request(const DetailView& view);
+    // Drops the finer levels idle longest, across every well, until those held fit the budget.
+    void evictBeyondBudget();
 
     struct Entry {
         WellScene* scene = nullptr;

@@ -61,6 +61,20 @@ F load(const char* name) {
     if (!f) throw std::runtime_error(std::string("offscreen rendering: OpenGL lacks ") + name);
     return f;
 }
+
+// The framebuffer's pixels into `image`, top row first.
+void readPixels(RenderedImage& image, int width, int height) {
+    image.width = width;
+    image.height = height;
+    image.rgba.resize(static_cast<std::size_t>(width) * height * 4);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    std::vector<std::uint8_t> bottomUp(image.rgba.size());
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, bottomUp.data());
+    const std::size_t stride = static_cast<std::size_t>(width) * 4;
+    for (int y = 0; y < height; ++y)
+        std::memcpy(&image.rgba[static_cast<std::size_t>(y) * stride],
+                    &bottomUp[static_cast<std::size_t>(height - 1 - y) * stride], stride);
+}
 }  // namespace
 
 OffscreenRenderer::OffscreenRenderer() = default;
@@ -147,20 +161,18 @@ RenderedImage OffscreenRenderer::draw(SoNode* scene, int width, int height,
         SbViewportRegion(static_cast<short>(width), static_cast<short>(height)));
     action.setCacheContext(c.cacheContext);
     action.setTransparencyType(SoGLRenderAction::SORTED_OBJECT_BLEND);
+    RenderedImage image;
+    action.setAbortCallback(
+        [](void* visited) {
+            ++*static_cast<std::size_t*>(visited);
+            return SoGLRenderAction::CONTINUE;
+        },
+        &image.nodesVisited);
     action.apply(scene);
     glFinish();
+    action.setAbortCallback(nullptr, nullptr);
 
-    RenderedImage image;
-    image.width = width;
-    image.height = height;
-    image.rgba.resize(static_cast<std::size_t>(width) * height * 4);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    std::vector<std::uint8_t> bottomUp(image.rgba.size());
-    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, bottomUp.data());
-    const std::size_t stride = static_cast<std::size_t>(width) * 4;
-    for (int y = 0; y < height; ++y)
-        std::memcpy(&image.rgba[static_cast<std::size_t>(y) * stride],
-                    &bottomUp[static_cast<std::size_t>(height - 1 - y) * stride], stride);
+    readPixels(image, width, height);
 
     if (frameMs && timedFrames > 0) {
         const auto start = std::chrono::steady_clock::now();

@@ -14,6 +14,10 @@ struct RenderedImage {
     int width = 0;
     int height = 0;
     std::vector<std::uint8_t> rgba;
+    // Nodes the render action entered to draw it: of each SoLOD only the child it picks, and
+    // nothing below a separator culled outside the view (counted by the action's abort
+    // callback, which Coin asks before each child it traverses).
+    std::size_t nodesVisited = 0;
 
     // Pixels whose colour differs from the top-left (background) pixel.
     std::size_t nonBackgroundPixels() const;

@@ -15,6 +15,7 @@
 #include <Inventor/nodes/SoSeparator.h>
 
 #include "reconstruction/analysis/report_writer.h"
+#include "reconstruction/mesh/lod_levels.h"
 #include "scenegraph/main_thread.h"
 #include "scenegraph/well_scene.h"
 
@@ -23,37 +24,68 @@ namespace caliper3d::scenegraph {
 namespace {
 
 // Which well, segment and level a picked path runs through:
-//   well root, segment group, segment SoLOD, level node [, part SoLOD, full | reduced copy]
-// (WellScene, makeSegmentLod, makeLevelNode). The path line's picks go elsewhere.
+//   well root, segment group, spans ..., segment SoLOD, level node [, part SoLOD, full | reduced]
+// or, where a span draws its merged mesh, ..., span SoLOD, merged mesh (WellScene,
+// makeSegmentLod, makeLevelNode). The path line's picks go elsewhere.
 struct PathHit {
     std::size_t well = 0;
     std::size_t segment = 0;
     int level = 0;
     bool inParts = false;
     bool reducedPart = false;
+    int spanDepth = 0;  // > 0: a span's merged mesh, rows [firstRow, lastRow]
+    std::size_t firstRow = 0;
+    std::size_t lastRow = 0;
 };
 
 std::optional<PathHit> wallOf(const SoPath* path, const std::vector<PickableWell>& wells) {
     const int n = path->getLength();
-    for (int i = 0; i + 3 < n; ++i) {
+    for (int i = 0; i + 1 < n; ++i) {
         for (std::size_t w = 0; w < wells.size(); ++w) {
             const WellScene& scene = *wells[w].scene;
             if (path->getNode(i) != scene.root()) continue;
             if (path->getNode(i + 1) != scene.segmentGroup()) return std::nullopt;
-            PathHit hit;
-            hit.well = w;
-            hit.segment = static_cast<std::size_t>(path->getIndex(i + 2));
-            if (hit.segment >= scene.segmentCount()) return std::nullopt;
-            // A segment's SoLOD holds its levels from the finest it holds on.
-            hit.level = scene.heldFrom(hit.segment) + path->getIndex(i + 3);
-            if (i + 5 < n && path->getNode(i + 4)->isOfType(SoLOD::getClassTypeId())) {
-                hit.inParts = true;
-                hit.reducedPart = path->getIndex(i + 5) == 1;
+            for (int j = i + 2; j + 1 < n; ++j) {
+                const SoNode* node = path->getNode(j);
+                if (const auto segment = scene.segmentOfLod(node)) {
+                    PathHit hit;
+                    hit.well = w;
+                    hit.segment = *segment;
+                    // A segment's SoLOD holds its levels from the finest it holds on.
+                    hit.level = scene.heldFrom(hit.segment) + path->getIndex(j + 1);
+                    if (j + 3 < n && path->getNode(j + 2)->isOfType(SoLOD::getClassTypeId())) {
+                        hit.inParts = true;
+                        hit.reducedPart = path->getIndex(j + 3) == 1;
+                    }
+                    return hit;
+                }
+                if (const auto span = scene.spanOfLod(node)) {
+                    if (path->getIndex(j + 1) != 1) continue;  // its children: further down
+                    PathHit hit;
+                    hit.well = w;
+                    hit.spanDepth = span->depth;
+                    hit.firstRow = span->firstRow;
+                    hit.lastRow = span->lastRow;
+                    return hit;
+                }
             }
-            return hit;
+            return std::nullopt;
         }
     }
     return std::nullopt;
+}
+
+// The segment holding `row` (segments share their end rows: the first that holds it).
+std::size_t segmentOfRow(const reconstruction::WellGeometry& g, std::size_t row) {
+    std::size_t lo = 0, hi = g.segmentCount();
+    while (lo + 1 < hi) {
+        const std::size_t mid = (lo + hi) / 2;
+        if (g.segmentRows(mid).first <= row)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return lo;
 }
 
 void checkWells(const std::vector<PickableWell>& wells) {
@@ -84,11 +116,19 @@ std::optional<SectionPick> nearestWall(SoRayPickAction& action, SoNode* root,
         out.level = hit->level;
         out.inParts = hit->inParts;
         out.reducedPart = hit->reducedPart;
+        out.spanDepth = hit->spanDepth;
         const SbVec3f& p = point->getPoint();
         out.point = glm::vec3(p[0], p[1], p[2]);
-        const auto [firstRow, lastRow] = well.geometry->segmentRows(hit->segment);
+        const auto [firstRow, lastRow] = hit->spanDepth > 0
+                                             ? std::pair(hit->firstRow, hit->lastRow)
+                                             : well.geometry->segmentRows(hit->segment);
         out.wall = reconstruction::locateWallPoint(*well.geometry, firstRow, lastRow,
                                                    glm::dvec3(out.point));
+        if (hit->spanDepth > 0) {
+            out.segment = segmentOfRow(*well.geometry, out.wall.row);
+            out.level =
+                static_cast<int>(reconstruction::lodPyramid(well.geometry->options()).size());
+        }
         out.section = well.analysis->sections[out.wall.row];
         return out;
     }
@@ -167,6 +207,7 @@ std::string formatSectionPick(const SectionPick& pick) {
     line("segment", std::to_string(pick.segment));
     line("level", std::to_string(pick.level));
     if (pick.inParts) line("part", pick.reducedPart ? "reduced" : "every_section");
+    if (pick.spanDepth > 0) line("span_depth", std::to_string(pick.spanDepth));
     line("angle_from_high_side_deg", valueOf(pick.wall.fromHighSide_deg, 2));
     line("angle_azimuth_deg", valueOf(pick.wall.azimuth_deg, 2));
     line("angle_from_arm1_deg", valueOf(pick.wall.fromArm1_deg, 2));

@@ -37,9 +37,12 @@ struct SectionPick {
     std::size_t segment = 0;
     // The pyramid level drawn where the ray met the wall (reconstruction/mesh/lod_levels.h),
     // and at level 0 cut into parts, whether the part drew its reduced copy.
+    // Where a span of the tree drew its merged mesh instead (reconstruction/mesh/lod_tree.h):
+    // its depth (0: none), with `level` one past the pyramid's coarsest.
     int level = 0;
     bool inParts = false;
     bool reducedPart = false;
+    int spanDepth = 0;
     glm::vec3 point{0.0f};           // where the ray met the wall as drawn (scene frame)
     reconstruction::WallPoint wall;  // the section (row), the angles, the true radius there
     // The report's row for that section (its MD is section.md_m): what `caliper3d report`
@@ -63,11 +66,11 @@ std::optional<SectionPick> pickSection(SoNode* root, const SbViewportRegion& vie
                                        const std::vector<PickableWell>& wells);
 
 // The pick as `key=value` lines: well, well_name, section (row), segment, level (and part at
-// level 0 in parts), angle_from_high_side_deg, angle_azimuth_deg, angle_from_arm1_deg,
-// radius_mm (the true section at that angle), scene_point_m (x,y,z as drawn), then every
-// column of the report's CSV for that section with the report's digits. An undefined value
-// is empty, as in the report; a section without data says no_data for each measurement.
-// Decimal points whatever the locale.
+// level 0 in parts, span_depth on a span's merged mesh), angle_from_high_side_deg,
+// angle_azimuth_deg, angle_from_arm1_deg, radius_mm (the true section at that angle), scene_point_m
+// (x,y,z as drawn), then every column of the report's CSV for that section with the report's
+// digits. An undefined value is empty, as in the report; a section without data says no_data for
+// each measurement. Decimal points whatever the locale.
 std::string formatSectionPick(const SectionPick& pick);
 
 }  // namespace caliper3d::scenegraph

@@ -42,8 +42,11 @@ bool SegmentFeeder::drainOnce() {
             m_scene.addSegment(*segment);
             ++m_attached;
             if (m_callbacks.progress) m_callbacks.progress(m_attached);
+        } else if (auto* span = std::get_if<reconstruction::SpanMesh>(&event)) {
+            m_scene.addSpan(*span);
         } else if (auto* finished = std::get_if<reconstruction::LoadFinished>(&event)) {
             m_done = true;
+            m_scene.cacheBounds();  // culling needs the spans' boxes
             if (m_callbacks.finished) m_callbacks.finished(finished->segments);
         } else if (auto* failed = std::get_if<reconstruction::LoadFailed>(&event)) {
             m_done = true;

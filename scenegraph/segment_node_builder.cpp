@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 
 #include <Inventor/nodes/SoGroup.h>
 #include <Inventor/nodes/SoIndexedTriangleStripSet.h>
 #include <Inventor/nodes/SoLOD.h>
+#include <Inventor/nodes/SoSeparator.h>
 #include <Inventor/nodes/SoVertexProperty.h>
 
 #include "scenegraph/main_thread.h"
@@ -49,6 +52,23 @@ SoIndexedTriangleStripSet* makeStrips(SoVertexProperty* vp,
 }
 
 }  // namespace
+
+bool renderCachingWanted() {
+    static const bool wanted = [] {
+        const char* value = std::getenv("CALIPER3D_RENDER_CACHING");
+        return !(value && std::strcmp(value, "off") == 0);
+    }();
+    return wanted;
+}
+
+SoNode* cacheableShape(SoNode* shape) {
+    if (!renderCachingWanted()) return shape;
+    auto* separator = new SoSeparator;
+    separator->renderCaching = SoSeparator::ON;
+    separator->renderCulling = SoSeparator::OFF;  // the span above culls
+    separator->addChild(shape);
+    return separator;
+}
 
 SoIndexedTriangleStripSet* makeStripSet(const reconstruction::Mesh& mesh) {
     assertMainThread("makeStripSet");
@@ -96,15 +116,16 @@ SoNode* makeLevelNode(const reconstruction::SegmentMesh& segment, int level, con
     assertMainThread("makeLevelNode");
     const reconstruction::Mesh& mesh =
         segment.levels.at(static_cast<std::size_t>(level - segment.firstLevel));
-    if (level != 0 || segment.parts.empty()) return makeStripSet(mesh);
+    if (level != 0 || segment.parts.empty()) return cacheableShape(makeStripSet(mesh));
     auto* group = new SoGroup;
     SoVertexProperty* vp = makeVertexProperty(mesh);
     for (const reconstruction::DetailPart& part : segment.parts) {
         auto* lod = new SoLOD;
         lod->center.setValue(part.centre.x, part.centre.y, part.centre.z);
         lod->range.setValue(partSwitchDistance(part, segment.partError_mm, view));
-        lod->addChild(makeStrips(vp, mesh.stripIndices, part.stripBegin, part.stripEnd));
-        lod->addChild(makeStripSet(part.reduced));
+        lod->addChild(
+            cacheableShape(makeStrips(vp, mesh.stripIndices, part.stripBegin, part.stripEnd)));
+        lod->addChild(cacheableShape(makeStripSet(part.reduced)));
         group->addChild(lod);
     }
     return group;

@@ -60,6 +60,14 @@ SoNode* makeLevelNode(const reconstruction::SegmentMesh& segment, int level, con
 void setPartRanges(SoNode* levelNode, const reconstruction::SegmentMesh& shape,
                    const LodView& view);
 
+// `shape` under a separator of its own whose render cache Coin may compile (a display list
+// drawn in one call instead of a vertex at a time), or `shape` itself, as
+// renderCachingWanted() says. Every static mesh of a well goes through here: an SoLOD forbids
+// caching above it, so a cache can only sit below the level switches.
+SoNode* cacheableShape(SoNode* shape);
+// CALIPER3D_RENDER_CACHING=on|off (default on; docs/benchmarks.md, "Render caching").
+bool renderCachingWanted();
+
 // A segment as an SoLOD: its levels (segment.firstLevel on), finest first, then an empty
 // group, switching at lodSwitchDistances. Main thread only.
 SoLOD* makeSegmentLod(const reconstruction::SegmentMesh& segment, const LodView& view = {});

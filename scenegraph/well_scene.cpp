@@ -1,7 +1,10 @@
 #include "scenegraph/well_scene.h"
 
+#include <Inventor/SbViewportRegion.h>
+#include <Inventor/actions/SoGetBoundingBoxAction.h>
 #include <Inventor/nodes/SoCoordinate3.h>
 #include <Inventor/nodes/SoDrawStyle.h>
+#include <Inventor/nodes/SoGroup.h>
 #include <Inventor/nodes/SoIndexedTriangleStripSet.h>
 #include <Inventor/nodes/SoLOD.h>
 #include <Inventor/nodes/SoLightModel.h>
@@ -72,8 +75,54 @@ void WellScene::extendPath(const std::vector<glm::vec3>& points) {
     m_pathLine->numVertices.setValue(n);
 }
 
+void WellScene::growTo(int depth) {
+    while (m_depth < depth) {
+        m_spans.emplace_back();
+        SoSeparator* oldRoot =
+            m_depth > 0 ? m_spans[static_cast<std::size_t>(m_depth) - 1][0].separator : nullptr;
+        if (oldRoot) oldRoot->ref();
+        m_segments->removeAllChildren();
+        ++m_depth;
+        const std::size_t root = ensureSpan(m_depth, 0);
+        if (oldRoot) {
+            m_spans[static_cast<std::size_t>(m_depth) - 1][root].children->addChild(oldRoot);
+            oldRoot->unref();
+        }
+    }
+}
+
+std::size_t WellScene::ensureSpan(int depth, std::size_t index) {
+    auto& level = m_spans[static_cast<std::size_t>(depth) - 1];
+    if (index < level.size()) return index;
+    // Spans of a depth are made in order, as the segments arrive.
+    while (level.size() <= index) {
+        Span span;
+        span.separator = new SoSeparator;
+        span.separator->setName("span");
+        // Culled against the view by its cached bounding box (all of its SoLOD's children).
+        span.separator->renderCulling = SoSeparator::ON;
+        span.lod = new SoLOD;
+        span.children = new SoGroup;
+        span.lod->addChild(span.children);
+        span.separator->addChild(span.lod);
+        const std::size_t made = level.size();
+        m_spanOfLod[span.lod] = {depth, made};
+        SoSeparator* separator = span.separator;
+        level.push_back(span);
+        if (depth == m_depth) {
+            m_segments->addChild(separator);
+        } else {
+            const std::size_t parent = ensureSpan(depth + 1, made / reconstruction::kLodTreeFanOut);
+            m_spans[static_cast<std::size_t>(depth)][parent].children->addChild(separator);
+        }
+    }
+    return index;
+}
+
 void WellScene::addSegment(const reconstruction::SegmentMesh& segment) {
     assertMainThread("WellScene::addSegment");
+    growTo(reconstruction::lodTreeDepth(m_records.size() + 1));
+    const std::size_t parent = ensureSpan(1, m_records.size() / reconstruction::kLodTreeFanOut);
     Record record;
     record.lod = makeSegmentLod(segment, m_view);
     record.centre = segment.centre;
@@ -85,7 +134,8 @@ void WellScene::addSegment(const reconstruction::SegmentMesh& segment) {
     record.shape.levelError_mm = segment.levelError_mm;
     keepPartShapes(record, segment);
     record.switchDistances = lodSwitchDistances(segment, m_view);
-    m_segments->addChild(record.lod);
+    m_spans[0][parent].children->addChild(record.lod);
+    m_segmentOfLod[record.lod] = m_records.size();
     m_fullTriangles += segment.fullDetailTriangles;
     m_records.push_back(std::move(record));
 }
@@ -104,6 +154,73 @@ void WellScene::buildAll(const reconstruction::WellGeometry& geometry) {
     build(0);
     helper.join();
     for (const reconstruction::SegmentMesh& mesh : meshes) addSegment(mesh);
+    for (const reconstruction::SpanMesh& span : reconstruction::buildSpanMeshes(geometry))
+        addSpan(span);
+    cacheBounds();
+}
+
+void WellScene::cacheBounds() {
+    assertMainThread("WellScene::cacheBounds");
+    SoGetBoundingBoxAction bounds{SbViewportRegion()};
+    bounds.apply(m_segments);
+}
+
+void WellScene::addSpan(const reconstruction::SpanMesh& mesh) {
+    assertMainThread("WellScene::addSpan");
+    if (mesh.depth < 1 || mesh.depth > m_depth) return;
+    auto& level = m_spans[static_cast<std::size_t>(mesh.depth) - 1];
+    if (mesh.index >= level.size() || mesh.lastSegment >= m_records.size()) return;
+    Span& span = level[mesh.index];
+    if (span.merged) {  // a new look: the old merged mesh and empty level go
+        span.lod->removeChild(2);
+        span.lod->removeChild(1);
+    }
+    span.centre = mesh.centre;
+    span.radius = mesh.radius;
+    span.error_mm = mesh.error_mm;
+    span.maxRadius_m = mesh.maxRadius_m;
+    span.firstSegment = mesh.firstSegment;
+    span.lastSegment = mesh.lastSegment;
+    span.firstRow = mesh.firstRow;
+    span.lastRow = mesh.lastRow;
+    span.lod->center.setValue(mesh.centre.x, mesh.centre.y, mesh.centre.z);
+    span.lod->addChild(cacheableShape(makeStripSet(mesh.mesh)));
+    span.lod->addChild(new SoGroup);  // past it: nothing (the path line shows the well)
+    if (!span.merged) ++m_mergedSpans;
+    span.merged = true;
+    setSpanRanges(span);
+}
+
+void WellScene::setSpanRanges(Span& span) const {
+    if (!span.merged) {
+        span.lod->range.setNum(0);
+        return;
+    }
+    const float scale = m_view.focal_px / m_view.pixelTolerance / 1000.0f;  // mm of error -> m
+    float merged = span.error_mm * scale + span.radius;
+    float empty = std::max(merged, 2000.0f * span.maxRadius_m * scale + span.radius);
+    if (m_view.visibility_m > 0.0f) {
+        merged = std::min(merged, m_view.visibility_m + span.radius);
+        empty = std::min(empty, m_view.visibility_m + span.radius);
+    }
+    span.lod->range.setNum(2);
+    span.lod->range.set1Value(0, merged);
+    span.lod->range.set1Value(1, empty);
+}
+
+std::optional<std::size_t> WellScene::segmentOfLod(const SoNode* node) const {
+    const auto it = m_segmentOfLod.find(node);
+    if (it == m_segmentOfLod.end()) return std::nullopt;
+    return it->second;
+}
+
+std::optional<WellScene::SpanRows> WellScene::spanOfLod(const SoNode* node) const {
+    const auto it = m_spanOfLod.find(node);
+    if (it == m_spanOfLod.end()) return std::nullopt;
+    const Span& span = m_spans[static_cast<std::size_t>(it->second.first) - 1][it->second.second];
+    if (!span.merged) return std::nullopt;
+    return SpanRows{it->second.first, span.firstSegment, span.lastSegment, span.firstRow,
+                    span.lastRow};
 }
 
 void WellScene::buildAllLevels(const reconstruction::WellGeometry& geometry) {
@@ -142,18 +259,39 @@ void WellScene::setLodView(const LodView& view) {
         setRanges(record);
         if (record.heldFrom == 0) setPartRanges(record.lod->getChild(0), record.shape, m_view);
     }
+    for (auto& level : m_spans)
+        for (Span& span : level) setSpanRanges(span);
 }
 
-std::vector<DetailRequest> WellScene::wantedDetail(const glm::vec3& eye) {
-    ++m_tick;
-    std::vector<DetailRequest> out;
-    for (std::size_t s = 0; s < m_records.size(); ++s) {
+void WellScene::collectWanted(int depth, std::size_t index, const glm::vec3& eye,
+                              std::vector<DetailRequest>& out) {
+    const Span& span = m_spans[static_cast<std::size_t>(depth) - 1][index];
+    // A span drawing its merged mesh, or nothing, draws none of its segments.
+    if (span.merged && span.lod->range.getNum() > 0 &&
+        glm::length(span.centre - eye) >= span.lod->range[0])
+        return;
+    const std::size_t first = index * reconstruction::kLodTreeFanOut;
+    if (depth > 1) {
+        const std::size_t children = m_spans[static_cast<std::size_t>(depth) - 2].size();
+        for (std::size_t c = first; c < std::min(first + reconstruction::kLodTreeFanOut, children);
+             ++c)
+            collectWanted(depth - 1, c, eye, out);
+        return;
+    }
+    for (std::size_t s = first;
+         s < std::min(first + reconstruction::kLodTreeFanOut, m_records.size()); ++s) {
         Record& record = m_records[s];
         const float distance = glm::length(record.centre - eye);
         const int level = lodLevelAt(record.switchDistances, distance);
         if (level < record.coarseFrom) record.lastWanted = m_tick;
         if (level < record.heldFrom) out.push_back({s, level, record.heldFrom, distance});
     }
+}
+
+std::vector<DetailRequest> WellScene::wantedDetail(const glm::vec3& eye) {
+    ++m_tick;
+    std::vector<DetailRequest> out;
+    if (m_depth > 0) collectWanted(m_depth, 0, eye, out);
     std::sort(out.begin(), out.end(), [](const DetailRequest& a, const DetailRequest& b) {
         return a.distance < b.distance;
     });
@@ -183,25 +321,37 @@ void WellScene::attachFinerLevels(const reconstruction::SegmentMesh& finer) {
     setRanges(record);
 }
 
+std::vector<WellScene::IdleDetail> WellScene::idleDetail() const {
+    std::vector<IdleDetail> out;
+    for (std::size_t s = 0; s < m_records.size(); ++s) {
+        const Record& record = m_records[s];
+        if (record.heldFrom < record.coarseFrom && record.lastWanted < m_tick)
+            out.push_back({s, m_tick - record.lastWanted, record.fineTriangles});
+    }
+    return out;
+}
+
+void WellScene::dropFineLevels(std::size_t segment) {
+    assertMainThread("WellScene::dropFineLevels");
+    if (segment >= m_records.size()) return;
+    Record& record = m_records[segment];
+    for (int i = record.heldFrom; i < record.coarseFrom; ++i) record.lod->removeChild(0);
+    m_fineTriangles -= record.fineTriangles;
+    record.fineTriangles = 0;
+    record.heldFrom = record.coarseFrom;
+    setRanges(record);
+}
+
 std::size_t WellScene::evictFineLevels(std::size_t budgetTriangles) {
     assertMainThread("WellScene::evictFineLevels");
     if (m_fineTriangles <= budgetTriangles) return 0;
-    std::vector<std::size_t> held;
-    for (std::size_t s = 0; s < m_records.size(); ++s)
-        if (m_records[s].heldFrom < m_records[s].coarseFrom && m_records[s].lastWanted < m_tick)
-            held.push_back(s);
-    std::sort(held.begin(), held.end(), [&](std::size_t a, std::size_t b) {
-        return m_records[a].lastWanted < m_records[b].lastWanted;
-    });
+    std::vector<IdleDetail> idle = idleDetail();
+    std::sort(idle.begin(), idle.end(),
+              [](const IdleDetail& a, const IdleDetail& b) { return a.idleFor > b.idleFor; });
     std::size_t dropped = 0;
-    for (std::size_t s : held) {
+    for (const IdleDetail& d : idle) {
         if (m_fineTriangles <= budgetTriangles) break;
-        Record& record = m_records[s];
-        for (int i = record.heldFrom; i < record.coarseFrom; ++i) record.lod->removeChild(0);
-        m_fineTriangles -= record.fineTriangles;
-        record.fineTriangles = 0;
-        record.heldFrom = record.coarseFrom;
-        setRanges(record);
+        dropFineLevels(d.segment);
         ++dropped;
     }
     return dropped;

@@ -3,15 +3,21 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include <Inventor/nodes/SoSeparator.h>
 
+#include "reconstruction/mesh/lod_tree.h"
 #include "reconstruction/well_geometry.h"
 #include "scenegraph/node_ref.h"
 #include "scenegraph/segment_node_builder.h"
 
 class SoCoordinate3;
+class SoGroup;
+class SoNode;
 class SoLineSet;
 class SoLOD;
 
@@ -25,25 +31,31 @@ struct DetailRequest {
     float distance = 0.0f;  // eye to the segment's centre, metres
 };
 
-// The nodes of one well: shape hints and material, the path as a line, and
-// one SoLOD per segment, under one separator. Main thread only.
+// The nodes of one well: shape hints and material, the path as a line, and the segments in a
+// level-of-detail tree (reconstruction/mesh/lod_tree.h), under one separator. Main thread only.
 //
 //   root: SoSeparator
 //     SoShapeHints (two-sided lighting: the hole is seen from inside too)
 //     SoMaterial
 //     path: SoSeparator { SoDrawStyle, SoCoordinate3, SoLineSet }
-//     segments: SoSeparator { SoLOD, SoLOD, ... }
+//     segments: SoSeparator { the root span }
+//   a span: SoSeparator (culled outside the view) { SoLOD {
+//       SoGroup { its 16 segments' SoLODs (depth 1) or its 16 child spans },
+//       the merged mesh of its whole length, an empty group } }
 //
 // Segments come with their coarse levels (reconstruction::kFirstCoarseLevel on); finer ones
 // are added near the camera (attachFinerLevels) and dropped again, least recently wanted
 // first, when their triangles pass a budget (evictFineLevels). The coarser levels stay in
-// the SoLOD meanwhile, so a segment is never missing.
+// the SoLOD meanwhile, so a segment is never missing. A span shows its children until its
+// merged mesh arrives (addSpan), then switches to it once its error projects under the pixel
+// tolerance, and to nothing once the whole span is under the tolerance wide (the path line
+// shows the well). The tree grows a root as segments stream in.
 class WellScene {
 public:
     WellScene();
 
     SoSeparator* root() const { return m_root.get(); }
-    // The separator holding one SoLOD per segment, child i being segment i (picking).
+    // The separator holding the tree's root span.
     const SoSeparator* segmentGroup() const { return m_segments; }
 
     // Draws the well path (decimated to about one point per `spacing_m`).
@@ -53,10 +65,19 @@ public:
     void extendPath(const std::vector<glm::vec3>& points);
     // Segments arrive in order (segment.index = segmentCount()).
     void addSegment(const reconstruction::SegmentMesh& segment);
-    // Path and every segment's coarse levels, built here on the calling (main) thread.
+    // The merged mesh of a span whose segments are here (others are ignored).
+    void addSpan(const reconstruction::SpanMesh& span);
+    // Path, every segment's coarse levels and every span, built here on the calling (main)
+    // thread.
     void buildAll(const reconstruction::WellGeometry& geometry);
     // Path and every level of every segment (tests; a whole well at full detail is large).
     void buildAllLevels(const reconstruction::WellGeometry& geometry);
+
+    // Computes the bounding boxes the spans' separators cache, where a change left them
+    // invalid: Coin culls a separator only by a cached box, and a render action never makes
+    // one. Called after building and after each change of held levels; cheap where nothing
+    // changed (the valid caches answer).
+    void cacheBounds();
 
     // Switch distances for a new viewport or field of view (every SoLOD's range).
     void setLodView(const LodView& view);
@@ -69,8 +90,33 @@ public:
     // Drops the finer-than-coarse levels of segments not wanted now, least recently wanted
     // first, until those held hold at most `budgetTriangles`. Returns the segments dropped.
     std::size_t evictFineLevels(std::size_t budgetTriangles);
+    // The segments holding finer-than-coarse levels that the last wantedDetail did not want:
+    // how many wantedDetail calls ago each was last wanted, and its fine triangles. With
+    // dropFineLevels, what a budget shared by several wells evicts from (DetailLoader).
+    struct IdleDetail {
+        std::size_t segment = 0;
+        std::uint64_t idleFor = 0;
+        std::size_t triangles = 0;
+    };
+    std::vector<IdleDetail> idleDetail() const;
+    void dropFineLevels(std::size_t segment);
 
     std::size_t segmentCount() const { return m_records.size(); }
+    // Depth of the root span (0 before the first segment) and spans holding their merged mesh.
+    int treeDepth() const { return m_depth; }
+    std::size_t mergedSpans() const { return m_mergedSpans; }
+
+    // Picking: the segment whose SoLOD `node` is; the rows and depth of the span whose SoLOD
+    // `node` is.
+    std::optional<std::size_t> segmentOfLod(const SoNode* node) const;
+    struct SpanRows {
+        int depth = 0;
+        std::size_t firstSegment = 0;
+        std::size_t lastSegment = 0;
+        std::size_t firstRow = 0;
+        std::size_t lastRow = 0;
+    };
+    std::optional<SpanRows> spanOfLod(const SoNode* node) const;
     // Triangles of every segment at full detail (level 0), counted or estimated from the
     // coarse level's rows when level 0 is not built.
     std::size_t fullDetailTriangles() const { return m_fullTriangles; }
@@ -90,7 +136,28 @@ private:
         reconstruction::SegmentMesh
             shape;  // radius, level errors and part shapes only, for the switch distances
     };
+    struct Span {
+        SoSeparator* separator = nullptr;
+        SoLOD* lod = nullptr;
+        SoGroup* children = nullptr;
+        bool merged = false;  // holds its merged mesh (and the empty level after it)
+        glm::vec3 centre{0.0f};
+        float radius = 0.0f;
+        float error_mm = 0.0f;
+        float maxRadius_m = 0.0f;
+        std::size_t firstSegment = 0;
+        std::size_t lastSegment = 0;
+        std::size_t firstRow = 0;
+        std::size_t lastRow = 0;
+    };
     void setRanges(Record& record);
+    void setSpanRanges(Span& span) const;
+    // Index of span `index` at `depth`, made (and hung under its parent) when missing.
+    std::size_t ensureSpan(int depth, std::size_t index);
+    // Puts new roots above the tree until it is `depth` deep.
+    void growTo(int depth);
+    void collectWanted(int depth, std::size_t index, const glm::vec3& eye,
+                       std::vector<DetailRequest>& out);
     // Level 0's part centres and radii (not their meshes), for the part switches.
     static void keepPartShapes(Record& record, const reconstruction::SegmentMesh& segment);
 
@@ -101,6 +168,11 @@ private:
     SoLineSet* m_pathLine = nullptr;
     LodView m_view;
     std::vector<Record> m_records;
+    std::vector<std::vector<Span>> m_spans;  // [depth - 1][index]
+    int m_depth = 0;
+    std::size_t m_mergedSpans = 0;
+    std::unordered_map<const SoNode*, std::size_t> m_segmentOfLod;
+    std::unordered_map<const SoNode*, std::pair<int, std::size_t>> m_spanOfLod;
     std::size_t m_fullTriangles = 0;
     std::size_t m_fineTriangles = 0;
     std::uint64_t m_tick = 0;

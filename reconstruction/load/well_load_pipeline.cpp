@@ -9,7 +9,7 @@ namespace caliper3d::reconstruction {
 
 WellLoadPipeline::WellLoadPipeline(Loader loader) : m_loader(std::move(loader)) {}
 
-WellLoadPipeline::WellLoadPipeline(WellSource source, LoadOptions options, Wellhead origin) {
+WellLoadPipeline::WellLoadPipeline(WellSource source, LoadOptions options, const Wellhead& origin) {
     m_streamed = [this, source = std::move(source), options = std::move(options),
                   origin](const StreamedLoadSink& sink) mutable {
         options.cancel = &m_cancelled;  // a cancel stops the read too, within a block
@@ -68,6 +68,11 @@ void WellLoadPipeline::run() {
             m_events.push(buildCoarseSegment(*geometry, s));
             ++built;
         }
+        // The tree's merged meshes, once every segment is out: until a span's arrives, the
+        // span shows its segments.
+        if (!m_cancelled.load())
+            for (SpanMesh& span : buildSpanMeshes(*geometry, &m_cancelled))
+                m_events.push(std::move(span));
         m_events.push(LoadFinished{built});
     } catch (const io::ReadCancelled&) {
         m_events.push(LoadFinished{built});  // cancelled while reading: the segments streamed

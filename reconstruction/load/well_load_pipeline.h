@@ -14,13 +14,15 @@
 #include "io/section_table.h"
 #include "reconstruction/load/load_well.h"
 #include "reconstruction/load/streamed_load.h"
+#include "reconstruction/mesh/lod_tree.h"
 #include "reconstruction/parallel/segment_queue.h"
 #include "reconstruction/well_geometry.h"
 
 namespace caliper3d::reconstruction {
 
 // What a load worker hands to the main thread, in order: the geometry (path,
-// frames) and the well's warnings once, then every segment, then Finished or
+// frames) and the well's warnings once, then every segment, then the merged mesh of every
+// span of the level-of-detail tree (reconstruction/mesh/lod_tree.h), then Finished or
 // Failed.
 struct LoadStarted {
     std::shared_ptr<const WellGeometry> geometry;
@@ -40,7 +42,8 @@ struct LoadFinished {
 struct LoadFailed {
     std::string message;
 };
-using LoadEvent = std::variant<LoadStretch, LoadStarted, SegmentMesh, LoadFinished, LoadFailed>;
+using LoadEvent =
+    std::variant<LoadStretch, LoadStarted, SegmentMesh, SpanMesh, LoadFinished, LoadFailed>;
 
 // Owns one worker thread that loads a well (streamed, or by the loader it is
 // given), then pushes its segment meshes into its queue. Makes no Coin or Qt
@@ -54,7 +57,7 @@ public:
     // Loads `source` streamed (loadWellStreamed: the log read on a reading thread while this
     // worker, the meshing thread, sends each stretch read and its segments), `origin` being
     // the scene origin; then the whole well's geometry and warnings and the rest.
-    WellLoadPipeline(WellSource source, LoadOptions options, Wellhead origin);
+    WellLoadPipeline(WellSource source, LoadOptions options, const Wellhead& origin);
     explicit WellLoadPipeline(Loader loader);
     // A table from `reader` (e.g. one made in memory), reconstructed with
     // `options`; no warnings of its own.

@@ -132,12 +132,15 @@ Mesh buildLevel(const WellGeometry& g, const std::vector<std::size_t>& rows, int
     return mesh;
 }
 
-// The largest chord error of a closed polygon of `points` vertices on a circle of `radius`.
+}  // namespace
+
 double chordError(double radius, int points) {
     return radius * (1.0 - std::cos(glm::pi<double>() / std::max(points, 3)));
 }
 
-}  // namespace
+Mesh buildRingMesh(const WellGeometry& geometry, const std::vector<std::size_t>& rows, int points) {
+    return buildLevel(geometry, rows, points);
+}
 
 std::vector<LodLevel> lodPyramid(const GeometryOptions& options) {
     const double t = options.shapeTolerance_mm;

@@ -46,6 +46,16 @@ SegmentMesh buildSegmentMesh(const WellGeometry& geometry, std::size_t segment);
 // The levels built up front, kFirstCoarseLevel on.
 SegmentMesh buildCoarseSegment(const WellGeometry& geometry, std::size_t segment);
 
+// The rings of `rows` (increasing) joined by closed strips wherever every row between two of
+// them is measured (a no-data interval is a gap in the wall). The first and last rows get the
+// full spline (GeometryOptions::splinePoints samples), so any two meshes that end on the same
+// row meet without a crack; the others get `points` samples (0: the pads' N-gon). What every
+// pyramid level and every span of the level-of-detail tree (lod_tree.h) draws.
+Mesh buildRingMesh(const WellGeometry& geometry, const std::vector<std::size_t>& rows, int points);
+
+// The largest chord error of a closed polygon of `points` vertices on a circle of `radius`.
+double chordError(double radius, int points);
+
 // The wall of one section as the finest level draws it: its closed spline's points in the
 // scene frame, radial exaggeration included (what the window outlines at the current depth).
 // Empty for a row without data.

@@ -96,7 +96,7 @@ Picture drawPicture(const std::vector<PictureWell>& wells, const PictureRequest&
     if (request.stats) {
         out.frame_ms = renderer.timeFrames(root, width, height, kBackgroundColour, 5);
         out.trianglesDrawn = trianglesDrawn(root, width, height);
-        out.nodesTraversed = nodesTraversed(root, width, height);
+        out.nodesTraversed = out.image.nodesVisited;
     }
     return out;
 }

@@ -75,7 +75,8 @@ struct Picture {
     // With PictureRequest::stats: the mean of 5 frames drawn after it, and the triangles drawn.
     double frame_ms = std::numeric_limits<double>::quiet_NaN();
     std::size_t trianglesDrawn = 0;
-    std::size_t nodesTraversed = 0;  // with stats: nodes a frame visits (render_stats.h)
+    std::size_t nodesTraversed = 0;  // with stats: nodes a frame visits, culling included
+                                     //   (RenderedImage::nodesVisited)
 };
 
 // Draws `wells` as `request` asks, offscreen (main thread). Throws std::runtime_error when no

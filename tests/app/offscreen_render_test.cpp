@@ -2,6 +2,11 @@
 #include <cstdlib>
 #include <memory>
 
+#include <Inventor/SoPath.h>
+#include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/nodes/SoDirectionalLight.h>
+#include <Inventor/nodes/SoPerspectiveCamera.h>
+#include <Inventor/nodes/SoSeparator.h>
 #include <gtest/gtest.h>
 #include <QImage>
 
@@ -126,4 +131,48 @@ TEST(OffscreenRenderTest, LabelsNameAndNorthArrowDrawIntoThePicture) {
     const float north[3] = {0.95f, 0.30f, 0.25f};
     EXPECT_GT(pixelsOfColour(annotated, north, 0, 480 - 120, 120, 480), 20u);
     EXPECT_EQ(pixelsOfColour(bare, north, 0, 480 - 120, 120, 480), 0u);
+}
+
+TEST(OffscreenRenderTest, SpansOutsideTheViewAreCulledWithoutChangingAPixel) {
+    // A 300 m well (a tree three spans deep) seen from inside near its top, looking down: the
+    // spans behind and far beside the camera's cone are skipped by their separators' culling,
+    // and the picture is the one drawn with culling off, pixel for pixel.
+    scenegraph::initCoin();
+    reconstruction::GeometryOptions options;
+    options.radialExaggeration = 20.0;
+    const reconstruction::WellGeometry geometry(
+        std::make_shared<const io::SectionTable>(reconstruction::makeSyntheticWell(
+            reconstruction::syntheticProfile("example", 300.0, 0.05))),
+        options);
+    scenegraph::WellScene scene;
+    scene.buildAll(geometry);
+    ASSERT_EQ(scene.treeDepth(), 3);
+    auto root = scenegraph::makeRef(new SoSeparator);
+    auto* camera = new SoPerspectiveCamera;
+    camera->position.setValue(30.0f, -150.0f, 0.0f);  // beside the well, looking at one stretch
+    camera->pointAt(SbVec3f(0.0f, -150.0f, 0.0f), SbVec3f(0.0f, 1.0f, 0.0f));
+    camera->heightAngle = 0.3f;
+    camera->nearDistance = 1.0f;
+    camera->farDistance = 1000.0f;
+    root->addChild(camera);
+    root->addChild(new SoDirectionalLight);
+    root->addChild(scene.root());
+    scenegraph::OffscreenRenderer renderer;
+    const scenegraph::RenderedImage culled =
+        renderer.render(root.get(), 640, 400, scenegraph::kBackgroundColour);
+    SoSearchAction search;
+    search.setName("span");
+    search.setInterest(SoSearchAction::ALL);
+    search.setSearchingAll(TRUE);
+    search.apply(scene.root());
+    ASSERT_EQ(search.getPaths().getLength(), 22);
+    for (int i = 0; i < search.getPaths().getLength(); ++i)
+        static_cast<SoSeparator*>(search.getPaths()[i]->getTail())->renderCulling =
+            SoSeparator::OFF;
+    const scenegraph::RenderedImage whole =
+        renderer.render(root.get(), 640, 400, scenegraph::kBackgroundColour);
+    EXPECT_GT(culled.nonBackgroundPixels(), 10'000u);
+    EXPECT_EQ(culled.rgba, whole.rgba);
+    EXPECT_LT(culled.nodesVisited * 3, whole.nodesVisited)
+        << culled.nodesVisited << " of " << whole.nodesVisited;
 }

@@ -68,3 +68,44 @@ TEST_F(DetailLoaderTest, FinerLevelsFollowTheCameraWithinTheBudget) {
     EXPECT_TRUE(settle(loader));
     EXPECT_EQ(scene.heldFrom(10), reconstruction::kFirstCoarseLevel);
 }
+
+TEST_F(DetailLoaderTest, OneBudgetServesEveryWellOfTheScene) {
+    // Two wells 1 km apart; the camera visits two places down the first. With one budget for
+    // the scene, room for two views' detail keeps both while the far well holds none (split
+    // evenly between the wells, the first view's detail would have gone).
+    auto well = [](double east_m) {
+        reconstruction::GeometryOptions options;
+        options.wellheadOffset = {0.0, east_m, 0.0};
+        return std::make_shared<const reconstruction::WellGeometry>(
+            std::make_shared<const io::SectionTable>(reconstruction::makeSyntheticWell(
+                reconstruction::syntheticProfile("circle", 30.0, 0.0025))),
+            options);
+    };
+    const auto near = well(0.0), far = well(1000.0);
+    scenegraph::WellScene a, b;
+    a.buildAll(*near);
+    b.buildAll(*far);
+    std::optional<scenegraph::DetailView> camera =
+        scenegraph::DetailView{{0.0f, -2.5f, 0.0f}, scenegraph::lodViewFor(800, 0.8f)};
+    scenegraph::DetailLoader loader([&] { return camera; }, 4'000'000);
+    loader.addWell(a, near);
+    loader.addWell(b, far);
+    ASSERT_TRUE(settle(loader));
+    const std::size_t oneView = a.fineTriangles();
+    ASSERT_GT(oneView, 0u);
+    EXPECT_EQ(b.fineTriangles(), 0u);
+    loader.setBudgetTriangles(oneView * 21 / 10);
+    camera->eye = {0.0f, -25.5f, 0.0f};
+    ASSERT_TRUE(settle(loader));
+    EXPECT_EQ(a.heldFrom(25), 0);
+    EXPECT_EQ(a.heldFrom(2), 0);  // kept: the scene's budget has room for it
+    EXPECT_GT(a.fineTriangles(), loader.budgetTriangles() / 2);
+    EXPECT_LE(a.fineTriangles() + b.fineTriangles(), loader.budgetTriangles());
+    // Tightened below what is held: the detail idle longest goes, the view's own stays.
+    loader.setBudgetTriangles(a.fineTriangles() - oneView / 2);
+    camera->eye = {0.0f, -25.4f, 0.0f};
+    ASSERT_TRUE(settle(loader));
+    EXPECT_EQ(a.heldFrom(25), 0);
+    EXPECT_EQ(a.heldFrom(2), reconstruction::kFirstCoarseLevel);
+    EXPECT_LE(a.fineTriangles() + b.fineTriangles(), loader.budgetTriangles());
+}

@@ -1,5 +1,6 @@
 #include "scenegraph/iv_export.h"
 #include "reconstruction/mesh/lod_levels.h"
+#include "reconstruction/mesh/lod_tree.h"
 
 #include <fstream>
 #include <memory>
@@ -38,7 +39,12 @@ TEST_F(IvExportTest, RoundTripKeepsVerticesTrianglesAndLods) {
             triangles += level.triangleCount();
         }
     const scenegraph::SceneCounts before = scenegraph::countScene(scene.root());
-    EXPECT_EQ(before.lods, geometry.segmentCount());
+    // Every segment's SoLOD and every span's of the tree over them (60 segments: 4 + 1).
+    std::size_t spans = 0;
+    for (int d = 1; d <= reconstruction::lodTreeDepth(geometry.segmentCount()); ++d)
+        spans += reconstruction::spanCount(d, geometry.segmentCount());
+    EXPECT_EQ(spans, 5u);
+    EXPECT_EQ(before.lods, geometry.segmentCount() + spans);
     EXPECT_EQ(before.stripSets,
               geometry.segmentCount() * reconstruction::lodPyramid(geometry.options()).size());
     EXPECT_EQ(before.vertices, vertices);

@@ -54,7 +54,10 @@ TEST_F(SegmentFeederTest, WorkerSegmentsReachTheSceneOnTheMainThread) {
     EXPECT_TRUE(started);
     EXPECT_EQ(finishedWith, 8u);  // 80 m in 10 m segments
     EXPECT_EQ(feeder.attached(), 8u);
-    EXPECT_EQ(scenegraph::countScene(scene.root()).lods, 8u);
+    // The segments' SoLODs under one span's, which holds its merged mesh once the load ends.
+    EXPECT_EQ(scenegraph::countScene(scene.root()).lods, 8u + 1u);
+    EXPECT_EQ(scene.treeDepth(), 1);
+    EXPECT_EQ(scene.mergedSpans(), 1u);
 }
 
 TEST_F(SegmentFeederTest, ReaderFailureIsReportedNotThrown) {

@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# A field in one scene, as a timed command-line run: N wells of 1 km (synth --field: named
+# wells at their header places, 25 m apart) logged every STEP metres, drawn by
+# `caliper3d render --stats` at 1280x800 in the overview (iso, every well framed) and down the
+# first well's hole (1 m below its top). Beside it, the time `caliper3d info` takes to read
+# every file (a plain parse of the field: info reads each log whole), so load_ms reads against
+# it. Prints one table row per field and view; docs/benchmarks.md records them.
+#   bench/field_scene_bench.sh [BUILD_DIR] [WELLS:STEP ...]      (default: 20:0.1 100:0.1 20:0.0025)
+# Runs on llvmpipe without a display (EGL surfaceless), or on a GPU where one is at hand.
+set -euo pipefail
+build=${1:-build/release}
+shift || true
+fields=("$@")
+[ ${#fields[@]} -gt 0 ] || fields=(20:0.1 100:0.1 20:0.0025)
+bin="$build/app/caliper3d"
+work=${FIELD_BENCH_DIR:-$(mktemp -d)}
+echo "| wells | step_m | view | parse_s | triangles_drawn | nodes_traversed | frame_ms | first_picture_ms | load_ms | rss_mb |"
+echo "|---|---|---|---|---|---|---|---|---|---|"
+for field in "${fields[@]}"; do
+  wells=${field%%:*}
+  step=${field##*:}
+  dir="$work/field_${wells}_${step}"
+  [ -f "$dir/manifest.csv" ] || "$bin" synth --field "$wells" -o "$dir/" --length 1000 --step "$step" >/dev/null
+  start=$(date +%s%N)
+  "$bin" info "$dir"/*.las >/dev/null
+  parse_ms=$((($(date +%s%N) - start) / 1000000))
+  for view in iso hole; do
+    args=(--view "$view")
+    [ "$view" = hole ] && args+=(--at 1)
+    stats=$("$bin" render "$dir"/*.las -o "$work/field.png" --width 1280 --height 800 "${args[@]}" --stats |
+      grep -m1 '^triangles_drawn=')
+    value() { printf '%s' "$stats" | sed -E "s/.*$1=([0-9.]+).*/\\1/"; }
+    printf '| %s | %s | %s | %d.%03d | %s | %s | %s | %s | %s | %s |\n' "$wells" "$step" "$view" \
+      $((parse_ms / 1000)) $((parse_ms % 1000)) \
+      "$(value triangles_drawn)" "$(value nodes_traversed)" "$(value frame_ms)" \
+      "$(value first_picture_ms)" "$(value load_ms)" "$(value rss_mb)"
+  done
+done
+[ -n "${FIELD_BENCH_DIR:-}" ] || rm -rf "$work"

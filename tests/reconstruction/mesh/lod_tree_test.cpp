@@ -1,0 +1,212 @@
+#include "reconstruction/mesh/lod_tree.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
+
+#include "reconstruction/mesh/lod_levels.h"
+#include "reconstruction/synthetic/synthetic_well.h"
+#include "reconstruction/well_geometry.h"
+
+using namespace caliper3d::reconstruction;
+using caliper3d::io::SectionTable;
+
+namespace {
+
+// The example well (a breakout, a washout, a build from 100 m) over `length_m`, with rows
+// `step_m` apart and a stretch without data from 40 to 41.5 m.
+std::shared_ptr<const SectionTable> exampleWell(double length_m, double step_m) {
+    SectionTable t = makeSyntheticWell(syntheticProfile("example", length_m, step_m));
+    for (std::size_t r = 0; r < t.rowCount(); ++r)
+        if (t.depth_m[r] >= 40.0 && t.depth_m[r] < 41.5)
+            for (int a = 0; a < t.armCount; ++a)
+                t.radii(r)[a] = std::numeric_limits<double>::quiet_NaN();
+    return std::make_shared<const SectionTable>(std::move(t));
+}
+
+double pointToTriangle(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b,
+                       const glm::dvec3& c) {
+    // Closest point on a triangle (Ericson, Real-Time Collision Detection, 5.1.5).
+    const glm::dvec3 ab = b - a, ac = c - a, ap = p - a;
+    const double d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
+    if (d1 <= 0 && d2 <= 0) return glm::length(p - a);
+    const glm::dvec3 bp = p - b;
+    const double d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
+    if (d3 >= 0 && d4 <= d3) return glm::length(p - b);
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) return glm::length(p - (a + ab * (d1 / (d1 - d3))));
+    const glm::dvec3 cp = p - c;
+    const double d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
+    if (d6 >= 0 && d5 <= d6) return glm::length(p - c);
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) return glm::length(p - (a + ac * (d2 / (d2 - d6))));
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+        return glm::length(p - (b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)))));
+    const double denom = 1.0 / (va + vb + vc);
+    return glm::length(p - (a + ab * (vb * denom) + ac * (vc * denom)));
+}
+
+// The triangles of a mesh with their bounding boxes, to measure distances to it.
+struct Triangles {
+    explicit Triangles(const Mesh& mesh) {
+        const std::vector<std::int32_t>& s = mesh.stripIndices;
+        for (std::size_t i = 0; i + 2 < s.size(); ++i) {
+            if (s[i] < 0 || s[i + 1] < 0 || s[i + 2] < 0) continue;
+            Triangle t;
+            for (int k = 0; k < 3; ++k) t.corner[k] = glm::dvec3(mesh.positions[s[i + k]]);
+            t.lo = glm::min(t.corner[0], glm::min(t.corner[1], t.corner[2]));
+            t.hi = glm::max(t.corner[0], glm::max(t.corner[1], t.corner[2]));
+            all.push_back(t);
+        }
+    }
+    // Distance from `p` to the nearest triangle, or `reach` when none is nearer than that
+    // (the boxes then skip most triangles).
+    double distance(const glm::dvec3& p, double reach) const {
+        double best = reach;
+        for (const Triangle& t : all) {
+            if (glm::any(glm::lessThan(p, t.lo - best)) ||
+                glm::any(glm::greaterThan(p, t.hi + best)))
+                continue;
+            best = std::min(best, pointToTriangle(p, t.corner[0], t.corner[1], t.corner[2]));
+        }
+        return best;
+    }
+    struct Triangle {
+        glm::dvec3 corner[3];
+        glm::dvec3 lo, hi;
+    };
+    std::vector<Triangle> all;
+};
+
+}  // namespace
+
+TEST(LodTreeTest, SpansOfEachDepthCoverEverySegmentOnceInOrder) {
+    EXPECT_EQ(lodTreeDepth(1), 1);
+    EXPECT_EQ(lodTreeDepth(16), 1);
+    EXPECT_EQ(lodTreeDepth(17), 2);
+    EXPECT_EQ(lodTreeDepth(256), 2);
+    EXPECT_EQ(lodTreeDepth(257), 3);
+    EXPECT_EQ(lodTreeDepth(4000), 3);
+    for (std::size_t segments : {1u, 15u, 16u, 17u, 300u, 4000u}) {
+        for (int depth = 1; depth <= lodTreeDepth(segments); ++depth) {
+            std::size_t next = 0;
+            for (std::size_t i = 0; i < spanCount(depth, segments); ++i) {
+                const auto [first, last] = spanSegments(depth, i, segments);
+                EXPECT_EQ(first, next) << segments << " " << depth << " " << i;
+                EXPECT_GE(last, first);
+                next = last + 1;
+            }
+            EXPECT_EQ(next, segments) << segments << " " << depth;
+        }
+        EXPECT_EQ(spanCount(lodTreeDepth(segments), segments), 1u);  // one root
+    }
+}
+
+TEST(LodTreeTest, EverySpanOfEveryDepthIsBuiltWithItsRowsAndAGrowingError) {
+    GeometryOptions options;
+    const WellGeometry g(exampleWell(300.0, 0.01), options);
+    ASSERT_EQ(g.segmentCount(), 300u);
+    const std::vector<SpanMesh> spans = buildSpanMeshes(g);
+    // 19 spans of 16 segments, 2 of 256, the root.
+    ASSERT_EQ(spans.size(), 19u + 2u + 1u);
+    float previousDepthError = 0.0f;
+    for (int depth = 1; depth <= 3; ++depth) {
+        float largest = 0.0f;
+        for (const SpanMesh& span : spans) {
+            if (span.depth != depth) continue;
+            const auto [s0, s1] = spanSegments(depth, span.index, g.segmentCount());
+            EXPECT_EQ(span.firstSegment, s0);
+            EXPECT_EQ(span.lastSegment, s1);
+            EXPECT_EQ(span.firstRow, g.segmentRows(s0).first);
+            EXPECT_EQ(span.lastRow, g.segmentRows(s1).second);
+            EXPECT_GT(span.mesh.triangleCount(), 0u);
+            largest = std::max(largest, span.error_mm);
+        }
+        EXPECT_GT(largest, previousDepthError) << depth;
+        previousDepthError = largest;
+    }
+}
+
+TEST(LodTreeTest, AMergedMeshIsWithinItsErrorOfEverySectionItDraws) {
+    // Every 7th row's finest ring (the full spline, as level 0 draws it) lies within the span's
+    // stated error of the span's merged mesh, through the breakout, the washout, the build and
+    // beside the stretch without data.
+    // Drawn true to size, and 20 times larger as a picture of a long well draws it.
+    for (const double exaggeration : {1.0, 20.0}) {
+        GeometryOptions options;
+        options.radialExaggeration = exaggeration;
+        const WellGeometry g(exampleWell(300.0, 0.02), options);
+        for (const SpanMesh& span : buildSpanMeshes(g)) {
+            const Triangles triangles(span.mesh);
+            const double allowed_m = (span.error_mm + 0.5) / 1000.0;
+            double worst = 0.0;
+            for (std::size_t r = span.firstRow; r <= span.lastRow; r += 7) {
+                if (!g.measured(r)) continue;
+                for (const glm::vec3& p : sectionRing(g, r))
+                    worst = std::max(worst, triangles.distance(glm::dvec3(p), 1.01 * allowed_m));
+            }
+            EXPECT_LE(worst, allowed_m)
+                << "x" << exaggeration << " span " << span.depth << "/" << span.index;
+        }
+    }
+}
+
+TEST(LodTreeTest, SpansAndSegmentLevelsEndOnTheSameRingsSoNoCrackOpens) {
+    // A span meets its neighbour, and a segment at any level meets a span, on the shared row's
+    // full ring, bit for bit: whichever pair of levels the two sides show, there is no crack.
+    GeometryOptions options;
+    options.radialExaggeration = 5.0;
+    const WellGeometry g(exampleWell(300.0, 0.02), options);
+    const auto samples = static_cast<std::size_t>(g.sampler().samples());
+    auto ringAt = [&](const Mesh& mesh, bool start) {
+        const std::size_t from = start ? 0 : mesh.positions.size() - samples;
+        return std::vector<glm::vec3>(
+            mesh.positions.begin() + static_cast<std::ptrdiff_t>(from),
+            mesh.positions.begin() + static_cast<std::ptrdiff_t>(from + samples));
+    };
+    std::size_t checked = 0;
+    for (const SpanMesh& span : buildSpanMeshes(g)) {
+        ASSERT_TRUE(g.measured(span.firstRow) && g.measured(span.lastRow));
+        EXPECT_EQ(ringAt(span.mesh, true), sectionRing(g, span.firstRow));
+        EXPECT_EQ(ringAt(span.mesh, false), sectionRing(g, span.lastRow));
+        ++checked;
+    }
+    for (std::size_t s = 0; s < g.segmentCount(); s += 37) {
+        const SegmentMesh segment = buildSegmentMesh(g, s);
+        for (const Mesh& level : segment.levels) {
+            EXPECT_EQ(ringAt(level, true), sectionRing(g, segment.firstRow)) << s;
+            EXPECT_EQ(ringAt(level, false), sectionRing(g, segment.lastRow)) << s;
+        }
+    }
+    EXPECT_EQ(checked, 22u);
+}
+
+TEST(LodTreeTest, AStretchWithoutDataIsAGapInEveryMergedMesh) {
+    GeometryOptions options;
+    const WellGeometry g(exampleWell(300.0, 0.02), options);
+    const std::vector<double>& depth = g.table().depth_m;
+    for (const SpanMesh& span : buildSpanMeshes(g)) {
+        if (depth[span.lastRow] < 40.0 || depth[span.firstRow] > 41.5) continue;
+        // No vertex inside the gap, and no strip crosses it: every triangle's corners lie on
+        // one side of it (the scene's y is up, depth grows downwards: y falls).
+        const double gapTop = -40.0, gapBottom = -41.5;  // y at the gap's ends (vertical there)
+        const std::vector<std::int32_t>& s = span.mesh.stripIndices;
+        for (std::size_t i = 0; i + 2 < s.size(); ++i) {
+            if (s[i] < 0 || s[i + 1] < 0 || s[i + 2] < 0) continue;
+            bool above = false, below = false;
+            for (std::size_t k = i; k < i + 3; ++k) {
+                const float y = span.mesh.positions[static_cast<std::size_t>(s[k])].y;
+                above = above || y > gapTop - 0.05;
+                below = below || y < gapBottom + 0.05;
+            }
+            EXPECT_FALSE(above && below) << "span " << span.depth << "/" << span.index;
+        }
+    }
+}
