@@ -94,8 +94,9 @@ void addRenderOptions(QCommandLineParser& p) {
     p.addOption({"width", "Picture width in pixels (default 1024).", "W", "1024"});
     p.addOption({"height", "Picture height in pixels (default 768).", "H", "768"});
     p.addOption({"view",
-                 "iso, north, east, top, or hole (inside the first well, looking down it) "
-                 "(default iso).",
+                 "iso, north, east, top, map (from above, the whole wells framed and each "
+                 "named beside its wellhead), or hole (inside the first well, looking down "
+                 "it) (default iso).",
                  "VIEW", "iso"});
     p.addOption({"at",
                  "With --view hole: measured depth of the eye in metres (default: top of the log).",
@@ -247,7 +248,7 @@ int runRender(const QStringList& args) {
         const bool downHole = verb.value("view") == "hole";
         const auto view = scenegraph::parseViewDirection(verb.value("view"));
         if (!view && !downHole)
-            throw UsageError("caliper3d render: --view takes iso, north, east, top or hole");
+            throw UsageError("caliper3d render: --view takes iso, north, east, top, map or hole");
         double at = 0.0;
         if (verb.isSet("at") && !io::parseNumber(verb.value("at"), at))
             throw UsageError("caliper3d render: --at takes a measured depth in metres");

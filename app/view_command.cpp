@@ -8,12 +8,14 @@
 #include <QApplication>
 #include <QTimer>
 
+#include "app/batch_manifest.h"
 #include "app/commands.h"
 #include "app/desktop/desk_model.h"
 #include "app/desktop/gui_session.h"
 #include "app/desktop/main_window.h"
 #include "app/desktop/well_session.h"
 #include "app/input_options.h"
+#include "app/manifest_wells.h"
 #include "app/scene_assembly.h"
 #include "app/verb_parser.h"
 #include "io/number_parsing.h"
@@ -31,14 +33,19 @@ namespace caliper3d::app {
 
 namespace {
 
-int showWindow(int argc, char** argv, const std::vector<WellSource>& wells,
-               const LoadOptions& options, std::optional<double> at_m = std::nullopt,
-               bool exaggerationGiven = false) {
+// A well the window opens, with its own options (a manifest's rows may differ).
+struct WellToOpen {
+    WellSource source;
+    LoadOptions options;
+};
+
+int showWindow(int argc, char** argv, const std::vector<WellToOpen>& wells,
+               std::optional<double> at_m = std::nullopt, bool exaggerationGiven = false,
+               int status = kExitOk) {
     QApplication application(argc, argv);
     initGui();
     MainWindow window;
     window.show();
-    int status = kExitOk;
     WellSession& session = window.session();
     if (exaggerationGiven) session.keepExaggeration();
     QObject::connect(&session, &WellSession::wellFailed,
@@ -50,8 +57,9 @@ int showWindow(int argc, char** argv, const std::vector<WellSource>& wells,
         QObject::connect(&session, &WellSession::wellAnalysed, &window, [&window, at_m](int well) {
             if (well == 0) window.model().setCurrent(0, *at_m);
         });
-    session.openWell(wells.front(), options);
-    for (std::size_t i = 1; i < wells.size(); ++i) session.addWell(wells[i], options);
+    session.openWell(wells.front().source, wells.front().options);
+    for (std::size_t i = 1; i < wells.size(); ++i)
+        session.addWell(wells[i].source, wells[i].options);
     // The first frame can stay black until something changes: redraw once shown.
     QTimer::singleShot(100, &window, [&window] { window.update(); });
     const int rc = application.exec();
@@ -84,14 +92,22 @@ LoadOptions exampleOptions() {
 
 int runView(int argc, char** argv, const QStringList& args) {
     return guardedVerb("view", [&]() -> int {
-        VerbParser verb("view", "FILE...", "Open wells in the 3D viewer.");
+        VerbParser verb("view", "FILE... | --manifest MANIFEST [FILE...]",
+                        "Open wells in the 3D viewer: the FILEs, and every row of a batch\n"
+                        "manifest (each with its row's options over the command line's).");
         addInputOptions(verb.parser());
         addColourOptions(verb.parser());
         addWellSourceOptions(verb.parser());
         verb.parser().addOption(
             {"at", "Measured depth (m) the views open at in the first well (the nearest section).",
              "MD"});
-        if (!verb.parse(args, 1)) return kExitOk;
+        verb.parser().addOption({"manifest",
+                                 "A batch manifest (CSV or JSON, docs/formats.md): open the well "
+                                 "of every row, after the FILEs.",
+                                 "MANIFEST"});
+        if (!verb.parse(args, 0)) return kExitOk;
+        if (verb.positional().empty() && !verb.isSet("manifest"))
+            throw UsageError("caliper3d view: give FILE... or --manifest MANIFEST");
         std::optional<double> at;
         if (verb.isSet("at")) {
             double md = 0.0;
@@ -102,14 +118,41 @@ int runView(int argc, char** argv, const QStringList& args) {
         }
         LoadOptions options = inputOptionsFrom(verb.parser());
         options.colour = colourRequestFrom(verb.parser());
-        const std::vector<WellSource> wells = wellSourcesFrom(verb.parser(), verb.positional());
+        std::vector<WellToOpen> wells;
+        if (!verb.positional().empty())
+            for (const WellSource& source : wellSourcesFrom(verb.parser(), verb.positional()))
+                wells.push_back({source, options});
+        int status = kExitOk;
+        if (verb.isSet("manifest")) {
+            const Manifest manifest = readManifest(verb.value("manifest"));
+            // A row that cannot be opened is named and skipped; the others open.
+            for (const ManifestWell& well : manifestWells(manifest, options)) {
+                if (!well.problem.empty()) {
+                    std::fprintf(stderr, "caliper3d view: %s: %s\n", manifest.path.c_str(),
+                                 well.problem.c_str());
+                    status = kExitBadInput;
+                    continue;
+                }
+                for (const std::string& option : well.ignored)
+                    std::fprintf(stderr,
+                                 "caliper3d view: %s line %zu: %s is for the batch's verbs; the "
+                                 "window does not use it\n",
+                                 manifest.path.c_str(), well.line, option.c_str());
+                wells.push_back({well.source, well.options});
+            }
+            if (wells.empty()) {
+                std::fprintf(stderr, "caliper3d view: %s: no well to open\n",
+                             manifest.path.c_str());
+                return kExitBadInput;
+            }
+        }
         if (!haveDisplay()) {
             std::fprintf(
                 stderr,
                 "caliper3d view: no display; use 'caliper3d render' or 'caliper3d export'\n");
             return kExitUsage;
         }
-        return showWindow(argc, argv, wells, options, at, verb.isSet("exaggerate"));
+        return showWindow(argc, argv, wells, at, verb.isSet("exaggerate"), status);
     });
 }
 
@@ -123,7 +166,7 @@ int runDefault(int argc, char** argv) {
         return kExitBadInput;
     }
     if (haveDisplay())  // at the example's breakout, where every view has something to show
-        return showWindow(argc, argv, {WellSource{example, {}, {}, {}}}, exampleOptions(),
+        return showWindow(argc, argv, {{WellSource{example, {}, {}, {}}, exampleOptions()}},
                           kExampleBreakout_m);
     try {
         scenegraph::initCoin();

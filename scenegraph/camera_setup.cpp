@@ -23,6 +23,7 @@ std::optional<ViewDirection> parseViewDirection(const std::string& name) {
     if (name == "north") return ViewDirection::North;
     if (name == "east") return ViewDirection::East;
     if (name == "top") return ViewDirection::Top;
+    if (name == "map") return ViewDirection::Map;
     return std::nullopt;
 }
 
@@ -118,6 +119,7 @@ void aimCamera(SoCamera* camera, ViewDirection view, const SbVec3f& centre) {
             look.setValue(1.0f, 0.0f, 0.0f);
             break;
         case ViewDirection::Top:
+        case ViewDirection::Map:
             look.setValue(0.0f, -1.0f, 0.0f);
             up.setValue(0.0f, 0.0f, -1.0f);
             break;

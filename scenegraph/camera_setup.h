@@ -20,7 +20,9 @@ namespace caliper3d::scenegraph {
 //   north: looking north (east on the right)
 //   east:  looking east (north on the left)
 //   top:   looking straight down, north up
-enum class ViewDirection { Iso, North, East, Top };
+//   map:   as top, but a picture frames the whole wells (wellheads and the paths above the
+//          logs too) and names each well beside its wellhead (docs/user-guide.md, "Map")
+enum class ViewDirection { Iso, North, East, Top, Map };
 std::optional<ViewDirection> parseViewDirection(const std::string& name);
 
 // Turns `camera` to look at `centre` from `view` (position moved one unit

@@ -126,6 +126,23 @@ LegendText legendText(const reconstruction::ColourLegend& legend) {
     return out;
 }
 
+namespace {
+// The panel reaches this far above the bar (the title), in the legend's units (the picture's
+// height is 2).
+constexpr float kPanelAboveBar = 0.17f;
+float panelBottomOf(const LegendText& text, LegendBar bar) {
+    return bar.bottom - 0.07f * static_cast<float>(text.footer.size()) - 0.06f;
+}
+}  // namespace
+
+ScreenBox legendPanel_px(const reconstruction::ColourLegend& legend, int width, int height,
+                         LegendBar bar) {
+    const float w = static_cast<float>(width), h = static_cast<float>(height);
+    const auto down = [h](float up) { return (1.0f - up) / 2.0f * h; };
+    return {w - legendWidth_px(legend), down(bar.top + kPanelAboveBar), w,
+            down(panelBottomOf(legendText(legend), bar))};
+}
+
 float legendWidth_px(const reconstruction::ColourLegend& legend) {
     const LegendText text = legendText(legend);
     float width = textWidth_px(text.title, kFontSize_px) - kTitleRight_px;
@@ -165,8 +182,8 @@ SoSeparator* makeColourLegend(const reconstruction::ColourLegend& legend, Legend
 
     // A panel behind the legend so it reads over the wall, as wide as its longest line.
     const LegendText text = legendText(legend);
-    const float panelBottom = kBarBottom - 0.07f * static_cast<float>(text.footer.size()) - 0.06f;
-    root->addChild(makeBar(-legendWidth_px(legend), 0.0f, {panelBottom, kBarTop + 0.17f},
+    const float panelBottom = panelBottomOf(text, bar);
+    root->addChild(makeBar(-legendWidth_px(legend), 0.0f, {panelBottom, kBarTop + kPanelAboveBar},
                            {0x262B36FFu, 0x262B36FFu}));
 
     std::vector<float> ys;

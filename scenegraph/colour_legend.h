@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "reconstruction/mesh/wall_colouring.h"
+#include "scenegraph/label_placement.h"
 
 class SoSeparator;
 
@@ -38,6 +39,10 @@ SoSeparator* makeColourLegend(const reconstruction::ColourLegend& legend, Legend
 // The width of the legend's panel, pixels from the picture's right edge: the room a view
 // leaves it when it frames the scene beside it.
 float legendWidth_px(const reconstruction::ColourLegend& legend);
+// The legend's panel in a picture `width` x `height` pixels (from its top-left corner): what
+// labels keep clear of.
+ScreenBox legendPanel_px(const reconstruction::ColourLegend& legend, int width, int height,
+                         LegendBar bar = {});
 
 // A number as legends print it: 3 significant digits, no trailing zeros ("-25", "0.25",
 // "1.12", "216").

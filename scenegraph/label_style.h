@@ -3,6 +3,10 @@
 #include <cstddef>
 #include <string>
 
+#include <glm/vec2.hpp>
+
+#include "scenegraph/label_placement.h"
+
 class SoFont;
 
 namespace caliper3d::scenegraph {
@@ -28,11 +32,23 @@ SoFont* makeLabelFont(float size_px = kLabelSize_px);
 // text; makeLabelFont calls this. Main thread only.
 void useRunTimeFontLibraries();
 
-// Pixels a label of `characters` characters takes across, at most (for keeping labels apart).
-float labelWidth_px(std::size_t characters, float size_px = kLabelSize_px);
 // Pixels `text` takes across in DejaVu Sans (what "Sans" finds) at `size_px`: its advance
 // widths by class of character, rounded up (narrow punctuation, i and l; f, r, t and
 // brackets; m, w, M and W; other capitals; the rest), for laying out panels of text.
 float textWidth_px(const std::string& text, float size_px);
+
+// The same in DejaVu Sans Bold (what the labels' font finds), the widest of each class.
+float boldTextWidth_px(const std::string& text, float size_px);
+
+// DejaVu Sans, in em: capitals and digits stand this high on the baseline, ascenders (b, d,
+// l) a little higher, descenders (g, p, y) reach this far below it.
+constexpr float kCapHeight_em = 0.73f;
+constexpr float kAscent_em = 0.76f;
+constexpr float kDescent_em = 0.24f;
+// The pixels a label covers when SoText2 draws `text` (as drawn, leading space included) at
+// `size_px` from `baseline` (the left end of its baseline, pixels from the picture's top-left
+// corner): boldTextWidth_px across, ascenders to descenders up and down, and the pixel of
+// outline a picture draws round it.
+ScreenBox labelBox(glm::vec2 baseline, const std::string& text, float size_px);
 
 }  // namespace caliper3d::scenegraph

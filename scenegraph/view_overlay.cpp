@@ -254,6 +254,27 @@ void ViewOverlay::setCaption(const std::vector<std::string>& lines) {
         m_caption->string.set1Value(static_cast<int>(i), lines[i].c_str());
 }
 
+std::vector<ScreenBox> ViewOverlay::occupied(int height) const {
+    const float h = static_cast<float>(height);
+    // The arrow's arms and letters lie within its length and a letter of its centre.
+    const float reach = kArrowLength_px * 1.3f + kLabelSize_px;
+    std::vector<ScreenBox> boxes{{kArrowCentre_px - reach, h - kArrowCentre_px - reach,
+                                  kArrowCentre_px + reach, h - kArrowCentre_px + reach}};
+    const int lines = m_caption->string.getNum();
+    float width = 0.0f;
+    for (int i = 0; i < lines; ++i)
+        width = std::max(width, boldTextWidth_px(m_caption->string[i].getString(), kLabelSize_px));
+    if (lines > 0) {
+        // The first line's baseline kArrowCentre_px - 5 up from the bottom, the others below.
+        const float baseline = h - (kArrowCentre_px - 5.0f);
+        boxes.push_back({kCaptionLeft_px - 1.0f, baseline - kAscent_em * kLabelSize_px - 1.0f,
+                         kCaptionLeft_px + width + 1.0f,
+                         std::min(h, baseline + static_cast<float>(lines) * kLabelSize_px +
+                                         kDescent_em * kLabelSize_px + 1.0f)});
+    }
+    return boxes;
+}
+
 std::string exaggerationCaption(double radialExaggeration) {
     if (std::abs(radialExaggeration - 1.0) < 1e-9) return "radii to scale";
     char text[48];

@@ -6,6 +6,7 @@
 
 #include <Inventor/nodes/SoSeparator.h>
 
+#include "scenegraph/label_placement.h"
 #include "scenegraph/node_ref.h"
 
 class SoText2;
@@ -35,6 +36,9 @@ public:
 
     SoSeparator* root() const { return m_root.get(); }
     void setCaption(const std::vector<std::string>& lines);
+    // What the overlay covers in a picture `height` pixels high (from its top-left corner):
+    // the arrow with its letters, and the caption. Labels keep clear of it.
+    std::vector<ScreenBox> occupied(int height) const;
 
     // Where the arrow's centre is, in pixels from the picture's bottom-left corner, and its
     // length (north arm).

@@ -37,8 +37,8 @@ namespace {
 
 // A tick mark stands this much of the annotated length clear of the drawn wall.
 constexpr double kTickLength = 0.025;
-// DejaVu Sans's digits and capitals, in em.
-constexpr float kCapHeight = 0.73f;
+// A name keeps this far clear of its well's top (the wellhead marker is 9 px across).
+constexpr float kNameClearance_px = 8.0f;
 
 struct Span {
     double top = 0.0;
@@ -72,54 +72,6 @@ glm::vec3 sideOf(const reconstruction::PathSample& at, const AnnotationView& vie
     return side;
 }
 
-// Pixel boxes of the labels placed so far.
-class LabelSpace {
-public:
-    explicit LabelSpace(const AnnotationView& view) : m_view(view) {}
-    // Places a label anchored (left end of its baseline) at `at`; false when it would
-    // overlap one placed before.
-    bool place(const glm::vec3& at, std::size_t characters, float size_px) {
-        if (!m_view.toPixels) return true;
-        const std::optional<glm::vec2> p = m_view.toPixels(at);
-        if (!p) return false;
-        // A label's text is centred on its anchor's height (labelNode), or in a window
-        // without a pixel size stands on it: the box covers both.
-        const Box box{p->x, p->y - size_px, p->x + labelWidth_px(characters, size_px),
-                      p->y + 0.5f * size_px};
-        for (const Box& other : m_boxes)
-            if (box.x0 < other.x1 + kGap_px && other.x0 < box.x1 + kGap_px &&
-                box.y0 < other.y1 + kGap_px && other.y0 < box.y1 + kGap_px)
-                return false;
-        m_boxes.push_back(box);
-        return true;
-    }
-
-private:
-    static constexpr float kGap_px = 3.0f;
-    struct Box {
-        float x0, y0, x1, y1;
-    };
-    const AnnotationView& m_view;
-    std::vector<Box> m_boxes;
-};
-
-// Where the name goes: the top of what is annotated, off the path like a tick's label.
-struct NamePlace {
-    glm::vec3 position{0.0f};
-    glm::vec3 anchor{0.0f};
-    bool wellhead = false;
-};
-
-NamePlace namePlace(const reconstruction::WellGeometry& geometry, const AnnotationView& view,
-                    const Span& span, double standOff) {
-    const reconstruction::PathSample top = reconstruction::pathAt(geometry, span.top);
-    NamePlace place;
-    place.position = toScene(top.position);
-    place.anchor = place.position + sideOf(top, view) * static_cast<float>(standOff);
-    place.wellhead = span.top <= 0.0;
-    return place;
-}
-
 double standOffOf(const reconstruction::WellGeometry& geometry, const AnnotationView& view,
                   const Span& span) {
     if (!view.tickMarks) return 0.0;
@@ -136,7 +88,7 @@ SoSeparator* labelNode(const glm::vec3& at, const std::string& text, const Annot
     const glm::vec3 up = glm::cross(view.right, view.look);
     const float pixel = view.pixelSize ? view.pixelSize(at) : 0.0f;
     // SoText2 stands on its point: down by half the height of digits and capitals.
-    const glm::vec3 anchor = at - up * (pixel * kCapHeight * size_px / 2.0f);
+    const glm::vec3 anchor = at - up * (pixel * kCapHeight_em * size_px / 2.0f);
     auto* move = new SoTranslation;
     move->translation.setValue(anchor.x, anchor.y, anchor.z);
     group->addChild(move);
@@ -174,6 +126,8 @@ AnnotationView pictureAnnotationView(const SoCamera& camera, int width, int heig
     AnnotationView view;
     view.top_m = top_m;
     view.bottom_m = bottom_m;
+    view.width_px = width;
+    view.height_px = height;
     const SbRotation orientation = camera.orientation.getValue();
     SbVec3f look, right;
     orientation.multVec(SbVec3f(0.0f, 0.0f, -1.0f), look);
@@ -227,17 +181,24 @@ std::string wellLabel(const io::SectionTable& table) {
     return std::filesystem::path(table.source).filename().string();
 }
 
-std::vector<DepthTick> depthTicks(const reconstruction::WellGeometry& geometry,
-                                  const AnnotationView& view) {
-    std::vector<DepthTick> ticks;
-    if (geometry.table().rowCount() == 0) return ticks;
+WellLabels wellLabels(const reconstruction::WellGeometry& geometry, const AnnotationView& view) {
+    WellLabels labels;
+    if (geometry.table().rowCount() == 0) return labels;
     const Span span = annotatedSpan(geometry, view);
     const double standOff = standOffOf(geometry, view, span);
-    LabelSpace space(view);
     if (view.tickMarks) {
-        const NamePlace name = namePlace(geometry, view, span, standOff);
-        space.place(name.anchor, wellLabel(geometry.table()).size() + 1, kNameSize_px);
+        const reconstruction::PathSample top = reconstruction::pathAt(geometry, span.top);
+        WellName name;
+        name.text = wellLabel(geometry.table());
+        name.position = toScene(top.position);
+        name.labelAt = name.position + sideOf(top, view) * static_cast<float>(standOff);
+        name.wellhead = span.top <= 0.0;
+        const double radius = typicalRadius_m(geometry, span.top, span.bottom);
+        name.drawnRadius_m =
+            std::isfinite(radius) ? static_cast<float>(radius * view.radialExaggeration) : 0.0f;
+        labels.name = name;
     }
+    if (!view.depthTicks) return labels;
     const auto firstTick = static_cast<long long>(std::ceil(span.top / span.spacing - 1e-9));
     const auto lastTick = static_cast<long long>(std::floor(span.bottom / span.spacing + 1e-9));
     for (long long k = std::max(firstTick, 1LL); k <= lastTick; ++k) {
@@ -246,23 +207,146 @@ std::vector<DepthTick> depthTicks(const reconstruction::WellGeometry& geometry,
         const reconstruction::PathSample at = reconstruction::pathAt(geometry, tick.md_m);
         tick.position = toScene(at.position);
         tick.end = tick.position + sideOf(at, view) * static_cast<float>(standOff);
-        const std::string label = depthLabel(tick.md_m, span.spacing);
-        if (space.place(tick.end, label.size() + 1, kLabelSize_px)) tick.label = label;
-        ticks.push_back(std::move(tick));
+        tick.label = depthLabel(tick.md_m, span.spacing);
+        tick.labelAt = tick.end;
+        labels.ticks.push_back(std::move(tick));
     }
-    return ticks;
+    return labels;
+}
+
+namespace {
+
+// One label to place: the scene point its candidates are measured from, and where its text
+// starts (left end, middle of the capitals) for each candidate box, in pixels.
+struct LabelToPlace {
+    const AnnotationView* view = nullptr;
+    std::string* text = nullptr;  // cleared when left out
+    glm::vec3* labelAt = nullptr;
+    glm::vec3 anchor{0.0f};
+    glm::vec2 anchorPixel{0.0f};
+    std::vector<ScreenBox> boxes;
+    std::vector<glm::vec2> starts;
+};
+
+// The box of `text` (as drawn: after a space) whose capitals' middle starts at `start`.
+ScreenBox boxFrom(glm::vec2 start, const std::string& text, float size_px) {
+    return labelBox(start + glm::vec2(0.0f, kCapHeight_em * size_px / 2.0f), " " + text, size_px);
+}
+
+// Adds the candidate whose box is `box` to `label`.
+void addCandidate(LabelToPlace& label, const ScreenBox& box, const std::string& text,
+                  float size_px) {
+    const ScreenBox at0 = boxFrom(glm::vec2(0.0f), text, size_px);
+    label.boxes.push_back(box);
+    label.starts.emplace_back(box.x0 - at0.x0, box.y0 - at0.y0);
+}
+
+}  // namespace
+
+void placeWellLabels(std::vector<WellLabels>& wells, const std::vector<AnnotationView>& views,
+                     const std::vector<ScreenBox>& obstacles) {
+    if (wells.empty() || views.size() != wells.size() || !views.front().toPixels) return;
+    LabelLayoutRequest request;
+    constexpr float kUnbounded = 1.0e9f;
+    const AnnotationView& first = views.front();
+    request.frame = first.width_px > 0 && first.height_px > 0
+                        ? ScreenBox{0.0f, 0.0f, static_cast<float>(first.width_px),
+                                    static_cast<float>(first.height_px)}
+                        : ScreenBox{-kUnbounded, -kUnbounded, kUnbounded, kUnbounded};
+    request.obstacles = obstacles;
+    std::vector<LabelToPlace> labels;
+    // Names first: a well's name says which well the rest belongs to.
+    for (std::size_t w = 0; w < wells.size(); ++w) {
+        if (!wells[w].name) continue;
+        WellName& name = *wells[w].name;
+        const AnnotationView& view = views[w];
+        LabelToPlace label{&view, &name.text, &name.labelAt, name.position};
+        const std::optional<glm::vec2> head = view.toPixels(name.position);
+        const std::optional<glm::vec2> start = view.toPixels(name.labelAt);
+        if (head && start && !view.pixelSize) {
+            // Not to be moved: where it first went, or nowhere.
+            label.anchorPixel = *head;
+            addCandidate(label, boxFrom(*start, name.text, kNameSize_px), name.text, kNameSize_px);
+        } else if (head) {
+            // Beside the top, clear of the tube drawn there (seen end on in a map).
+            label.anchorPixel = *head;
+            const float pixel = view.pixelSize(name.position);
+            const float radius_px = pixel > 0.0f ? name.drawnRadius_m / pixel : 0.0f;
+            const float clearance = std::max(kNameClearance_px, radius_px + 4.0f);
+            const ScreenBox box = boxFrom(glm::vec2(0.0f), name.text, kNameSize_px);
+            const glm::vec2 size(box.width(), box.height());
+            for (const LabelSide side : kLabelSides)
+                addCandidate(label, boxBeside(*head, size, side, clearance), name.text,
+                             kNameSize_px);
+        }
+        labels.push_back(std::move(label));
+    }
+    // The wellheads' markers stay visible.
+    for (std::size_t w = 0; w < wells.size(); ++w)
+        if (wells[w].name && wells[w].name->wellhead)
+            if (const auto head = views[w].toPixels(wells[w].name->position))
+                request.obstacles.push_back(
+                    {head->x - 4.5f, head->y - 4.5f, head->x + 4.5f, head->y + 4.5f});
+    // Then the depth labels, down each well: at the mark's end, else just above or below it.
+    for (std::size_t w = 0; w < wells.size(); ++w)
+        for (DepthTick& tick : wells[w].ticks) {
+            LabelToPlace label{&views[w], &tick.label, &tick.labelAt, tick.end};
+            if (const std::optional<glm::vec2> end = views[w].toPixels(tick.end)) {
+                label.anchorPixel = *end;
+                const ScreenBox box = boxFrom(*end, tick.label, kLabelSize_px);
+                addCandidate(label, box, tick.label, kLabelSize_px);
+                if (views[w].pixelSize) {
+                    const float half = box.height() / 2.0f + 1.0f;
+                    for (const float dy : {-half, half})
+                        addCandidate(label, {box.x0, box.y0 + dy, box.x1, box.y1 + dy}, tick.label,
+                                     kLabelSize_px);
+                }
+            }
+            labels.push_back(std::move(label));
+        }
+    // The wells' labels in one request, so that no two wells' labels meet either.
+    for (const LabelToPlace& label : labels) request.candidates.push_back(label.boxes);
+    const std::vector<int> chosen = placeLabels(request);
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+        LabelToPlace& label = labels[i];
+        if (chosen[i] < 0) {
+            label.text->clear();
+            continue;
+        }
+        const auto k = static_cast<std::size_t>(chosen[i]);
+        const AnnotationView& view = *label.view;
+        if (!view.pixelSize) continue;  // where it first went
+        // Moved across the view, at the anchor's distance from the eye.
+        const glm::vec2 shift = label.starts[k] - label.anchorPixel;
+        const glm::vec3 up = glm::cross(view.right, view.look);
+        *label.labelAt =
+            label.anchor + (view.right * shift.x - up * shift.y) * view.pixelSize(label.anchor);
+    }
+}
+
+std::vector<DepthTick> depthTicks(const reconstruction::WellGeometry& geometry,
+                                  const AnnotationView& view) {
+    std::vector<WellLabels> labels{wellLabels(geometry, view)};
+    placeWellLabels(labels, {view});
+    return labels.front().ticks;
 }
 
 SoSeparator* makeWellAnnotations(const reconstruction::WellGeometry& geometry,
                                  const AnnotationView& view) {
+    std::vector<WellLabels> labels{wellLabels(geometry, view)};
+    placeWellLabels(labels, {view});
+    return makeWellAnnotations(geometry, view, labels.front());
+}
+
+SoSeparator* makeWellAnnotations(const reconstruction::WellGeometry& geometry,
+                                 const AnnotationView& view, const WellLabels& wellLabels) {
     assertMainThread("makeWellAnnotations");
     auto* content = new SoSeparator;
     auto* unlit = new SoLightModel;
     unlit->model = SoLightModel::BASE_COLOR;
     content->addChild(unlit);
     if (geometry.table().rowCount() == 0) return makeDrawnOnly(content);
-    const Span span = annotatedSpan(geometry, view);
-    const std::vector<DepthTick> ticks = depthTicks(geometry, view);
+    const std::vector<DepthTick>& ticks = wellLabels.ticks;
 
     if (view.tickMarks && !ticks.empty()) {
         auto* marks = new SoSeparator;
@@ -292,10 +376,14 @@ SoSeparator* makeWellAnnotations(const reconstruction::WellGeometry& geometry,
     labels->setName("labels");
     labels->addChild(makeLabelFont(kLabelSize_px));
     for (const DepthTick& tick : ticks)
-        if (!tick.label.empty())
-            labels->addChild(labelNode(tick.end, tick.label, view, kLabelColour, kLabelSize_px));
-    if (view.tickMarks) {
-        const NamePlace name = namePlace(geometry, view, span, standOffOf(geometry, view, span));
+        if (!tick.label.empty()) {
+            SoSeparator* label =
+                labelNode(tick.labelAt, tick.label, view, kLabelColour, kLabelSize_px);
+            label->setName("depth_label");
+            labels->addChild(label);
+        }
+    if (wellLabels.name) {
+        const WellName& name = *wellLabels.name;
         auto* nameColour = new SoBaseColor;
         nameColour->rgb.setValue(kNameColour);
         labels->addChild(nameColour);
@@ -307,11 +395,13 @@ SoSeparator* makeWellAnnotations(const reconstruction::WellGeometry& geometry,
             labels->addChild(at);
             labels->addChild(marker);
         }
-        labels->addChild(makeLabelFont(kNameSize_px));
-        SoSeparator* nameLabel =
-            labelNode(name.anchor, wellLabel(geometry.table()), view, kNameColour, kNameSize_px);
-        nameLabel->setName("well_name");
-        labels->addChild(nameLabel);
+        if (!name.text.empty()) {
+            labels->addChild(makeLabelFont(kNameSize_px));
+            SoSeparator* nameLabel =
+                labelNode(name.labelAt, name.text, view, kNameColour, kNameSize_px);
+            nameLabel->setName("well_name");
+            labels->addChild(nameLabel);
+        }
     }
     content->addChild(labels);
     SoSeparator* root = makeDrawnOnly(content);

@@ -10,6 +10,7 @@
 
 #include "io/section_table.h"
 #include "reconstruction/well_geometry.h"
+#include "scenegraph/label_placement.h"
 
 class SoCamera;
 class SoSeparator;
@@ -37,8 +38,15 @@ struct AnnotationView {
     // labelled.
     std::function<std::optional<glm::vec2>(const glm::vec3&)> toPixels;
     // The scene length one pixel of the picture spans at a point. When set, every label gets
-    // a dark outline a pixel wide, which keeps it legible over a lit wall.
+    // a dark outline a pixel wide, which keeps it legible over a lit wall, and a label may be
+    // moved off its anchor to keep clear of the others.
     std::function<float(const glm::vec3&)> pixelSize;
+    // The picture's size in pixels (0: not known): with toPixels, labels stay inside it.
+    int width_px = 0;
+    int height_px = 0;
+    // False: no depth ticks, nor their labels. A picture of several wells ticks the current
+    // one only and names the others.
+    bool depthTicks = true;
 };
 
 // The annotation view of a picture taken by `camera` (its direction, right and projection)
@@ -47,16 +55,51 @@ AnnotationView pictureAnnotationView(const SoCamera& camera, int width, int heig
                                      double bottom_m);
 
 // One depth tick: at `md_m` on the path (scene frame), its mark out to `end`, its label
-// there (empty when left out to keep labels apart).
+// (empty when left out to keep labels apart) starting at `labelAt` (the left end of its text,
+// at the middle of its capitals' height): the mark's end, unless moved clear of another label.
 struct DepthTick {
     double md_m = 0.0;
     glm::vec3 position{0.0f};
     glm::vec3 end{0.0f};
     std::string label;
+    glm::vec3 labelAt{0.0f};
 };
 
+// A well's name at the top of what is annotated (`position`, the wellhead when `wellhead`,
+// which carries a marker), its text starting at `labelAt` as a tick's label does; `text`
+// empty when left out (no room for it in a picture).
+struct WellName {
+    std::string text;
+    glm::vec3 position{0.0f};
+    glm::vec3 labelAt{0.0f};
+    bool wellhead = false;
+    float drawnRadius_m = 0.0f;  // of the tube there: a name placed keeps clear of it
+};
+
+// What a well's annotations say and where: its name (with tick marks only: not down the
+// hole) and its depth ticks.
+struct WellLabels {
+    std::optional<WellName> name;
+    std::vector<DepthTick> ticks;
+};
+
+// A well's labels where they first go: every tick labelled at its mark's end, the name off the
+// top of the path on the tick marks' side. Nothing is left out or moved.
+WellLabels wellLabels(const reconstruction::WellGeometry& geometry, const AnnotationView& view);
+
+// The labels of a picture's wells placed together (label_placement.h, placeLabels): every
+// well's name first, in the order given, then each well's depth labels down the well; a name
+// may take a place all round the top of its well, a depth label its mark's end or just above or
+// below it; a label with no free room is left out (its tick stays). A name placed goes beside the
+// top of its well (its wellhead in a map), clear of the tube drawn there. `views[i]` is how well i
+// is seen (toPixels, and pixelSize to move a label; without toPixels nothing is placed);
+// `obstacles` are what the picture draws over the scene (the overlay, a legend).
+void placeWellLabels(std::vector<WellLabels>& wells, const std::vector<AnnotationView>& views,
+                     const std::vector<ScreenBox>& obstacles = {});
+
 // The ticks of `geometry` every spacing (AnnotationView::tickSpacing_m) over the annotated
-// depths, MD 0 (the wellhead, which carries the well's name) left out.
+// depths, MD 0 (the wellhead, which carries the well's name) left out; with view.toPixels,
+// placed with the well's name as placeWellLabels places one well's.
 std::vector<DepthTick> depthTicks(const reconstruction::WellGeometry& geometry,
                                   const AnnotationView& view);
 
@@ -72,6 +115,11 @@ std::string wellLabel(const io::SectionTable& table);
 // thread only.
 SoSeparator* makeWellAnnotations(const reconstruction::WellGeometry& geometry,
                                  const AnnotationView& view);
+// The same with its labels as given (placeWellLabels). Each label is a separator named
+// "well_name" or "depth_label": an SoTranslation to the left end of its baseline, its outline,
+// its colour and its SoText2.
+SoSeparator* makeWellAnnotations(const reconstruction::WellGeometry& geometry,
+                                 const AnnotationView& view, const WellLabels& labels);
 
 // A well's unlogged path and annotations for a view that shows it whole with the default
 // direction of a viewer's camera (looking north), in one group: what a window adds beside

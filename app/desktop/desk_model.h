@@ -32,6 +32,9 @@ struct DeskWell {
     std::vector<io::Pick> picks;  // image-log picks (--picks), shown in the 3D, rose and log track
     QString error;                // why the load failed (empty when it did not)
     bool visible = true;
+    // How far its load has got, 0 to 1: the log read (the first 70 %), then its segments
+    // drawn; 1 once loaded (WellSession publishes it while the well loads).
+    double loadFraction = 0.0;
 };
 
 // The window's shared state: the wells, and the one current well, depth and angle that

@@ -30,7 +30,9 @@ ViewMenu::ViewMenu(QMainWindow& window, WellSession& session, WellNavigator& nav
         {"&Iso", ViewDirection::Iso},
         {"Looking &north", ViewDirection::North},
         {"Looking &east", ViewDirection::East},
-        {"From &top", ViewDirection::Top}};
+        // The window frames whole wells and names them at their wellheads: from the top is
+        // render's map.
+        {"From &top (map)", ViewDirection::Map}};
     for (const auto& [name, direction] : presets)
         view->addAction(name, this, [this, d = direction] { m_navigator.viewFrom(d); });
     view->addSeparator();

@@ -27,8 +27,10 @@ namespace caliper3d::app {
 
 namespace {
 
-constexpr double kReadShare = 0.7;     // of a well's progress: reading the log
-constexpr int kRenderHeight_px = 768;  // caliper3d render's default picture height
+constexpr double kReadShare = 0.7;         // of a well's progress: reading the log
+constexpr int kRenderHeight_px = 768;      // caliper3d render's default picture height
+constexpr int kProgressInterval_ms = 200;  // each loading well's fraction into its record
+constexpr double kProgressStep = 0.01;     // a change smaller than this is not published
 
 QString fileName(const std::string& path) {
     return QFileInfo(QString::fromStdString(path)).fileName();
@@ -57,7 +59,10 @@ WellSession::WellSession(DeskModel& model, scenegraph::DetailLoader::CameraProbe
       m_model(model),
       m_retired(std::make_unique<RetiredLoads>()),
       m_sceneRoot(scenegraph::makeRef(new SoSeparator)),
-      m_detail(std::make_unique<scenegraph::DetailLoader>(std::move(probe))) {}
+      m_detail(std::make_unique<scenegraph::DetailLoader>(std::move(probe))) {
+    m_progressTimer.setInterval(kProgressInterval_ms);
+    connect(&m_progressTimer, &QTimer::timeout, this, &WellSession::publishProgress);
+}
 
 WellSession::~WellSession() {
     // Stop the workers before the nodes go.
@@ -183,6 +188,7 @@ int WellSession::addWell(const WellSource& source, const LoadOptions& options) {
                      QString::number(warnings), warnings == 1 ? "" : "s");
         emit status(m_loadedText.arg(record.options.radialExaggeration));
         w.done = true;
+        edit(w, [](DeskWell& r) { r.loadFraction = 1.0; });
         analyse(w);
         // Signalled from the event loop, not from inside the feeder's tick, so a slot may
         // open other wells (destroying this feeder) safely.
@@ -209,6 +215,7 @@ int WellSession::addWell(const WellSource& source, const LoadOptions& options) {
     };
     w.feeder = std::make_unique<scenegraph::SegmentFeeder>(*w.pipeline, w.view->scene(), callbacks);
     w.pipeline->start();
+    m_progressTimer.start();
     emit loadStarted();
     return w.id;
 }
@@ -269,6 +276,15 @@ bool WellSession::loading() const {
     return std::any_of(m_wells.begin(), m_wells.end(), [](const auto& w) { return !w->done; });
 }
 
+double WellSession::loadFraction(const Well& well) const {
+    if (well.done || !well.pipeline) return 1.0;
+    const auto& g = m_model.well(modelIndex(well)).geometry;
+    if (!g) return kReadShare * well.pipeline->readFraction();
+    const double segments = std::max<double>(1.0, double(g->segmentCount()));
+    return kReadShare +
+           (1.0 - kReadShare) * std::min(1.0, double(well.feeder->attached()) / segments);
+}
+
 LoadProgress WellSession::progress() const {
     LoadProgress out;
     double sum = 0.0;
@@ -276,23 +292,33 @@ LoadProgress WellSession::progress() const {
     for (const auto& well : m_wells) {
         if (well->done || !well->pipeline) continue;
         ++count;
-        const auto& g = m_model.well(modelIndex(*well)).geometry;
-        if (!g) {
-            sum += kReadShare * well->pipeline->readFraction();
+        sum += loadFraction(*well);
+        if (!m_model.well(modelIndex(*well)).geometry)
             // A streamed load draws the stretches read while it reads on.
             out.text =
                 (well->feeder->attached() > 0 ? "Reading and drawing " : "Reading ") + well->name;
-        } else {
-            const double segments = std::max<double>(1.0, double(g->segmentCount()));
-            sum += kReadShare +
-                   (1.0 - kReadShare) * std::min(1.0, double(well->feeder->attached()) / segments);
+        else
             out.text = "Drawing " + well->name;
-        }
     }
     out.busy = count > 0;
-    if (count > 1) out.text = QString("Loading %1 wells").arg(count);
+    if (count > 1)
+        out.text = QString("Loading %1 wells, %2 of %3 done")
+                       .arg(count)
+                       .arg(m_wells.size() - std::size_t(count))
+                       .arg(m_wells.size());
     if (out.busy) out.fraction = sum / count;
     return out;
+}
+
+void WellSession::publishProgress() {
+    for (const auto& well : m_wells) {
+        if (well->done) continue;
+        const double fraction = loadFraction(*well);
+        const int index = modelIndex(*well);
+        if (index >= 0 && std::abs(m_model.well(index).loadFraction - fraction) >= kProgressStep)
+            edit(*well, [fraction](DeskWell& r) { r.loadFraction = fraction; });
+    }
+    if (!loading()) m_progressTimer.stop();
 }
 
 std::size_t WellSession::warningCount() const {

@@ -8,6 +8,7 @@
 
 #include <QObject>
 #include <QString>
+#include <QTimer>
 
 #include "app/input_options.h"
 #include "scenegraph/detail_loader.h"
@@ -38,7 +39,8 @@ struct WellPick {
 struct LoadProgress {
     bool busy = false;
     double fraction = 0.0;  // 0..1
-    QString text;           // "Reading NAME", "Drawing NAME" or "Loading N wells"
+    // "Reading NAME", "Drawing NAME", or "Loading N wells, D of T done" (D loaded or failed)
+    QString text;
 };
 
 // The wells shown (FreeCAD's App::Document): opens, adds, cancels, restyles, shows and hides
@@ -92,6 +94,9 @@ public:
     std::size_t wellCount() const { return m_wells.size(); }
     bool loading() const;
     LoadProgress progress() const;
+    // Writes each loading well's fraction done into its record (DeskWell::loadFraction), where
+    // the wells dock shows it; a timer calls it while wells load.
+    void publishProgress();
     // The warnings of the wells shown (reader, survey, geometry) as loaded so far.
     std::size_t warningCount() const;
     QString warningsText() const;
@@ -139,6 +144,7 @@ private:
     void edit(const Well& well, Edit change);
     void analyse(Well& well);
     void wellDone();
+    double loadFraction(const Well& well) const;
     void applyStyleAfterLoad();
     bool restyleWells(double radialExaggeration, const reconstruction::ColourRequest& colour,
                       int onlyId);  // -1: every well
@@ -153,7 +159,8 @@ private:
     reconstruction::Wellhead m_origin;  // the first well's wellhead
     bool m_framed = false;              // firstSegmentsShown sent for this opening
     bool m_exaggerationKept = false;
-    QString m_loadedText;  // the last load's status line, its exaggeration a %1
+    QString m_loadedText;    // the last load's status line, its exaggeration a %1
+    QTimer m_progressTimer;  // publishProgress while wells load
     // What the legend shows (a copy: the colouring's per-row values stay with the geometry).
     std::optional<reconstruction::ColourLegend> m_legend;
 };

@@ -104,10 +104,13 @@ void WellsDock::fill(QTreeWidgetItem* item, int well) {
     item->setText(Units, units);
     item->setText(Rows, rows);
     item->setText(Depths, depths);
-    item->setText(State, !w.error.isEmpty() ? "failed"
-                         : !w.geometry      ? "loading"
-                         : !w.analysis      ? "analysing"
-                                            : "loaded");
+    // While it loads, how far: reading the log, then drawing its segments.
+    const QString done = QString(" %1%").arg(std::floor(100.0 * w.loadFraction), 0, 'f', 0);
+    item->setText(State, !w.error.isEmpty() ? QString("failed")
+                         : w.loadFraction >= 1.0
+                             ? (w.analysis ? QString("loaded") : QString("analysing"))
+                         : w.geometry ? "drawing" + done
+                                      : "reading" + done);
     item->setToolTip(State, w.error);
 }
 

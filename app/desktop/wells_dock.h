@@ -10,8 +10,9 @@ namespace caliper3d::app {
 class DeskModel;
 
 // The wells shown: each with a box to show or hide it, what its wall is coloured by, its bit
-// size and units as read, its rows and depths, and whether it is loading, analysing,
-// loaded or failed. Clicking a well makes it the current one.
+// size and units as read, its rows and depths, and whether it is reading or drawing (with
+// the fraction of its load done), analysing, loaded or failed. Clicking a well makes it the current
+// one.
 class WellsDock : public QDockWidget {
     Q_OBJECT
 

@@ -62,31 +62,47 @@ Picture drawPicture(const std::vector<PictureWell>& wells, const PictureRequest&
     }
     Picture out;
     const bool framedFromView = !request.camera && !request.pose;
+    // A map frames the whole wells and names them at their wellheads; other views frame the
+    // logs and name each at its top.
+    const bool map = framedFromView && request.view == ViewDirection::Map;
     if (request.camera)
         out.root = makeRef(makeRenderRoot(scene, *request.camera, width, height));
     else if (request.pose)
         out.root = makeRef(makeRenderRoot(scene, *request.pose));
     else
-        out.root = makeRef(makeRenderRoot(scene, request.view, width, height, logged));
+        out.root =
+            makeRef(makeRenderRoot(scene, request.view, width, height, map ? nullptr : logged));
     SoSeparator* root = out.root.get();
+    out.overlay = std::make_unique<ViewOverlay>();
+    std::vector<std::string> caption = request.caption;
+    caption.push_back(exaggerationCaption(request.radialExaggeration));
+    out.overlay->setCaption(caption);
     // Depth ticks, labels and each well's name for this camera (no part in its framing); in a
-    // picture framed on the logs, from the top of each log (the name there, in view).
-    if (const SoCamera* camera = findCamera(root))
-        for (const PictureWell& well : wells) {
-            const std::vector<double>& depth = well.geometry->table().depth_m;
-            const double top = framedFromView && !depth.empty()
+    // picture framed on the logs, from the top of each log (the name there, in view). With
+    // several wells only the current one is ticked; every label of every well is placed at
+    // once, clear of the others, the overlay and the legend.
+    if (const SoCamera* camera = findCamera(root)) {
+        std::vector<AnnotationView> views;
+        std::vector<WellLabels> labels;
+        for (std::size_t i = 0; i < wells.size(); ++i) {
+            const std::vector<double>& depth = wells[i].geometry->table().depth_m;
+            const double top = framedFromView && !map && !depth.empty()
                                    ? std::max(request.top_m, depth.front())
                                    : request.top_m;
             AnnotationView view =
                 pictureAnnotationView(*camera, width, height, top, request.bottom_m);
             view.radialExaggeration = request.radialExaggeration;
             view.tickMarks = request.tickMarks;
-            root->addChild(makeWellAnnotations(*well.geometry, view));
+            view.depthTicks = wells.size() == 1 || i == request.tickedWell;
+            labels.push_back(wellLabels(*wells[i].geometry, view));
+            views.push_back(std::move(view));
         }
-    out.overlay = std::make_unique<ViewOverlay>();
-    std::vector<std::string> caption = request.caption;
-    caption.push_back(exaggerationCaption(request.radialExaggeration));
-    out.overlay->setCaption(caption);
+        std::vector<ScreenBox> obstacles = out.overlay->occupied(height);
+        if (request.legend) obstacles.push_back(legendPanel_px(*request.legend, width, height));
+        placeWellLabels(labels, views, obstacles);
+        for (std::size_t i = 0; i < wells.size(); ++i)
+            root->addChild(makeWellAnnotations(*wells[i].geometry, views[i], labels[i]));
+    }
     root->addChild(out.overlay->root());
     out.refinedSegments = refineForCamera(wells, root, height, request.pixelTolerance);
     if (request.legend) root->addChild(makeColourLegend(*request.legend));

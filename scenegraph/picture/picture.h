@@ -43,7 +43,8 @@ struct PictureRequest {
     int height = 768;
     // The camera: a viewer's (copied, its aspect made the picture's), else a pose inside the
     // hole (unlit wall, fog), else the logged wells framed from `view` (the path above each
-    // log drawn where it falls in view; the annotations from each log's top).
+    // log drawn where it falls in view; the annotations from each log's top), or for
+    // ViewDirection::Map the whole wells (the annotations from top_m: the wellheads).
     const SoCamera* camera = nullptr;
     std::optional<CameraPose> pose;
     ViewDirection view = ViewDirection::Iso;
@@ -51,6 +52,9 @@ struct PictureRequest {
     double top_m = 0.0;
     double bottom_m = std::numeric_limits<double>::infinity();
     bool tickMarks = true;
+    // Of several wells, the one whose depths are ticked (the current one); the others are
+    // named only.
+    std::size_t tickedWell = 0;
     bool unloggedPath = false;  // the dashed path above each log (a view of whole wells)
     double radialExaggeration = 1.0;
     std::vector<std::string> caption;  // lines above the exaggeration's

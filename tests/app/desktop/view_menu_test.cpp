@@ -164,7 +164,7 @@ TEST_F(ViewMenuTest, ViewAllAndThePresetsLeaveTheHole) {
     EXPECT_FALSE(inside->isChecked()) << "the menu says the camera is out";
     EXPECT_TRUE(framesTheScene()) << "the whole well in view";
 
-    for (const QString& preset : {"Iso", "Looking north", "Looking east", "From top"}) {
+    for (const QString& preset : {"Iso", "Looking north", "Looking east", "From top (map)"}) {
         inside->trigger();
         ASSERT_TRUE(window.navigator().inside()) << preset.toStdString();
         QAction* from = action(view, preset);

@@ -1,0 +1,295 @@
+// Pictures of a field of wells (scenegraph/picture): every label drawn keeps clear of the
+// others. Drawn offscreen (EGL), then the labels are read back from what was drawn.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include <Inventor/SbViewVolume.h>
+#include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/nodes/SoCamera.h>
+#include <Inventor/nodes/SoCoordinate3.h>
+#include <Inventor/nodes/SoSeparator.h>
+#include <Inventor/nodes/SoText2.h>
+#include <Inventor/nodes/SoTranslation.h>
+
+#include "coin_fixture.h"
+#include "reconstruction/section/section_frame.h"
+#include "reconstruction/synthetic/synthetic_well.h"
+#include "reconstruction/well_geometry.h"
+#include "reconstruction/well_path.h"
+#include "scenegraph/camera_setup.h"
+#include "scenegraph/label_style.h"
+#include "scenegraph/picture/picture.h"
+#include "scenegraph/picture/png_file.h"
+#include "scenegraph/picture_scale.h"
+#include "scenegraph/render_stats.h"
+#include "scenegraph/view_overlay.h"
+#include "scenegraph/well_annotations.h"
+
+namespace caliper3d::scenegraph {
+namespace {
+
+using Geometries = std::vector<std::shared_ptr<const reconstruction::WellGeometry>>;
+
+// A field as `caliper3d synth --field N` lays it out: wells 25 m apart on a square grid,
+// each a profile in turn, their hole azimuths turned 37 degrees a well, named FIELD-000, ...
+Geometries syntheticField(std::size_t wells, double length_m, double step_m) {
+    const std::vector<std::string> profiles = reconstruction::syntheticProfileNames();
+    const auto columns = static_cast<std::size_t>(std::ceil(std::sqrt(double(wells))));
+    Geometries field;
+    for (std::size_t w = 0; w < wells; ++w) {
+        reconstruction::SyntheticWellSpec spec =
+            reconstruction::syntheticProfile(profiles[w % profiles.size()], length_m, step_m);
+        spec.holeAzimuth_deg = std::fmod(spec.holeAzimuth_deg + 37.0 * double(w), 360.0);
+        auto table = std::make_shared<io::SectionTable>(reconstruction::makeSyntheticWell(spec));
+        char name[32];
+        std::snprintf(name, sizeof name, "FIELD-%03zu", w);
+        table->wellName = name;
+        reconstruction::GeometryOptions options;
+        options.wellheadOffset = {25.0 * double(w / columns), 25.0 * double(w % columns), 0.0};
+        field.push_back(std::make_shared<reconstruction::WellGeometry>(table, options));
+    }
+    // Drawn as render draws them: at the exaggeration chosen for the picture.
+    const double factor = chooseExaggeration(field, 0.0, 1.0e300, 768);
+    for (auto& well : field)
+        well = std::make_shared<reconstruction::WellGeometry>(
+            well->restyled(factor, well->options().colouring));
+    return field;
+}
+
+// A label as drawn: its text, whether it names a well, and the pixels it covers.
+struct DrawnLabel {
+    std::string text;
+    bool name = false;
+    ScreenBox box;
+};
+
+// The labels under `root`, read from the nodes drawn (each a separator named "well_name" or
+// "depth_label": an SoTranslation to the left end of its baseline first, its SoText2 last)
+// and placed in the picture through `camera`'s own view volume.
+std::vector<DrawnLabel> drawnLabels(SoNode* root, const SoCamera& camera, int width, int height) {
+    const SbViewVolume volume =
+        const_cast<SoCamera&>(camera).getViewVolume(float(width) / float(height));
+    std::vector<DrawnLabel> labels;
+    for (const char* kind : {"well_name", "depth_label"}) {
+        SoSearchAction search;
+        search.setName(kind);
+        search.setInterest(SoSearchAction::ALL);
+        search.setSearchingAll(TRUE);
+        search.apply(root);
+        const SoPathList& paths = search.getPaths();
+        for (int i = 0; i < paths.getLength(); ++i) {
+            auto* group = static_cast<SoSeparator*>(paths[i]->getTail());
+            auto* move = dynamic_cast<SoTranslation*>(group->getChild(0));
+            auto* text = dynamic_cast<SoText2*>(group->getChild(group->getNumChildren() - 1));
+            if (!move || !text) {
+                ADD_FAILURE() << kind << " " << i << " is not a translated text";
+                continue;
+            }
+            SbVec3f screen;
+            volume.projectToScreen(move->translation.getValue(), screen);
+            const glm::vec2 baseline(screen[0] * float(width), (1.0f - screen[1]) * float(height));
+            DrawnLabel label;
+            label.text = text->string[0].getString();
+            label.name = std::string(kind) == "well_name";
+            label.box = labelBox(baseline, label.text, label.name ? kNameSize_px : kLabelSize_px);
+            labels.push_back(label);
+        }
+    }
+    return labels;
+}
+
+// Where each well's wellhead (MD 0) lands in the picture, through `camera`'s own view volume.
+std::vector<glm::vec2> projectedWellheads(const Geometries& field, const SoCamera& camera,
+                                          int width, int height) {
+    const SbViewVolume volume =
+        const_cast<SoCamera&>(camera).getViewVolume(float(width) / float(height));
+    std::vector<glm::vec2> heads;
+    for (const auto& well : field) {
+        const glm::vec3 head(reconstruction::toScene(reconstruction::pathAt(*well, 0.0).position));
+        SbVec3f screen;
+        volume.projectToScreen(SbVec3f(head.x, head.y, head.z), screen);
+        heads.emplace_back(screen[0] * float(width), (1.0f - screen[1]) * float(height));
+    }
+    return heads;
+}
+
+// Pixels of `colour` (within 8 of 255 a channel) that lie in none of `boxes`.
+int pixelsOutside(const RenderedImage& image, const float colour[3],
+                  const std::vector<ScreenBox>& boxes) {
+    int count = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const std::uint8_t* p = &image.rgba[(std::size_t(y) * image.width + x) * 4];
+            bool close = true;
+            for (int c = 0; c < 3; ++c)
+                close = close && std::abs(int(p[c]) - int(colour[c] * 255.0f + 0.5f)) <= 8;
+            if (!close) continue;
+            // A pixel's centre; RenderedImage rows run from the top.
+            const float cx = float(x) + 0.5f, cy = float(y) + 0.5f;
+            bool inside = false;
+            for (const ScreenBox& b : boxes)
+                inside = inside || (cx >= b.x0 && cx <= b.x1 && cy >= b.y0 && cy <= b.y1);
+            count += inside ? 0 : 1;
+        }
+    return count;
+}
+
+class FieldPictureTest : public CoinTest {};
+
+TEST_F(FieldPictureTest, NoTwoLabelsOfAFieldOverlapInAnyView) {
+    const Geometries field = syntheticField(16, 300.0, 0.5);
+    const std::vector<PictureWell> wells = pictureWells(field);
+    const int width = 1024, height = 768;
+    for (const ViewDirection view :
+         {ViewDirection::Iso, ViewDirection::North, ViewDirection::East, ViewDirection::Top}) {
+        SCOPED_TRACE("view " + std::to_string(int(view)));
+        PictureRequest request;
+        request.width = width;
+        request.height = height;
+        request.view = view;
+        request.unloggedPath = true;
+        request.radialExaggeration = field.front()->options().radialExaggeration;
+        Picture picture;
+        try {
+            picture = drawPicture(wells, request);
+        } catch (const std::runtime_error& e) {
+            FAIL() << e.what();
+        }
+        if (const char* dump = std::getenv("FIELD_PICTURE_DUMP"))
+            writePng(picture.image,
+                     std::string(dump) + "/view" + std::to_string(int(view)) + ".png");
+        const SoCamera* camera = findCamera(picture.root.get());
+        ASSERT_NE(camera, nullptr);
+        const std::vector<DrawnLabel> labels =
+            drawnLabels(picture.root.get(), *camera, width, height);
+        int names = 0, depths = 0;
+        for (const DrawnLabel& label : labels) (label.name ? names : depths) += 1;
+        // Wells are named where there is room (here 7 to 11 of 16, their wellheads 25 m
+        // apart), and the first well's depths are labelled.
+        EXPECT_GE(names, 6);
+        EXPECT_GE(depths, 4);
+        const ScreenBox frame{0.0f, 0.0f, float(width), float(height)};
+        std::vector<ScreenBox> boxes;
+        for (std::size_t i = 0; i < labels.size(); ++i) {
+            EXPECT_TRUE(contains(frame, labels[i].box)) << labels[i].text;
+            for (std::size_t j = 0; j < i; ++j)
+                EXPECT_FALSE(overlaps(labels[i].box, labels[j].box))
+                    << "'" << labels[i].text << "' meets '" << labels[j].text << "'";
+            for (const ScreenBox& overlay : picture.overlay->occupied(height))
+                EXPECT_FALSE(overlaps(labels[i].box, overlay)) << labels[i].text;
+            boxes.push_back(labels[i].box);
+        }
+        // The boxes are what was drawn: no pixel of a label's colour lies outside them (the
+        // caption, in the label colour, is the overlay's; the wellheads' markers, 9 px
+        // across, are in the name's colour).
+        for (const ScreenBox& overlay : picture.overlay->occupied(height)) boxes.push_back(overlay);
+        for (const glm::vec2& head : projectedWellheads(field, *camera, width, height))
+            boxes.push_back({head.x - 5.5f, head.y - 5.5f, head.x + 5.5f, head.y + 5.5f});
+        EXPECT_EQ(pixelsOutside(picture.image, kNameColour, boxes), 0);
+        EXPECT_EQ(pixelsOutside(picture.image, kLabelColour, boxes), 0);
+    }
+}
+
+TEST_F(FieldPictureTest, AMapNamesEveryWellBesideItsWellhead) {
+    const Geometries field = syntheticField(16, 300.0, 0.5);
+    const std::vector<PictureWell> wells = pictureWells(field);
+    const int width = 1024, height = 768;
+    PictureRequest request;
+    request.width = width;
+    request.height = height;
+    request.view = ViewDirection::Map;
+    request.unloggedPath = true;
+    request.radialExaggeration = field.front()->options().radialExaggeration;
+    Picture picture;
+    try {
+        picture = drawPicture(wells, request);
+    } catch (const std::runtime_error& e) {
+        FAIL() << e.what();
+    }
+    if (const char* dump = std::getenv("FIELD_PICTURE_DUMP"))
+        writePng(picture.image, std::string(dump) + "/map.png");
+    const SoCamera* camera = findCamera(picture.root.get());
+    ASSERT_NE(camera, nullptr);
+    // Looking straight down, north up the picture.
+    SbVec3f look, up;
+    camera->orientation.getValue().multVec(SbVec3f(0, 0, -1), look);
+    camera->orientation.getValue().multVec(SbVec3f(0, 1, 0), up);
+    EXPECT_NEAR(look[1], -1.0f, 1e-5f);
+    EXPECT_NEAR(up[2], -1.0f, 1e-5f);  // scene z is south
+    const std::vector<glm::vec2> heads = projectedWellheads(field, *camera, width, height);
+    for (const glm::vec2& head : heads)
+        EXPECT_TRUE(head.x > 0.0f && head.x < float(width) && head.y > 0.0f &&
+                    head.y < float(height))
+            << "every wellhead in the picture";
+    // Wellheads 25 m apart east and north: the next well east lies right of the first, the
+    // next row above it.
+    EXPECT_GT(heads[1].x - heads[0].x, 10.0f);
+    EXPECT_LT(heads[4].y - heads[0].y, -10.0f);
+    int named = 0;
+    for (const DrawnLabel& label : drawnLabels(picture.root.get(), *camera, width, height)) {
+        if (!label.name) continue;
+        ++named;
+        const std::size_t well = std::stoul(label.text.substr(label.text.find('-') + 1));
+        ASSERT_LT(well, heads.size()) << label.text;
+        // The box's nearest point to the wellhead: beside it, clear of its marker.
+        const glm::vec2 head = heads[well];
+        const glm::vec2 nearest(std::clamp(head.x, label.box.x0, label.box.x1),
+                                std::clamp(head.y, label.box.y0, label.box.y1));
+        const float apart = glm::length(nearest - head);
+        EXPECT_GE(apart, 4.5f) << label.text;
+        EXPECT_LE(apart, 30.0f) << label.text;
+    }
+    EXPECT_GE(named, 14);
+}
+
+TEST_F(FieldPictureTest, OnlyTheTickedWellOfSeveralCarriesDepthTicks) {
+    const Geometries field = syntheticField(4, 200.0, 0.5);
+    const std::vector<PictureWell> wells = pictureWells(field);
+    PictureRequest request;
+    request.width = 640;
+    request.height = 480;
+    request.view = ViewDirection::North;
+    request.tickedWell = 2;
+    Picture picture;
+    try {
+        picture = drawPicture(wells, request);
+    } catch (const std::runtime_error& e) {
+        FAIL() << e.what();
+    }
+    SoSearchAction search;
+    search.setName("tick_marks");
+    search.setInterest(SoSearchAction::ALL);
+    search.setSearchingAll(TRUE);
+    search.apply(picture.root.get());
+    ASSERT_EQ(search.getPaths().getLength(), 1);
+    // The marks drawn start on well 2's path, at its first tick (the same depths for every
+    // well: they are equally long), and on no other well's.
+    auto* marks = static_cast<SoSeparator*>(search.getPaths()[0]->getTail());
+    SoCoordinate3* points = nullptr;
+    for (int i = 0; i < marks->getNumChildren() && !points; ++i)
+        points = dynamic_cast<SoCoordinate3*>(marks->getChild(i));
+    ASSERT_NE(points, nullptr);
+    const SbVec3f first = points->point[0];
+    for (std::size_t w = 0; w < field.size(); ++w) {
+        const std::vector<DepthTick> ticks = depthTicks(*field[w], AnnotationView{});
+        ASSERT_FALSE(ticks.empty());
+        const float apart =
+            glm::length(glm::vec3(first[0], first[1], first[2]) - ticks.front().position);
+        if (w == 2)
+            EXPECT_LT(apart, 1e-3f);
+        else
+            EXPECT_GT(apart, 20.0f) << "well " << w;
+    }
+}
+
+}  // namespace
+}  // namespace caliper3d::scenegraph
