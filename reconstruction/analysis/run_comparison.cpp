@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
+#include <thread>
 
 #include "reconstruction/analysis/section_profile.h"
 
@@ -103,19 +105,20 @@ Measures measures(const SectionResult& s, double offset_mm) {
 class SectionComparer {
 public:
     SectionComparer(const ComparedRun& run1, const ComparedRun& run2,
-                    const RunComparisonOptions& options, const RunBias& bias1, const RunBias& bias2)
+                    const RunComparisonOptions& options, const RunBias& bias1, const RunBias& bias2,
+                    const std::vector<NotCompared>& reasons1,
+                    const std::vector<NotCompared>& reasons2)
         : m_run1(run1),
           m_run2(run2),
           m_options(options),
           m_offset1(options.removeBias ? bias1.offset_mm : io::kNaN),
           m_offset2(options.removeBias ? bias2.offset_mm : io::kNaN),
-          m_reasons1(rowReasons(*run1.analysis)),
-          m_reasons2(rowReasons(*run2.analysis)),
+          m_reasons1(reasons1),
+          m_reasons2(reasons2),
           m_profiler1(*run1.geometry, options.azimuthBins),
           m_profiler2(*run2.geometry, options.azimuthBins),
           m_p1(static_cast<std::size_t>(options.azimuthBins)),
-          m_p2(m_p1.size()),
-          m_p2b(m_p1.size()) {}
+          m_p2(m_p1.size()) {}
 
     // Row i of run 1 against run 2 at md2, between its rows j0 (nearest) and j1 (weight w of
     // j1; j1 == j0 when md2 is on a row).
@@ -127,11 +130,33 @@ private:
     const ComparedRun& m_run1;
     const ComparedRun& m_run2;
     const RunComparisonOptions& m_options;
+    // Run 2's outline of `row` (computed once for the two depths of run 1 that share it);
+    // null where it has none.
+    const double* profile2(std::size_t row);
+
     double m_offset1, m_offset2;
-    std::vector<NotCompared> m_reasons1, m_reasons2;
+    const std::vector<NotCompared>& m_reasons1;
+    const std::vector<NotCompared>& m_reasons2;
     SectionProfiler m_profiler1, m_profiler2;
-    std::vector<double> m_p1, m_p2, m_p2b;
+    std::vector<double> m_p1, m_p2;
+    // The last two outlines of run 2 computed: their rows (none: SIZE_MAX), whether they have
+    // one, and the values.
+    std::size_t m_cachedRow[2] = {SIZE_MAX, SIZE_MAX};
+    bool m_cachedOk[2] = {false, false};
+    std::vector<double> m_cached[2];
+    int m_next = 0;
 };
+
+const double* SectionComparer::profile2(std::size_t row) {
+    for (int k = 0; k < 2; ++k)
+        if (m_cachedRow[k] == row) return m_cachedOk[k] ? m_cached[k].data() : nullptr;
+    const int k = m_next;
+    m_next = 1 - m_next;
+    m_cached[k].resize(m_p1.size());
+    m_cachedRow[k] = row;
+    m_cachedOk[k] = m_profiler2.profile(row, m_cached[k].data());
+    return m_cachedOk[k] ? m_cached[k].data() : nullptr;
+}
 
 SectionChange SectionComparer::compare(std::size_t i, double md2, std::size_t j0, std::size_t j1,
                                        double w) {
@@ -173,9 +198,11 @@ SectionChange SectionComparer::compare(std::size_t i, double md2, std::size_t j0
 
 void SectionComparer::compareOutlines(std::size_t i, std::size_t j0, std::size_t j1, double w,
                                       SectionChange& c) {
-    if (!m_profiler1.profile(i, m_p1.data()) || !m_profiler2.profile(j0, m_p2.data())) return;
-    if (j1 != j0 && m_profiler2.profile(j1, m_p2b.data()))
-        for (std::size_t k = 0; k < m_p2.size(); ++k) m_p2[k] += (m_p2b[k] - m_p2[k]) * w;
+    const double* near = profile2(j0);
+    if (!near || !m_profiler1.profile(i, m_p1.data())) return;
+    std::copy(near, near + m_p2.size(), m_p2.begin());
+    if (const double* far = j1 != j0 ? profile2(j1) : nullptr)
+        for (std::size_t k = 0; k < m_p2.size(); ++k) m_p2[k] += (far[k] - m_p2[k]) * w;
     // A radius reads half a diameter's offset too long.
     const double half1 = std::isfinite(m_offset1) ? m_offset1 / 2.0 : 0.0;
     const double half2 = std::isfinite(m_offset2) ? m_offset2 / 2.0 : 0.0;
@@ -359,7 +386,13 @@ RunComparison compareRuns(const ComparedRun& run1, const ComparedRun& run2,
     const auto& s1 = run1.analysis->sections;
     const auto& s2 = run2.analysis->sections;
     if (s1.size() == 0 || s2.size() == 0) throw std::runtime_error("a run has no sections");
-    SectionComparer comparer(run1, run2, options, r.bias1, r.bias2);
+    // Where each depth of run 1 lies in run 2 (cheap, in order), then the sections compared in
+    // chunks, one comparer (and its scratch) per chunk.
+    struct Task {
+        std::size_t i, nearest, other;
+        double md2, w;
+    };
+    std::vector<Task> tasks;
     const double first2 = s2[0].md_m, last2 = s2[s2.size() - 1].md_m;
     const double tolerance = 1e-6;
     std::size_t j = 0;  // first row of run 2 at or below md2
@@ -372,9 +405,25 @@ RunComparison compareRuns(const ComparedRun& run1, const ComparedRun& run2,
         const double span = s2[j].md_m - s2[above].md_m;
         const double w = span > 0.0 ? (md2 - s2[above].md_m) / span : 0.0;
         const std::size_t nearest = w > 0.5 ? j : above;
-        const std::size_t other = nearest == j ? above : j;
-        r.sections.push_back(comparer.compare(i, md2, nearest, other, nearest == j ? 1.0 - w : w));
+        tasks.push_back({i, nearest, nearest == j ? above : j, md2, nearest == j ? 1.0 - w : w});
     }
+    const std::vector<NotCompared> reasons1 = rowReasons(*run1.analysis);
+    const std::vector<NotCompared> reasons2 = rowReasons(*run2.analysis);
+    r.sections.resize(tasks.size());
+    const auto work = [&](std::size_t from, std::size_t to) {
+        SectionComparer comparer(run1, run2, options, r.bias1, r.bias2, reasons1, reasons2);
+        for (std::size_t k = from; k < to; ++k) {
+            const Task& t = tasks[k];
+            r.sections[k] = comparer.compare(t.i, t.md2, t.nearest, t.other, t.w);
+        }
+    };
+    const std::size_t chunks =
+        std::min<std::size_t>(std::max(1, options.threads), tasks.size() / 1024 + 1);
+    std::vector<std::thread> workers;
+    for (std::size_t c = 1; c < chunks; ++c)
+        workers.emplace_back(work, tasks.size() * c / chunks, tasks.size() * (c + 1) / chunks);
+    work(0, tasks.size() / chunks);
+    for (std::thread& w : workers) w.join();
     if (r.sections.empty())
         throw std::runtime_error(
             "the runs do not overlap: no depth of run 1 maps into run 2's logged interval");

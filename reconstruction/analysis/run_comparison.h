@@ -33,6 +33,7 @@ struct RunComparisonOptions {
     int azimuthBins = 72;  // earth-frame outlines compared every 5 degrees
     // Subtract each run's reading offset in casing of known inner diameter (CasingCheck).
     bool removeBias = true;
+    int threads = 1;  // sections are compared in this many chunks at once
 };
 
 // Why a depth of the overlap is not compared: a run without data there (too few arms), with

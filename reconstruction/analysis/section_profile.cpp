@@ -26,7 +26,13 @@ SectionProfiler::SectionProfiler(const WellGeometry& geometry, int bins)
       m_knots(static_cast<std::size_t>(geometry.knotCount())),
       m_sampled(static_cast<std::size_t>(geometry.sampler().samples())),
       m_x(m_sampled.size()),
-      m_y(m_sampled.size()) {}
+      m_y(m_sampled.size()),
+      m_angle(m_sampled.size()) {
+    for (int b = 0; b < bins; ++b) {
+        m_cos.push_back(std::cos(glm::two_pi<double>() * b / bins));
+        m_sin.push_back(std::sin(glm::two_pi<double>() * b / bins));
+    }
+}
 
 bool SectionProfiler::profile(std::size_t row, double* radius_mm) {
     const WellGeometry& g = m_geometry;
@@ -59,6 +65,7 @@ bool SectionProfiler::profile(std::size_t row, double* radius_mm) {
     for (std::size_t j = 0; j < m; ++j) {
         m_x[j] -= cx;
         m_y[j] -= cy;
+        m_angle[j] = std::atan2(m_y[j], m_x[j]);
     }
 
     // Each edge of the polygon answers the bins whose rays cross it; where a ray crosses the
@@ -67,20 +74,20 @@ bool SectionProfiler::profile(std::size_t row, double* radius_mm) {
     std::fill(radius_mm, radius_mm + m_bins, -1.0);
     for (std::size_t j = 0; j < m; ++j) {
         const std::size_t k = (j + 1) % m;
-        const double t0 = std::atan2(m_y[j], m_x[j]);
-        double dt = std::atan2(m_y[k], m_x[k]) - t0;
+        const double t0 = m_angle[j];
+        double dt = m_angle[k] - t0;
         if (dt > glm::pi<double>()) dt -= glm::two_pi<double>();
         if (dt < -glm::pi<double>()) dt += glm::two_pi<double>();
         const double lo = std::min(t0, t0 + dt), hi = std::max(t0, t0 + dt);
         const double ex = m_x[k] - m_x[j], ey = m_y[k] - m_y[j];
         for (auto b = static_cast<long>(std::ceil(lo / step)); static_cast<double>(b) * step <= hi;
              ++b) {
-            const double alpha = static_cast<double>(b) * step;
-            const double ux = std::cos(alpha), uy = std::sin(alpha);
+            const long bin = ((b % m_bins) + m_bins) % m_bins;
+            const double ux = m_cos[static_cast<std::size_t>(bin)];
+            const double uy = m_sin[static_cast<std::size_t>(bin)];
             const double denominator = cross(ux, uy, ex, ey);
             if (std::abs(denominator) < 1e-12) continue;
             const double s = cross(m_x[j], m_y[j], ex, ey) / denominator;
-            const long bin = ((b % m_bins) + m_bins) % m_bins;
             double& out = radius_mm[bin];
             out = std::max(out, s);
         }

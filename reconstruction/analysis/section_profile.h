@@ -26,7 +26,8 @@ public:
 private:
     const WellGeometry& m_geometry;
     int m_bins;
-    std::vector<double> m_knots, m_sampled, m_x, m_y;
+    std::vector<double> m_knots, m_sampled, m_x, m_y, m_angle;
+    std::vector<double> m_cos, m_sin;  // of the bins' angles
 };
 
 // The azimuth (clockwise from north, [0, 360)) of the in-plane direction at `angle_deg`
