@@ -137,8 +137,10 @@ std::string largestLine(const RunComparison& r) {
     if (std::isnan(r.growth.change))
         s += "wall growth by azimuth not compared (azimuth unknown)";
     else
-        s += "wall " + signedFixed(r.growth.change, 2) + " mm from the centre at azimuth " +
-             fixed(r.growth.azimuth_deg, 1) + " at " + fixed(r.growth.md1_m, 2) + " m";
+        s += "wall " + signedFixed(r.growth.change, 2) + " mm from the centre " +
+             (std::isfinite(r.growth.azimuth_deg) ? "at azimuth " + fixed(r.growth.azimuth_deg, 1)
+                                                  : std::string("all round")) +
+             " at " + fixed(r.growth.md1_m, 2) + " m";
     return s + "\n";
 }
 

@@ -207,9 +207,10 @@ void SectionComparer::compareOutlines(std::size_t i, std::size_t j0, std::size_t
     const double half1 = std::isfinite(m_offset1) ? m_offset1 / 2.0 : 0.0;
     const double half2 = std::isfinite(m_offset2) ? m_offset2 / 2.0 : 0.0;
     std::size_t best = 0;
-    double growth = -1.0e300;
+    double growth = -1.0e300, least = 1.0e300;
     for (std::size_t k = 0; k < m_p1.size(); ++k) {
         const double g = (m_p2[k] - half2) - (m_p1[k] - half1);
+        least = std::min(least, g);
         if (g > growth) {
             growth = g;
             best = k;
@@ -217,8 +218,11 @@ void SectionComparer::compareOutlines(std::size_t i, std::size_t j0, std::size_t
     }
     c.oriented = true;
     c.maxGrowth_mm = growth;
-    c.maxGrowthAzimuth_deg = profileAngleAzimuth_deg(
-        m_run1.geometry->frame(i), 360.0 * static_cast<double>(best) / m_p1.size());
+    // A wall that moved alike all round (a gauge hole unchanged, a washout widened evenly) has
+    // no azimuth of largest growth: below kUniformGrowth_mm of spread it is left empty.
+    if (growth - least >= kUniformGrowth_mm)
+        c.maxGrowthAzimuth_deg = profileAngleAzimuth_deg(
+            m_run1.geometry->frame(i), 360.0 * static_cast<double>(best) / m_p1.size());
 }
 
 // The signed value of larger magnitude.

@@ -65,11 +65,15 @@ struct SectionChange {
     // azimuth (run 2 minus run 1; negative where the wall only closed in) and that azimuth.
     bool oriented = false;
     double maxGrowth_mm = io::kNaN;
-    double maxGrowthAzimuth_deg = io::kNaN;  // [0, 360)
+    double maxGrowthAzimuth_deg = io::kNaN;  // [0, 360); NaN where the growth is uniform
     bool significant = false;  // a diameter changed by more than the repeatability limit
 
     bool compared() const { return notCompared == NotCompared::None; }
 };
+
+// Below this spread of the wall's growth round the section (largest minus smallest), the growth
+// is uniform and has no azimuth (the report's axisMinElongation_mm for a change of shape).
+inline constexpr double kUniformGrowth_mm = 0.5;
 
 // A zone of either run, paired with the other run's zone of the same class over the same depths.
 struct ZoneChange {

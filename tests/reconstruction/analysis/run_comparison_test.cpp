@@ -101,6 +101,9 @@ TEST(RunComparisonTest, DeeperCounterWiderBreakoutAndNewWashoutAreFoundAtTheirDe
             EXPECT_NEAR(c.deq2_mm - c.deq1_mm, kInscribed * 50.0, 0.5) << c.md1_m;
             EXPECT_NEAR(c.dmin2_mm - c.dmin1_mm, 50.0, 0.5) << c.md1_m;
             EXPECT_EQ(c.class2, BoreholeClass::Washout);
+            // Widened alike all round: a growth of 25 mm with no azimuth.
+            EXPECT_NEAR(c.maxGrowth_mm, 25.0, 0.5) << c.md1_m;
+            EXPECT_TRUE(std::isnan(c.maxGrowthAzimuth_deg)) << c.md1_m;
         } else if (!inside(c.md1_m, 39.5, 45.5, -0.6) && !inside(c.md1_m, 99.5, 102.5, -0.6)) {
             EXPECT_NEAR(c.deq2_mm - c.deq1_mm, 0.0, 0.5) << c.md1_m;
             EXPECT_NEAR(c.dmax2_mm - c.dmax1_mm, 0.0, 0.5) << c.md1_m;
@@ -220,6 +223,7 @@ TEST(RunComparisonTest, IdenticalRunsGiveZeroChange) {
         EXPECT_NEAR(c.deq2_mm - c.deq1_mm, 0.0, 1e-3);
         EXPECT_NEAR(c.dmax2_mm - c.dmax1_mm, 0.0, 1e-3);
         EXPECT_NEAR(c.maxGrowth_mm, 0.0, 1e-3);
+        EXPECT_TRUE(std::isnan(c.maxGrowthAzimuth_deg));
         EXPECT_EQ(c.class1, c.class2);
     }
     EXPECT_TRUE(r.agree());
