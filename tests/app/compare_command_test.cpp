@@ -106,7 +106,9 @@ TEST(CompareCommandTest, FindsTheShiftTheWiderBreakoutAndTheNewWashout) {
             EXPECT_NEAR(table.number(i, "d_dmax_mm"), 10.0, 0.5) << md;
             EXPECT_EQ(table.rows[i].at("significant"), "yes") << md;
         }
-        if (md > 50.1 && md < 51.9) EXPECT_EQ(table.rows[i].at("class2"), "washout") << md;
+        if (md > 50.1 && md < 51.9) {
+            EXPECT_EQ(table.rows[i].at("class2"), "washout") << md;
+        }
         if (md > 30.0 && md < 45.0) {
             EXPECT_EQ(table.rows[i].at("d_deq_mm"), "0.00") << md;
             EXPECT_EQ(table.rows[i].at("significant"), "no") << md;
@@ -299,8 +301,12 @@ TEST(SpliceCommandTest, TwoOverlappingRunsBecomeOneLogWithEveryFeatureAtItsDepth
     for (std::size_t i = 0; i < depth.size(); ++i) {
         const double d = depth[i];
         // (The rows at exactly 70 and 72 m are the washout's edges to rounding.)
-        if (d > 70.01 && d < 71.99) EXPECT_NEAR(r1[i], 132.95, 1e-3) << d;
-        if ((d > 65.0 && d < 69.9) || (d > 72.1 && d < 80.0)) EXPECT_NEAR(r1[i], 107.95, 1e-3) << d;
+        if (d > 70.01 && d < 71.99) {
+            EXPECT_NEAR(r1[i], 132.95, 1e-3) << d;
+        }
+        if ((d > 65.0 && d < 69.9) || (d > 72.1 && d < 80.0)) {
+            EXPECT_NEAR(r1[i], 107.95, 1e-3) << d;
+        }
     }
 }
 
