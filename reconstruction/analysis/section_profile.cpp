@@ -18,6 +18,23 @@ double cross(double ax, double ay, double bx, double by) {
     return ax * by - ay * bx;
 }
 
+// atan2 within about 1e-5 rad (a minimax polynomial of atan on [-1, 1]). The angles only say
+// which rays an edge of the outline answers; each crossing itself is exact, and two edges that
+// meet at a vertex use that vertex's one angle, so no ray falls between them.
+double roughAtan2(double y, double x) {
+    const double ax = std::abs(x), ay = std::abs(y);
+    const double big = std::max(ax, ay);
+    if (big == 0.0) return 0.0;
+    const double z = std::min(ax, ay) / big, z2 = z * z;
+    double a =
+        z * (0.99997726 +
+             z2 * (-0.33262347 +
+                   z2 * (0.19354346 + z2 * (-0.11643287 + z2 * (0.05265332 - z2 * 0.01172120)))));
+    if (ay > ax) a = glm::half_pi<double>() - a;
+    if (x < 0.0) a = glm::pi<double>() - a;
+    return y < 0.0 ? -a : a;
+}
+
 }  // namespace
 
 SectionProfiler::SectionProfiler(const WellGeometry& geometry, int bins)
@@ -28,6 +45,11 @@ SectionProfiler::SectionProfiler(const WellGeometry& geometry, int bins)
       m_x(m_sampled.size()),
       m_y(m_sampled.size()),
       m_angle(m_sampled.size()) {
+    const auto m = static_cast<double>(m_sampled.size());
+    for (std::size_t j = 0; j < m_sampled.size(); ++j) {
+        m_sampleCos.push_back(std::cos(glm::two_pi<double>() * static_cast<double>(j) / m));
+        m_sampleSin.push_back(std::sin(glm::two_pi<double>() * static_cast<double>(j) / m));
+    }
     for (int b = 0; b < bins; ++b) {
         m_cos.push_back(std::cos(glm::two_pi<double>() * b / bins));
         m_sin.push_back(std::sin(glm::two_pi<double>() * b / bins));
@@ -45,12 +67,14 @@ bool SectionProfiler::profile(std::size_t row, double* radius_mm) {
     // The sampled wall in the plane: x towards north, y 90 degrees clockwise from it; the
     // centroid of the polygon's area (shoelace), then every point about it.
     const std::size_t m = m_sampled.size();
-    const double a1 = glm::radians(arm1);
+    const double c1 = std::cos(glm::radians(arm1)), s1 = std::sin(glm::radians(arm1));
     double area2 = 0.0, cx = 0.0, cy = 0.0;
     for (std::size_t j = 0; j < m; ++j) {
-        const double phi = a1 + glm::two_pi<double>() * static_cast<double>(j) / m;
-        m_x[j] = m_sampled[j] * std::cos(phi);
-        m_y[j] = m_sampled[j] * std::sin(phi);
+        // Sample j lies 360 j / m degrees clockwise from arm 1, arm 1 at `arm1` from north.
+        const double c = c1 * m_sampleCos[j] - s1 * m_sampleSin[j];
+        const double s = s1 * m_sampleCos[j] + c1 * m_sampleSin[j];
+        m_x[j] = m_sampled[j] * c;
+        m_y[j] = m_sampled[j] * s;
     }
     for (std::size_t j = 0; j < m; ++j) {
         const std::size_t k = (j + 1) % m;
@@ -65,7 +89,7 @@ bool SectionProfiler::profile(std::size_t row, double* radius_mm) {
     for (std::size_t j = 0; j < m; ++j) {
         m_x[j] -= cx;
         m_y[j] -= cy;
-        m_angle[j] = std::atan2(m_y[j], m_x[j]);
+        m_angle[j] = roughAtan2(m_y[j], m_x[j]);
     }
 
     // Each edge of the polygon answers the bins whose rays cross it; where a ray crosses the
@@ -82,7 +106,9 @@ bool SectionProfiler::profile(std::size_t row, double* radius_mm) {
         const double ex = m_x[k] - m_x[j], ey = m_y[k] - m_y[j];
         for (auto b = static_cast<long>(std::ceil(lo / step)); static_cast<double>(b) * step <= hi;
              ++b) {
-            const long bin = ((b % m_bins) + m_bins) % m_bins;
+            long bin = b;  // lo and hi lie within (-2 pi, 2 pi)
+            if (bin < 0) bin += m_bins;
+            if (bin >= m_bins) bin -= m_bins;
             const double ux = m_cos[static_cast<std::size_t>(bin)];
             const double uy = m_sin[static_cast<std::size_t>(bin)];
             const double denominator = cross(ux, uy, ex, ey);

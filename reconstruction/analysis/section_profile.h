@@ -27,7 +27,8 @@ private:
     const WellGeometry& m_geometry;
     int m_bins;
     std::vector<double> m_knots, m_sampled, m_x, m_y, m_angle;
-    std::vector<double> m_cos, m_sin;  // of the bins' angles
+    std::vector<double> m_cos, m_sin;              // of the bins' angles
+    std::vector<double> m_sampleCos, m_sampleSin;  // of the spline samples' angles from arm 1
 };
 
 // The azimuth (clockwise from north, [0, 360)) of the in-plane direction at `angle_deg`
