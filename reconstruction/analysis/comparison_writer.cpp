@@ -85,12 +85,18 @@ std::string range(double top, double bottom) {
     return fixed(top, 2) + "-" + fixed(bottom, 2) + " m";
 }
 
+// Below this the match is no evidence of a shift (the tie points' threshold, DepthMappingOptions).
+constexpr double kWeakCorrelation = 0.5;
+
 std::string matchLine(const DepthMapping& m) {
     std::string s = "depth match: run 2 depth = run 1 depth " + signedFixed(m.shift_m, 3) + " m";
     if (m.given) return s + " (given)\n";
     s += " (" + m.curve + ", correlation " + fixed(m.match.correlation, 3) + " over " +
-         std::to_string(m.match.samples) + " samples)\n";
-    return s;
+         std::to_string(m.match.samples) + " samples)";
+    if (!(m.match.correlation >= kWeakCorrelation))
+        s += "; weak: the runs may not be of one well, or the shift lies beyond --max-shift "
+             "(check it, or give --shift)";
+    return s + "\n";
 }
 
 std::string stretchLine(const DepthMapping& m) {

@@ -196,6 +196,21 @@ TEST(CompareCommandTest, RunsThatDoNotOverlapAreBadInput) {
     EXPECT_NE(given.output.find("do not overlap"), std::string::npos) << given.output;
 }
 
+TEST(CompareCommandTest, RunsOfDifferentFormationsMatchWeaklyAndSaySo) {
+    // Two holes whose gamma rays share nothing (one run's formation 500 m deeper).
+    const auto dir = caliper3d::test::freshScratchFolder("compare_weak");
+    SyntheticWellSpec other = firstRun();
+    other.depthOffset_m = -500.0;
+    other.top_m = 0.0;
+    const std::string run1 = writeRun(dir, "run1.las", firstRun());
+    const std::string run2 = writeRun(dir, "run2.las", other);
+    const CommandRun r =
+        runCaliper3d("compare " + run1 + " " + run2 + " -o " + (dir / "c.csv").string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("weak: the runs may not be of one well"), std::string::npos)
+        << r.output;
+}
+
 TEST(CompareCommandTest, BadUsageExitsTwo) {
     const auto dir = caliper3d::test::freshScratchFolder("compare_usage");
     const std::string run = writeRun(dir, "run.las", firstRun());

@@ -128,6 +128,7 @@ TEST(RunComparisonTest, DeeperCounterWiderBreakoutAndNewWashoutAreFoundAtTheirDe
     EXPECT_NEAR(r.volume2_m3 - r.volume1_m3, added, 0.05 * added);
     EXPECT_NE(formatComparisonSummary(r).find("washout 99.98-101.98 m appeared"), std::string::npos)
         << formatComparisonSummary(r);
+    EXPECT_EQ(formatComparisonSummary(r).find("weak"), std::string::npos);
 }
 
 TEST(RunComparisonTest, SixPadsSeeTheWiderBreakoutWithinTheirSplineError) {
