@@ -15,7 +15,7 @@
 namespace caliper3d::app {
 
 namespace {
-const char kVerbs[] = "view, info, export, render, report, synth, batch";
+const char kVerbs[] = "view, info, export, render, report, compare, splice, synth, batch";
 const char kUsageHead[] =
     "usage: caliper3d [VERB] [OPTIONS] FILE...\n"
     "  (no verb)                         GUI on the bundled example well; with no display,\n"
@@ -30,6 +30,9 @@ const char kUsageHead[] =
     "                                    --view iso|north|east|top|map|hole --at MD)\n"
     "  report FILE... -o OUT.csv         per-section analysis (--step M, --zones Z.csv,\n"
     "                                    --las OUT.las, --casing-od L, --excess F, --rule N=V)\n"
+    "  compare RUN1 RUN2 -o OUT.csv      two runs of one well: depth-matched, compared in the\n"
+    "                                    earth frame (--match-curve, --max-shift, --shift)\n"
+    "  splice RUN1 RUN2 ... -o OUT.las   runs of one well joined into one log (--at MD)\n"
     "  synth -o OUT [--length M --step M --profile NAME]   synthetic log with known features\n"
     "  synth --field N -o DIR/           N synthetic wells and a manifest for batch\n"
     "  batch MANIFEST [-o DIR/ -j N --row K]   one well a row (CSV or JSON), each in its own\n"
@@ -50,10 +53,12 @@ namespace {
 // Runs `verb` on `args`; returns nullopt when `verb` is not one.
 std::optional<int> runVerb(const QString& verb, const QStringList& args, int argc, char** argv) {
     if (verb == "batch") return runBatch(args);
+    if (verb == "compare") return runCompare(args);
     if (verb == "export") return runExport(args);
     if (verb == "info") return runInfo(args);
     if (verb == "render") return runRender(args);
     if (verb == "report") return runReport(args);
+    if (verb == "splice") return runSplice(args);
     if (verb == "synth") return runSynth(args);
     if (verb == "view") return runView(argc, argv, args);
     return std::nullopt;

@@ -96,6 +96,47 @@ void writeField(const std::string& folder, std::size_t wells, double length, dou
 
 }  // namespace
 
+namespace {
+
+// A second run of the same hole (docs/analysis.md, "Two runs of one well").
+void addRunOptions(QCommandLineParser& p) {
+    p.addOption({"gamma-ray",
+                 "Also write a gamma-ray curve GR of the formation (the same for every run of "
+                 "one profile and length)."});
+    p.addOption({"depth-offset",
+                 "Write a run whose depth counter reads this many metres deeper than the hole "
+                 "(every feature, the path and the tool as at the true depth).",
+                 "M", "0"});
+    p.addOption({"tool-azimuth",
+                 "Pad 1's azimuth at the top, degrees (a tool that sits differently in another "
+                 "pass; default 0).",
+                 "DEG", "0"});
+    p.addOption({"widen",
+                 "Every breakout, washout or key seat this many millimetres wider (a later run "
+                 "after the hole grew; default 0).",
+                 "MM", "0"});
+}
+
+void applyRunOptions(VerbParser& verb, reconstruction::SyntheticWellSpec& spec) {
+    const auto number = [&verb](const char* name) {
+        double v = 0.0;
+        if (!io::parseNumber(verb.value(name), v) || !std::isfinite(v))
+            throw UsageError(std::string("caliper3d synth: --") + name + " takes a number");
+        return v;
+    };
+    spec.gammaRay = verb.isSet("gamma-ray");
+    spec.depthOffset_m = number("depth-offset");
+    spec.initialToolAzimuth_deg = number("tool-azimuth");
+    const double widen = number("widen");
+    for (reconstruction::SyntheticFeature& f : spec.features)
+        if (f.kind != reconstruction::SyntheticFeature::Kind::Undergauge) {
+            f.dmax_mm += widen;
+            if (f.kind == reconstruction::SyntheticFeature::Kind::Washout) f.dmin_mm += widen;
+        }
+}
+
+}  // namespace
+
 int runSynth(const QStringList& args) {
     return guardedVerb("synth", [&]() -> int {
         VerbParser verb("synth", "-o OUT | --field N -o DIR/",
@@ -123,6 +164,7 @@ int runSynth(const QStringList& args) {
              "headers' latitude and longitude), with "
              "a manifest.csv for caliper3d batch.",
              "N"});
+        addRunOptions(p);
         if (!verb.parse(args, 0)) return kExitOk;
         if (!verb.isSet("output")) throw UsageError("caliper3d synth: -o OUT is required");
         double length = 0, step = 0;
@@ -158,6 +200,7 @@ int runSynth(const QStringList& args) {
                              names);
         }
         spec.armCount = static_cast<int>(arms);
+        applyRunOptions(verb, spec);
         const io::SectionTable table = reconstruction::makeSyntheticWell(spec);
         const std::string out = verb.value("output");
         const std::string ext = std::filesystem::path(out).extension().string();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 
 #include <glm/gtc/constants.hpp>
@@ -130,6 +131,19 @@ double rayToEllipse(double phi, double a, double b, double theta, glm::dvec2 c) 
 
 }  // namespace
 
+double syntheticGammaRay_api(double md_m) {
+    // Periods (m) with no common multiple below kilometres, and their amplitudes (gAPI):
+    // thick beds carry most of the signal, thin ones make the correlation peak sharp.
+    static constexpr double kPeriod_m[] = {0.43, 0.71, 1.17,  1.93, 3.19,
+                                           5.27, 8.71, 14.39, 23.8, 49.1};
+    static constexpr double kAmplitude[] = {4.0, 5.0, 7.0, 9.0, 11.0, 12.0, 10.0, 9.0, 8.0, 6.0};
+    static constexpr double kPhase_rad[] = {0.3, 2.1, 4.0, 1.2, 5.5, 0.8, 3.3, 2.7, 4.9, 1.6};
+    double gr = 75.0;
+    for (std::size_t k = 0; k < std::size(kPeriod_m); ++k)
+        gr += kAmplitude[k] * std::sin(glm::two_pi<double>() * md_m / kPeriod_m[k] + kPhase_rad[k]);
+    return gr;
+}
+
 io::SectionTable makeSyntheticWell(const SyntheticWellSpec& spec) {
     if (!(spec.step_m > 0.0) || !(spec.length_m > spec.step_m))
         throw std::invalid_argument("synthetic well: need length > step > 0");
@@ -144,13 +158,17 @@ io::SectionTable makeSyntheticWell(const SyntheticWellSpec& spec) {
     t.reserve(rows);
     t.bitSize_mm.reserve(rows);
     t.rb_deg.reserve(rows);
+    if (spec.gammaRay) t.extraCurves.push_back({"GR", "GAPI", "Gamma ray (synthetic)", {}});
     for (std::size_t i = 0; i < rows; ++i) {
-        const double md = static_cast<double>(i) * spec.step_m;
-        const double p1az = wrap360(md * spec.toolRotation_degPerM);
+        // Every shape and angle is that of the true depth; the depth written is the counter's.
+        const double written = spec.top_m + static_cast<double>(i) * spec.step_m;
+        const double md = written - spec.depthOffset_m;
+        const double p1az = wrap360(spec.initialToolAzimuth_deg + md * spec.toolRotation_degPerM);
         const double inc = syntheticInclination_deg(spec, md);
         const double azi = syntheticAzimuth_deg(spec, md);
         const SectionFrame frame = frameFromPadAzimuth(inc, azi, p1az);
-        t.depth_m.push_back(md);
+        t.depth_m.push_back(written);
+        if (spec.gammaRay) t.extraCurves.front().values.push_back(syntheticGammaRay_api(md));
         t.p1az_deg.push_back(p1az);
         t.devi_deg.push_back(inc);
         t.hazi_deg.push_back(azi);
@@ -194,6 +212,7 @@ io::SectionTable makeSyntheticWell(const SyntheticWellSpec& spec) {
             double r = rayToEllipse(phi, a, b, theta, centre);
             if (k == spec.stuckArm && md >= spec.stuckTop_m && md <= spec.stuckBottom_m)
                 r = spec.stuckValue_mm;
+            if (md >= spec.closedTop_m && md <= spec.closedBottom_m) r = spec.closedRadius_mm;
             t.radius_mm.push_back(r);
         }
     }

@@ -61,6 +61,22 @@ struct SyntheticWellSpec {
     double stuckTop_m = 0.0;
     double stuckBottom_m = 0.0;
     double stuckValue_mm = 0.0;
+    // A second run of the same hole (docs/analysis.md, "Two runs of one well"):
+    // the first row's written depth (rows run from it over length_m);
+    double top_m = 0.0;
+    // the run's depth counter reads this much deeper than the true depth (every feature, the
+    // path and the tool's turn are those of the true depth: written depth - depthOffset_m);
+    double depthOffset_m = 0.0;
+    // pad 1's azimuth at true depth 0 (a tool that sits differently in another pass);
+    double initialToolAzimuth_deg = 0.0;
+    // every arm reads closedRadius_mm over [closedTop_m, closedBottom_m] (true depths): a pass
+    // whose arms did not open (closedBottom_m < closedTop_m: none);
+    double closedTop_m = 0.0;
+    double closedBottom_m = -1.0;
+    double closedRadius_mm = 0.0;
+    // and a gamma-ray curve GR (gAPI) of the true depth (syntheticGammaRay_api), which both
+    // runs share.
+    bool gammaRay = false;
 };
 
 // Named profiles, each with an exact known answer (lengths scale with L):
@@ -82,6 +98,11 @@ std::vector<std::string> syntheticProfileNames();
 // Exact inclination and hole azimuth at a measured depth for the spec's trajectory.
 double syntheticInclination_deg(const SyntheticWellSpec& spec, double md_m);
 double syntheticAzimuth_deg(const SyntheticWellSpec& spec, double md_m);
+
+// A gamma-ray log of the formation at true depth `md_m` (gAPI): beds of every thickness from
+// 0.4 m to 50 m as a sum of sinusoids of incommensurate periods, so that it repeats nowhere
+// over a few kilometres and two runs correlate at one lag only.
+double syntheticGammaRay_api(double md_m);
 
 // Samples the spec into a section table (radii in mm, P1AZ/DEVI/HAZI and the
 // matching RB filled, bit size per row).
