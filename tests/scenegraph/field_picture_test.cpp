@@ -27,12 +27,14 @@
 #include "reconstruction/well_path.h"
 #include "scenegraph/camera_setup.h"
 #include "scenegraph/label_style.h"
+#include "scenegraph/offscreen_renderer.h"
 #include "scenegraph/picture/picture.h"
 #include "scenegraph/picture/png_file.h"
 #include "scenegraph/picture_scale.h"
 #include "scenegraph/render_stats.h"
 #include "scenegraph/view_overlay.h"
 #include "scenegraph/well_annotations.h"
+#include "scenegraph/well_scene.h"
 
 namespace caliper3d::scenegraph {
 namespace {
@@ -143,6 +145,33 @@ int pixelsOutside(const RenderedImage& image, const float colour[3],
     return count;
 }
 
+// `picture` drawn again with every well's wall (its segment group) taken out for the
+// while: the annotations, overlay and paths as they were.
+RenderedImage withoutWalls(const Picture& picture, const std::vector<PictureWell>& wells, int width,
+                           int height) {
+    struct Hidden {
+        SoSeparator* root;
+        SoNode* segments;
+        int index;
+    };
+    std::vector<Hidden> hidden;
+    for (const PictureWell& well : wells) {
+        SoSeparator* root = well.scene->root();
+        auto* segments = const_cast<SoSeparator*>(well.scene->segmentGroup());
+        segments->ref();
+        const int index = root->findChild(segments);
+        root->removeChild(index);
+        hidden.push_back({root, segments, index});
+    }
+    OffscreenRenderer renderer;
+    RenderedImage bare = renderer.render(picture.root.get(), width, height, kBackgroundColour);
+    for (const Hidden& h : hidden) {
+        h.root->insertChild(h.segments, h.index);
+        h.segments->unref();
+    }
+    return bare;
+}
+
 class FieldPictureTest : public CoinTest {};
 
 TEST_F(FieldPictureTest, NoTwoLabelsOfAFieldOverlapInAnyView) {
@@ -195,7 +224,10 @@ TEST_F(FieldPictureTest, NoTwoLabelsOfAFieldOverlapInAnyView) {
         for (const glm::vec2& head : projectedWellheads(field, *camera, width, height))
             boxes.push_back({head.x - 5.5f, head.y - 5.5f, head.x + 5.5f, head.y + 5.5f});
         EXPECT_EQ(pixelsOutside(picture.image, kNameColour, boxes), 0);
-        EXPECT_EQ(pixelsOutside(picture.image, kLabelColour, boxes), 0);
+        // The label colour, a near white, is also a lit wall's highlight: it is read from the
+        // same picture drawn again without the wells' walls.
+        EXPECT_EQ(pixelsOutside(withoutWalls(picture, wells, width, height), kLabelColour, boxes),
+                  0);
     }
 }
 
