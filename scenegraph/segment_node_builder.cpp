@@ -56,7 +56,7 @@ SoIndexedTriangleStripSet* makeStrips(SoVertexProperty* vp,
 bool renderCachingWanted() {
     static const bool wanted = [] {
         const char* value = std::getenv("CALIPER3D_RENDER_CACHING");
-        return !(value && std::strcmp(value, "off") == 0);
+        return value && std::strcmp(value, "on") == 0;
     }();
     return wanted;
 }
