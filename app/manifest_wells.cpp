@@ -31,7 +31,12 @@ OptionTexts furtherOptions(const std::vector<std::string>& words,
         }
         if (value.empty()) throw UsageError("--" + name + " in options has no value");
         std::string& text = texts[name];
-        text = text.empty() || !option->repeatable ? value : text + ";" + value;
+        if (text.empty() || !option->repeatable) {
+            text = value;
+        } else {
+            text += ';';
+            text += value;
+        }
     }
     return texts;
 }
