@@ -78,7 +78,7 @@ WellGeometry::WellGeometry(std::shared_ptr<const io::SectionTable> table,
     checkDrawable(*m_table);
     markMeasuredRows();
     if (cancelled()) throw GeometryCancelled();
-    computePathAndFrames();
+    computePathAndOrientation();
     cutSegments();
 }
 
@@ -116,11 +116,11 @@ bool WellGeometry::cancelled() const {
     return m_options.cancel && m_options.cancel->load(std::memory_order_relaxed);
 }
 
-void WellGeometry::computePathAndFrames() {
+void WellGeometry::computePathAndOrientation() {
     const io::SectionTable& t = *m_table;
     const std::size_t rows = t.rowCount();
     const bool fromSurvey = !m_options.survey.empty();
-    // The workers write ~140 bytes per row into fresh memory: its pages are
+    // The workers write 64 bytes per row into fresh memory: its pages are
     // faulted in on every worker at once first, not by the first writer.
     const int threads = std::max(1, m_options.threads);
     if (fromSurvey) {
@@ -131,15 +131,12 @@ void WellGeometry::computePathAndFrames() {
         if (cancelled()) throw GeometryCancelled();  // before the rest is faulted in by one thread
         m_placed->path.resize(rows);
     }
-    m_placed->frames = FillArray<SectionFrame>(rows);
-    prefaultPages(m_placed->frames.data(), rows * sizeof(SectionFrame), threads, m_options.cancel);
-    if (cancelled()) throw GeometryCancelled();
     m_placed->orientation.resize(rows);
 
-    // Each block computes its rows' minimum-curvature steps and frames from
-    // one set of sines and cosines per row; the positions are then the running
-    // sum of the steps, added block after block in row order exactly as a
-    // single loop adds them.
+    // Each block computes its rows' minimum-curvature steps from one set of
+    // sines and cosines per row, and which reading orients each row; the positions are then the
+    // running sum of the steps, added block after block in row order exactly as a single loop adds
+    // them.
     const std::size_t blocks = (rows + kBlockRows - 1) / kBlockRows;
     std::vector<double> startInc, startAzi;
     if (!fromSurvey) {
@@ -153,7 +150,7 @@ void WellGeometry::computePathAndFrames() {
             if (cancelled()) return;
             const std::size_t first = block * kBlockRows, last = std::min(rows, first + kBlockRows);
             if (!fromSurvey) computeSteps(first, last, startInc[block], startAzi[block]);
-            computeFrames(first, last);
+            computeOrientation(first, last);
         },
         [&](std::size_t block) {
             if (fromSurvey || cancelled()) return;
@@ -242,25 +239,32 @@ void WellGeometry::computeSteps(std::size_t first, std::size_t last, double inc,
 // near-vertical holes, RB from the high side in steep ones (where P1AZ, a horizontal
 // projection, loses precision) or when P1AZ is missing; P1AZ when RB is missing. A row with neither
 // keeps arm 1 north and is counted as unoriented.
-void WellGeometry::computeFrames(std::size_t first, std::size_t last) {
+// Which reading places arm 1 on each of rows [first, last): RB in a steep hole or where P1AZ is
+// missing, else P1AZ; neither, unoriented.
+void WellGeometry::computeOrientation(std::size_t first, std::size_t last) {
     const io::SectionTable& t = *m_table;
-    HoleDirection direction(m_placed->path[first].inc_deg, m_placed->path[first].azi_deg);
     for (std::size_t i = first; i < last; ++i) {
-        const double inc = m_placed->path[i].inc_deg, azi = m_placed->path[i].azi_deg;
-        direction.update(inc, azi);
+        const double inc = m_placed->path[i].inc_deg;
         const double p1az = valueAt(t.p1az_deg, i);
         const double rb = valueAt(t.rb_deg, i);
         const bool steep = inc > m_options.steepInclination_deg;
-        if (std::isfinite(rb) && (steep || !std::isfinite(p1az))) {
-            m_placed->frames.set(i, frameFromRelativeBearing(direction, rb));
+        if (std::isfinite(rb) && (steep || !std::isfinite(p1az)))
             m_placed->orientation[i] = Orientation::RelativeBearing;
-        } else {
-            m_placed->frames.set(i,
-                                 frameFromPadAzimuth(direction, std::isfinite(p1az) ? p1az : 0.0));
+        else
             m_placed->orientation[i] =
                 std::isfinite(p1az) ? Orientation::PadAzimuth : Orientation::Unoriented;
-        }
     }
+}
+
+// HoleDirection's sines and cosines are std::sin's and std::cos's of the angles, so the frame
+// is the one a running HoleDirection along the rows gives, bit for bit.
+SectionFrame WellGeometry::frame(std::size_t row) const {
+    const PathPoint& p = m_placed->path[row];
+    const HoleDirection direction(p.inc_deg, p.azi_deg);
+    if (m_placed->orientation[row] == Orientation::RelativeBearing)
+        return frameFromRelativeBearing(direction, valueAt(m_table->rb_deg, row));
+    const double p1az = valueAt(m_table->p1az_deg, row);
+    return frameFromPadAzimuth(direction, std::isfinite(p1az) ? p1az : 0.0);
 }
 
 Ned WellGeometry::centre(std::size_t row) const {

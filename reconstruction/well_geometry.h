@@ -51,10 +51,10 @@ struct GeometryOptions {
     // carried inclination and azimuth). The rows after it are then placed exactly as in the
     // whole log's geometry, bit for bit. Unused with a survey (its path is per row already).
     std::optional<PathPoint> continueFrom;
-    // Workers that compute the path and the section frames (the result does
+    // Workers that compute the path and each row's orientation (the result does
     // not depend on it).
     int threads = 1;
-    // Set from another thread, stops the path and frames within a block of rows
+    // Set from another thread, stops the path and orientation within a block of rows
     // (GeometryCancelled).
     const std::atomic<bool>* cancel = nullptr;
 };
@@ -76,9 +76,10 @@ int sectionKnotCount(int armCount);
 // circle through two opposite pads at radii r1 and r2.
 void twoPadCircle(double r1_mm, double r2_mm, double* knots);
 
-// The well's path, section frames and segment layout, computed once from a
-// section table; segment meshes are built on demand (a worker can build them
-// in any order and on any thread: this class is immutable after construction).
+// The well's path, section orientation and segment layout, computed once from a
+// section table (section frames are computed from them when asked); segment meshes are built on
+// demand (a worker can build them in any order and on any thread: this class is immutable after
+// construction).
 class WellGeometry {
 public:
     WellGeometry(std::shared_ptr<const io::SectionTable> table, const GeometryOptions& options);
@@ -86,14 +87,22 @@ public:
     const io::SectionTable& table() const { return *m_table; }
     const GeometryOptions& options() const { return m_options; }
     const std::vector<PathPoint>& path() const { return m_placed->path; }
-    const SectionFrame& frame(std::size_t row) const { return m_placed->frames[row]; }
+    // A path shared with whoever outlives this geometry (the analysis reads its sections'
+    // positions from it): the same vector as path().
+    std::shared_ptr<const std::vector<PathPoint>> sharedPath() const {
+        return {m_placed, &m_placed->path};
+    }
+    // A row's section frame, computed when asked from the row's path direction and its P1AZ or
+    // RB (as orientation() says): bit for bit the frame a stored one would be, without the 72
+    // bytes a row that storing it costs (docs/architecture.md, "Memory per well").
+    SectionFrame frame(std::size_t row) const;
     std::size_t segmentCount() const { return m_placed->segments.size(); }
     std::pair<std::size_t, std::size_t> segmentRows(std::size_t segment) const {
         return m_placed->segments[segment];
     }
 
     // The same well drawn another way (radial exaggeration, wall colours): shares this
-    // geometry's table, path, frames and segments, so a new look costs no read and no
+    // geometry's table, path, orientation and segments, so a new look costs no read and no
     // placement. `colouring` (null: departure from bit size) must have a value per row.
     WellGeometry restyled(double radialExaggeration,
                           std::shared_ptr<const WallColouring> colouring) const;
@@ -145,16 +154,15 @@ public:
 
 private:
     void markMeasuredRows();
-    void computePathAndFrames();
+    void computePathAndOrientation();
     bool cancelled() const;
     void cutSegments();
     void computeSteps(std::size_t first, std::size_t last, double inc, double azi);
-    void computeFrames(std::size_t first, std::size_t last);
+    void computeOrientation(std::size_t first, std::size_t last);
 
     // What the constructor computes, shared (never changed after) by restyled copies.
     struct Placement {
         std::vector<PathPoint> path;
-        FillArray<SectionFrame> frames;  // constructed by the workers that compute them
         std::vector<Orientation> orientation;
         std::vector<unsigned char> measured;
         std::size_t measuredRows = 0;

@@ -27,10 +27,10 @@ namespace caliper3d::app {
 namespace {
 
 // The value of the p-th fraction (0-1) of the finite values (NaN when none).
-double percentile(std::vector<double> values, double p) {
-    values.erase(
-        std::remove_if(values.begin(), values.end(), [](double v) { return !std::isfinite(v); }),
-        values.end());
+double percentile(const RowCurve& curve, double p) {
+    std::vector<double> values;
+    for (std::size_t i = 0; i < curve.size(); ++i)
+        if (std::isfinite(curve[i])) values.push_back(curve[i]);
     if (values.empty()) return std::nan("");
     const auto k = static_cast<std::ptrdiff_t>(p * double(values.size() - 1));
     std::nth_element(values.begin(), values.begin() + k, values.end());
@@ -77,7 +77,7 @@ QColor bandColour(reconstruction::BoreholeClass cls) {
 
 // The depth half-way between row i and its neighbour above (below when `below`), so a band
 // covers its rows' whole steps.
-double rowEdge_m(const std::vector<double>& depth_m, std::size_t row, bool below) {
+double rowEdge_m(const RowCurve& depth_m, std::size_t row, bool below) {
     if (below)
         return row + 1 < depth_m.size() ? 0.5 * (depth_m[row] + depth_m[row + 1]) : depth_m[row];
     return row > 0 ? 0.5 * (depth_m[row - 1] + depth_m[row]) : depth_m[row];
@@ -184,6 +184,7 @@ void LogTrackDock::sync() {
     if (!well || !well->geometry || !well->analysis) {
         m_well = index;
         m_analysis.reset();
+        m_depth_m = m_dmin_mm = m_dmax_mm = m_bit_mm = RowCurve();  // they read m_analysis
         m_message->setText(!well             ? "No well loaded"
                            : !well->geometry ? "No geometry: " + well->error
                                              : "analysing...");
@@ -204,18 +205,14 @@ void LogTrackDock::sync() {
 }
 
 void LogTrackDock::loadCurves(const reconstruction::WellAnalysis& analysis) {
-    const std::size_t rows = analysis.sections.size();
-    m_depth_m.resize(rows);
-    m_dmin_mm.resize(rows);
-    m_dmax_mm.resize(rows);
-    m_bit_mm.resize(rows);
-    for (std::size_t i = 0; i < rows; ++i) {
-        const reconstruction::SectionResult& s = analysis.sections[i];
-        m_depth_m[i] = s.md_m;
-        m_dmin_mm[i] = s.dmin_mm;
-        m_dmax_mm[i] = s.dmax_mm;
-        m_bit_mm[i] = s.bit_mm;
-    }
+    // Read in place: m_analysis holds them (and a share of the path) while the dock shows them.
+    using reconstruction::SectionMeasure;
+    const reconstruction::SectionResults& sections = analysis.sections;
+    const std::size_t rows = sections.size();
+    m_depth_m = RowCurve::field(sections.path().data(), &reconstruction::PathPoint::md, rows);
+    m_dmin_mm = RowCurve::field(sections.data(), &SectionMeasure::dmin_mm, rows);
+    m_dmax_mm = RowCurve::field(sections.data(), &SectionMeasure::dmax_mm, rows);
+    m_bit_mm = RowCurve::field(sections.data(), &SectionMeasure::bit_mm, rows);
     // The diameters' range without the rare spike (one row in a thousand may run off the
     // edge), and the bit size always in view.
     double low = percentile(m_dmin_mm, 0.001), high = percentile(m_dmax_mm, 0.999);
@@ -374,8 +371,7 @@ void LogTrackDock::addBands() {
     });
 }
 
-void LogTrackDock::addCurve(const std::vector<double>& values, const QString& name,
-                            const QPen& pen) {
+void LogTrackDock::addCurve(const RowCurve& values, const QString& name, const QPen& pen) {
     for (const TraceRun& run :
          decimateTrace(m_depth_m, values, top_m(), bottom_m(), m_drawnHeight_px)) {
         auto* series = new QLineSeries;

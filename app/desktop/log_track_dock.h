@@ -6,6 +6,7 @@
 #include <QDockWidget>
 #include <QtCharts/QChartGlobal>
 
+#include "app/desktop/row_curve.h"
 #include "io/picks_reader.h"
 #include "reconstruction/analysis/well_analysis.h"
 
@@ -68,7 +69,7 @@ private:
     void defaultWindow();
     void redraw();  // the curves and bands of the depth window
     void addBands();
-    void addCurve(const std::vector<double>& values, const QString& name, const QPen& pen);
+    void addCurve(const RowCurve& values, const QString& name, const QPen& pen);
     void addPicks();
     void moveCursor();
     void follow(double md_m);  // scrolls so that md_m is in view
@@ -89,8 +90,9 @@ private:
     QT_CHARTS_NAMESPACE::QLineSeries* m_cursor = nullptr;  // the current depth
     int m_well = -1;
     std::shared_ptr<const reconstruction::WellAnalysis> m_analysis;
-    // The curves, one value a row (NaN: no data), kept to be thinned for each window.
-    std::vector<double> m_depth_m, m_dmin_mm, m_dmax_mm, m_bit_mm;
+    // The curves, one value a row (NaN: no data), read where m_analysis holds them, to be
+    // thinned for each window.
+    RowCurve m_depth_m, m_dmin_mm, m_dmax_mm, m_bit_mm;
     std::vector<io::Pick> m_picks;  // the current well's image-log picks
     int m_drawnHeight_px = 0;
     double m_valueLow_mm = 150.0, m_valueHigh_mm = 300.0;  // the diameters shown, padded

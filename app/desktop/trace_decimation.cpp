@@ -12,8 +12,7 @@ namespace {
 // last rows, so the line reaches its gaps), flushed into the run when the bucket changes.
 class RunBuilder {
 public:
-    RunBuilder(const std::vector<double>& depth_m, const std::vector<double>& value)
-        : m_depth(depth_m), m_value(value) {}
+    RunBuilder(const RowCurve& depth_m, const RowCurve& value) : m_depth(depth_m), m_value(value) {}
 
     void add(std::size_t row, long long bucket) {
         if (m_open && bucket != m_bucket) flushBucket(false);
@@ -46,25 +45,37 @@ private:
         m_open = false;
     }
 
-    const std::vector<double>& m_depth;
-    const std::vector<double>& m_value;
+    const RowCurve& m_depth;
+    const RowCurve& m_value;
     TraceRun m_run;
     bool m_open = false;
     long long m_bucket = 0;
     std::size_t m_first = 0, m_last = 0, m_low = 0, m_high = 0;
 };
 
+// The first of rows [0, rows) whose depth is not below `limit` (`above` false), or above
+// it (true): std::lower_bound and std::upper_bound over a curve read in place.
+std::size_t firstRow(const RowCurve& depth_m, std::size_t rows, double limit, bool above) {
+    std::size_t low = 0, high = rows;
+    while (low < high) {
+        const std::size_t mid = low + (high - low) / 2;
+        if (above ? !(limit < depth_m[mid]) : depth_m[mid] < limit)
+            low = mid + 1;
+        else
+            high = mid;
+    }
+    return low;
+}
+
 }  // namespace
 
-std::vector<TraceRun> decimateTrace(const std::vector<double>& depth_m,
-                                    const std::vector<double>& value, double top_m, double bottom_m,
-                                    int buckets) {
+std::vector<TraceRun> decimateTrace(const RowCurve& depth_m, const RowCurve& value, double top_m,
+                                    double bottom_m, int buckets) {
     std::vector<TraceRun> runs;
     const std::size_t rows = std::min(depth_m.size(), value.size());
     if (rows == 0 || !(bottom_m > top_m) || buckets < 1) return runs;
-    const auto rowsBegin = depth_m.begin(), rowsEnd = depth_m.begin() + std::ptrdiff_t(rows);
-    auto begin = std::size_t(std::lower_bound(rowsBegin, rowsEnd, top_m) - rowsBegin);
-    auto end = std::size_t(std::upper_bound(rowsBegin, rowsEnd, bottom_m) - rowsBegin);
+    std::size_t begin = firstRow(depth_m, rows, top_m, false);
+    std::size_t end = firstRow(depth_m, rows, bottom_m, true);
     if (begin > 0) --begin;
     if (end < rows) ++end;
     const double bucket_m = (bottom_m - top_m) / buckets;

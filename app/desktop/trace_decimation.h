@@ -2,6 +2,8 @@
 
 #include <vector>
 
+#include "app/desktop/row_curve.h"
+
 namespace caliper3d::app {
 
 struct TracePoint {
@@ -19,8 +21,7 @@ using TraceRun = std::vector<TracePoint>;
 // split the curve into runs, never joined across, however short the gap. The row just above top_m
 // and the one just below bottom_m are kept, so a line reaches the plot's edges. `depth_m`
 // increases; `value` has the same length.
-std::vector<TraceRun> decimateTrace(const std::vector<double>& depth_m,
-                                    const std::vector<double>& value, double top_m, double bottom_m,
-                                    int buckets);
+std::vector<TraceRun> decimateTrace(const RowCurve& depth_m, const RowCurve& value, double top_m,
+                                    double bottom_m, int buckets);
 
 }  // namespace caliper3d::app

@@ -227,7 +227,9 @@ void UnrolledImageDock::drawImage() {
     if (!logHasBitSize(well->geometry->table())) {
         if (well->analysis && well->analysis->bitSizeFromSections) {
             std::shared_ptr<const reconstruction::WellAnalysis> analysis = well->analysis;
-            gauge = [analysis](std::size_t row) { return analysis->sections[row].bit_mm / 2.0; };
+            gauge = [analysis](std::size_t row) {
+                return analysis->sections.measure(row).bit_mm / 2.0;
+            };
             gaugeText = "gauge from the sections (no bit size)";
         } else {
             gaugeText = "gauge: analysing... (no bit size)";

@@ -104,7 +104,7 @@ std::string casingSummary(const WellAnalysis& a) {
 }  // namespace
 
 std::vector<std::size_t> reportedSections(const WellAnalysis& a, const ReportOptions& options) {
-    const FillArray<SectionResult>& s = a.sections;
+    const SectionResults& s = a.sections;
     const double step = options.step_m;
     std::vector<std::size_t> rows;
     if (s.empty()) return rows;
@@ -113,12 +113,12 @@ std::vector<std::size_t> reportedSections(const WellAnalysis& a, const ReportOpt
         for (std::size_t i = 0; i < s.size(); ++i) rows[i] = i;
         return rows;
     }
-    const double top = s.front().md_m;
+    const double top = s.md_m(0), bottom = s.md_m(s.size() - 1);
     std::size_t j = 0;
     for (std::size_t k = 0;; ++k) {
         const double target = top + step * static_cast<double>(k);
-        if (target > s.back().md_m + 1e-9) break;
-        while (j + 1 < s.size() && std::abs(s[j + 1].md_m - target) <= std::abs(s[j].md_m - target))
+        if (target > bottom + 1e-9) break;
+        while (j + 1 < s.size() && std::abs(s.md_m(j + 1) - target) <= std::abs(s.md_m(j) - target))
             ++j;
         if (rows.empty() || rows.back() != j) rows.push_back(j);
     }

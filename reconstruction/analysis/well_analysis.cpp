@@ -135,38 +135,25 @@ bool anyBitSize(const io::SectionTable& t, double bitOverride) {
     return anyBit;
 }
 
-// Where the section is, whatever its shape: the path point, the bit size.
-SectionResult positionOf(const PathPoint& p, bool azimuthKnown, double bit_mm) {
-    SectionResult r;
-    r.md_m = p.md;
-    r.tvd_m = p.tvd;
-    r.north_m = p.north;
-    r.east_m = p.east;
-    r.inc_deg = p.inc_deg;
-    r.azi_deg = p.azi_deg;
-    if (!azimuthKnown) {
-        // No data, not north: the azimuth, and the departure wherever the path above has
-        // leaned at all, its TVD short of its MD (docs/conventions.md). The path is drawn
-        // without a departure, so north and east are 0 there only as drawn.
-        r.azi_deg = io::kNaN;
-        if (p.md - p.tvd > 1e-9) r.north_m = r.east_m = io::kNaN;
-    }
-    r.dls_degPer30m = p.dls_degPer30m;
-    r.bit_mm = bit_mm;
-    return r;
+// Where the section is, whatever its shape: the bit size (the path holds the rest).
+SectionMeasure positionOf(double bit_mm) {
+    SectionMeasure m;
+    m.bit_mm = bit_mm;
+    return m;
 }
 
 // Where it is, but no shape: every measurement undefined.
-void markNoData(SectionResult& r) {
-    r.area_mm2 = r.equivalentDiameter_mm = r.dmin_mm = r.dmax_mm = io::kNaN;
-    r.ellipticity = r.majorAzimuth_deg = r.majorFromHighSide_deg = io::kNaN;
-    r.centreOffset_mm = r.centreOffsetAzimuth_deg = io::kNaN;
-    r.cls = BoreholeClass::NoData;
+void markNoData(SectionMeasure& m) {
+    m.area_mm2 = m.equivalentDiameter_mm = m.dmin_mm = m.dmax_mm = io::kNaN;
+    m.ellipticity = m.majorAzimuth_deg = m.majorFromHighSide_deg = io::kNaN;
+    m.centreOffset_mm = m.centreOffsetAzimuth_deg = io::kNaN;
+    m.cls = BoreholeClass::NoData;
 }
 
-BoreholeClass shapeClass(const SectionResult& r, const ClassificationRules& rules) {
+BoreholeClass shapeClass(const SectionMeasure& m, const PathPoint& p,
+                         const ClassificationRules& rules) {
     return classifyShape(
-        {r.md_m, r.dmin_mm, r.dmax_mm, r.bit_mm, r.inc_deg, r.majorFromHighSide_deg, io::kNaN},
+        {p.md, m.dmin_mm, m.dmax_mm, m.bit_mm, p.inc_deg, m.majorFromHighSide_deg, io::kNaN},
         rules);
 }
 
@@ -227,25 +214,25 @@ public:
         const std::vector<BoreholeClass> shapeClasses = m_classes;
         const BreakoutEvidence evidence = breakoutEvidenceFor(m_t.armCount);
         applyBreakoutZoneRules(
-            m_classes, [&](std::size_t i) { return a.sections[i].md_m; },
+            m_classes, [&](std::size_t i) { return a.sections.md_m(i); },
             [&](std::size_t i) {
                 if (evidence == BreakoutEvidence::AxisFixedInEarth)
-                    return a.sections[i].majorAzimuth_deg;
+                    return a.sections.measure(i).majorAzimuth_deg;
                 const double p1az = valueAt(m_t.p1az_deg, i);
                 return std::isfinite(p1az) ? p1az : valueAt(m_t.rb_deg, i);
             },
             m_options.rules, evidence);
         for (std::size_t i = 0; i < m_rows; ++i)
-            if (m_classes[i] != shapeClasses[i]) a.sections[i].cls = m_classes[i];
+            if (m_classes[i] != shapeClasses[i]) a.sections.measure(i).cls = m_classes[i];
     }
 
     void summarise() {
         WellAnalysis& a = m_a;
         a.zones = detectZones(
-            m_classes, [&](std::size_t i) { return a.sections[i].md_m; },
-            [&](std::size_t i) { return a.sections[i].majorAzimuth_deg; },
-            [&](std::size_t i) { return a.sections[i].dmax_mm; },
-            [&](std::size_t i) { return a.sections[i].dmin_mm; });
+            m_classes, [&](std::size_t i) { return a.sections.md_m(i); },
+            [&](std::size_t i) { return a.sections.measure(i).majorAzimuth_deg; },
+            [&](std::size_t i) { return a.sections.measure(i).dmax_mm; },
+            [&](std::size_t i) { return a.sections.measure(i).dmin_mm; });
         a.breakouts = summariseBreakouts(a.zones, m_options.wsm);
         a.volume = m_volume.result();
         PadAzimuthSums orientation;
@@ -295,8 +282,7 @@ private:
         const PathPoint& p = m_g.path()[row];
         const double bitOverride = m_options.bitSize_mm;
         const io::CasingString* casing = io::casingAt(m_t.casing, p.md);
-        SectionResult r = positionOf(
-            p, m_azimuthKnown,
+        SectionMeasure r = positionOf(
             casing ? casing->innerDiameter_mm
                    : (std::isfinite(bitOverride) ? bitOverride : 2.0 * m_g.bitRadius_mm(row)));
         if (!m_g.measured(row)) {
@@ -316,7 +302,7 @@ private:
         r.majorFromHighSide_deg = w.majorFromHighSide_deg;
         r.centreOffset_mm = shape.centreOffset_mm;
         r.centreOffsetAzimuth_deg = w.centreOffsetAzimuth_deg;
-        r.repairedArms = repaired;
+        r.repairedArms = static_cast<std::uint16_t>(repaired);
         const bool oriented = m_g.orientation(row) != WellGeometry::Orientation::Unoriented;
         if (!oriented) {
             // No pad-1 azimuth nor relative bearing: arm 1 points nowhere known, so neither
@@ -326,7 +312,7 @@ private:
             r.majorFromHighSide_deg = io::kNaN;
         }
         r.cls = casing     ? BoreholeClass::Cased
-                : m_anyBit ? shapeClass(r, m_options.rules)
+                : m_anyBit ? shapeClass(r, p, m_options.rules)
                            : BoreholeClass::InGauge;
         m_classes[row] = r.cls;
         if (!m_azimuthKnown && p.inc_deg > 0.0) {
@@ -346,13 +332,14 @@ private:
 
     // The step from section i - 1 to i: open hole only, unless either has no data.
     void addVolumeStep(std::size_t i) {
-        const SectionResult &r0 = m_a.sections[i - 1], &r1 = m_a.sections[i];
-        if (io::casingAt(m_t.casing, r0.md_m) || io::casingAt(m_t.casing, r1.md_m))
-            m_volume.addCasedStep(r0.md_m, r1.md_m);
+        const SectionMeasure &r0 = m_a.sections.measure(i - 1), &r1 = m_a.sections.measure(i);
+        const double md0 = m_a.sections.md_m(i - 1), md1 = m_a.sections.md_m(i);
+        if (io::casingAt(m_t.casing, md0) || io::casingAt(m_t.casing, md1))
+            m_volume.addCasedStep(md0, md1);
         else if (m_classes[i - 1] != BoreholeClass::NoData && m_classes[i] != BoreholeClass::NoData)
-            m_volume.addStep(r0.md_m, r0.area_mm2, r0.bit_mm, r1.md_m, r1.area_mm2, r1.bit_mm);
+            m_volume.addStep(md0, r0.area_mm2, r0.bit_mm, md1, r1.area_mm2, r1.bit_mm);
         else
-            m_volume.addUncoveredStep(r0.md_m, r1.md_m);
+            m_volume.addUncoveredStep(md0, md1);
     }
 
     // Arms that did not open (docs/analysis.md, "Arms not open"): runs of at least
@@ -361,7 +348,7 @@ private:
     void markArmsNotOpen() {
         const ClassificationRules& rules = m_options.rules;
         auto closed = [&](std::size_t i) {
-            const SectionResult& r = m_a.sections[i];
+            const SectionMeasure& r = m_a.sections.measure(i);
             return m_g.measured(i) && r.dmax_mm < r.bit_mm * (1.0 - rules.armsClosedFraction);
         };
         const auto minRun =
@@ -376,10 +363,10 @@ private:
             while (j + 1 < m_rows && closed(j + 1)) ++j;
             if (j - i + 1 >= minRun) {
                 for (std::size_t k = i; k <= j; ++k) {
-                    markNoData(m_a.sections[k]);
+                    markNoData(m_a.sections.measure(k));
                     m_classes[k] = BoreholeClass::NoData;
                 }
-                m_a.armsNotOpen.push_back({i, j, m_a.sections[i].md_m, m_a.sections[j].md_m});
+                m_a.armsNotOpen.push_back({i, j, m_a.sections.md_m(i), m_a.sections.md_m(j)});
             }
             i = j + 1;
         }
@@ -393,12 +380,12 @@ private:
             check.casing = c;
             std::vector<double> d;
             for (std::size_t i = 0; i < m_rows; ++i) {
-                const SectionResult& r = m_a.sections[i];
-                if (m_classes[i] != BoreholeClass::Cased || io::casingAt(m_t.casing, r.md_m) != &c)
+                const double md = m_a.sections.md_m(i);
+                if (m_classes[i] != BoreholeClass::Cased || io::casingAt(m_t.casing, md) != &c)
                     continue;
-                if (!std::isfinite(check.top_m)) check.top_m = r.md_m;
-                check.bottom_m = r.md_m;
-                d.push_back(r.equivalentDiameter_mm);
+                if (!std::isfinite(check.top_m)) check.top_m = md;
+                check.bottom_m = md;
+                d.push_back(m_a.sections.measure(i).equivalentDiameter_mm);
             }
             check.sections = d.size();
             if (!d.empty()) check.medianDiameter_mm = io::medianInPlace(d);
@@ -414,16 +401,16 @@ private:
         d.reserve(m_g.measuredRows());
         for (std::size_t i = 0; i < m_rows; ++i)
             if (m_g.measured(i) && m_classes[i] != BoreholeClass::Cased)
-                d.push_back(m_a.sections[i].equivalentDiameter_mm);
+                d.push_back(m_a.sections.measure(i).equivalentDiameter_mm);
         if (d.empty()) return;  // cased throughout: no open hole to take a gauge from
         const double gauge_mm = io::medianInPlace(d);
         for (std::size_t i = 0; i < m_rows; ++i) {
-            SectionResult& r = m_a.sections[i];
+            SectionMeasure& r = m_a.sections.measure(i);
             if (m_classes[i] == BoreholeClass::Cased) continue;
-            if (io::casingAt(m_t.casing, r.md_m)) continue;  // no data inside casing
+            if (io::casingAt(m_t.casing, m_a.sections.md_m(i))) continue;  // no data inside casing
             r.bit_mm = gauge_mm;
             if (m_g.measured(i)) {
-                r.cls = shapeClass(r, m_options.rules);
+                r.cls = shapeClass(r, m_g.path()[i], m_options.rules);
                 m_classes[i] = r.cls;
             }
         }
@@ -454,11 +441,11 @@ private:
 WellAnalysis analyseWell(const WellGeometry& g, const AnalysisOptions& options) {
     const std::size_t rows = g.table().rowCount();
     WellAnalysis a;
-    // 144 bytes per row of fresh memory: its pages are faulted in on every
-    // worker at once, and each result is constructed once, by the worker that
+    // 88 bytes per row of fresh memory: its pages are faulted in on every
+    // worker at once, and each measure is constructed once, by the worker that
     // computes it (no sequential value-initialisation first).
-    a.sections = FillArray<SectionResult>(rows);
-    prefaultPages(a.sections.data(), rows * sizeof(SectionResult), std::max(1, options.threads));
+    a.sections = SectionResults(g.sharedPath(), g.holeAzimuthKnown());
+    prefaultPages(a.sections.data(), rows * sizeof(SectionMeasure), std::max(1, options.threads));
     if (rows == 0) return a;
     WellAnalyser analyser(g, options, a);
     analyser.analyseSections();

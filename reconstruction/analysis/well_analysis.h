@@ -6,29 +6,12 @@
 
 #include "reconstruction/analysis/borehole_classifier.h"
 #include "reconstruction/analysis/hole_volume.h"
+#include "reconstruction/analysis/section_results.h"
 #include "reconstruction/analysis/zone_detection.h"
-#include "reconstruction/parallel/fill_array.h"
 #include "reconstruction/path/orientation_check.h"
 #include "reconstruction/well_geometry.h"
 
 namespace caliper3d::reconstruction {
-
-// Everything the report says about one section (analysis frame: north, east,
-// TVD down from the wellhead, metres; wellhead offset not included).
-struct SectionResult {
-    double md_m = 0.0, tvd_m = 0.0, north_m = 0.0, east_m = 0.0;
-    double inc_deg = 0.0, azi_deg = 0.0, dls_degPer30m = 0.0;
-    double bit_mm = 0.0;  // gauge used (NaN when unknown)
-    double area_mm2 = 0.0, equivalentDiameter_mm = 0.0;
-    double dmin_mm = 0.0, dmax_mm = 0.0, ellipticity = 1.0;
-    double majorAzimuth_deg = 0.0;  // world azimuth of the major axis, [0, 180); NaN if vertical
-    double majorFromHighSide_deg = 0.0;    // clockwise from the high side, [0, 180)
-    double centreOffset_mm = 0.0;          // tool axis to hole centre
-    double centreOffsetAzimuth_deg = 0.0;  // direction from tool axis to hole centre, [0, 360)
-    int repairedArms = 0;                  // arms interpolated on this section
-    // NoData: too few valid arms; every measurement above from area_mm2 on is NaN.
-    BoreholeClass cls = BoreholeClass::InGauge;
-};
 
 // The tool's reading inside one casing string against the casing's nominal inner diameter: a
 // calibration check of the run (docs/analysis.md, "Cased hole").
@@ -50,8 +33,8 @@ struct AnalysisOptions {
 
 // The interval results and the counts the command reports as warnings.
 struct WellAnalysis {
-    FillArray<SectionResult> sections;  // one per section, in depth order
-    std::vector<Zone> zones;            // every class but in_gauge, in depth order
+    SectionResults sections;  // one per section, in depth order
+    std::vector<Zone> zones;  // every class but in_gauge, in depth order
     BreakoutSummary breakouts;
     HoleVolume volume;
     OrientationOffset padAzimuthOffset;  // P1AZ - f(HAZI, DEVI, RB); samples 0 when not all present

@@ -99,3 +99,52 @@ TEST(TraceDecimationTest, AWindowKeepsItsRowsAndOneBeyondEachEnd) {
     EXPECT_TRUE(app::decimateTrace(depth, value, 150.0, 150.0, 600).empty());
     EXPECT_TRUE(app::decimateTrace({}, {}, 0.0, 1.0, 10).empty());
 }
+
+TEST(TraceDecimationTest, ReadsACurveInPlaceFromAFieldOfRecords) {
+    // Records as the analysis keeps its sections: the depth and two values side by side.
+    struct Row {
+        double depth_m;
+        double dmin_mm;
+        int code;
+        double dmax_mm;
+    };
+    std::vector<Row> rows(10000);
+    for (std::size_t i = 0; i < rows.size(); ++i)
+        rows[i] = {100.0 + 0.01 * double(i), double(i % 7), int(i), 300.0 + double(i % 5)};
+    rows[4000].dmax_mm = std::nan("");  // a row without data splits the curve
+    const app::RowCurve depth = app::RowCurve::field(rows.data(), &Row::depth_m, rows.size());
+    const app::RowCurve dmax = app::RowCurve::field(rows.data(), &Row::dmax_mm, rows.size());
+    ASSERT_EQ(depth.size(), rows.size());
+    EXPECT_EQ(depth.front(), 100.0);
+    EXPECT_DOUBLE_EQ(depth.back(), 199.99);
+    EXPECT_EQ(dmax[4], 304.0);
+    // Zoomed in: every row between 139.955 and 140.045 and one beyond each end, the one
+    // without data (140.00) leaving two runs.
+    const auto runs = app::decimateTrace(depth, dmax, 139.955, 140.045, 600);
+    ASSERT_EQ(runs.size(), 2u);
+    EXPECT_EQ(runs[0].size(), 5u);  // 139.95 .. 139.99
+    EXPECT_EQ(runs[1].size(), 5u);  // 140.01 .. 140.05
+    EXPECT_NEAR(runs[0].front().depth_m, 139.95, 1e-9);
+    EXPECT_NEAR(runs[0].back().depth_m, 139.99, 1e-9);
+    EXPECT_NEAR(runs[1].front().depth_m, 140.01, 1e-9);
+    EXPECT_NEAR(runs[1].back().depth_m, 140.05, 1e-9);
+    for (const auto& run : runs)
+        for (const auto& p : run)
+            EXPECT_EQ(p.value, 300.0 + double(std::lround((p.depth_m - 100.0) / 0.01) % 5));
+    // The whole log, thinned: the same points as from copies of the two curves.
+    std::vector<double> depthCopy, dmaxCopy;
+    for (const Row& r : rows) {
+        depthCopy.push_back(r.depth_m);
+        dmaxCopy.push_back(r.dmax_mm);
+    }
+    const auto inPlace = app::decimateTrace(depth, dmax, 100.0, 199.99, 300);
+    const auto copied = app::decimateTrace(depthCopy, dmaxCopy, 100.0, 199.99, 300);
+    ASSERT_EQ(inPlace.size(), copied.size());
+    for (std::size_t k = 0; k < inPlace.size(); ++k) {
+        ASSERT_EQ(inPlace[k].size(), copied[k].size());
+        for (std::size_t j = 0; j < inPlace[k].size(); ++j) {
+            EXPECT_EQ(inPlace[k][j].depth_m, copied[k][j].depth_m);
+            EXPECT_EQ(inPlace[k][j].value, copied[k][j].value);
+        }
+    }
+}

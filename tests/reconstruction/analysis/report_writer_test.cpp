@@ -136,8 +136,9 @@ TEST(ReportWriterTest, WellheadAddsMapCoordinatesAndDepthBelowDatum) {
 
 TEST(ReportWriterTest, OneSectionsFieldsAreItsCsvLine) {
     WellAnalysis a = exampleAnalysis();
-    a.sections[7].cls = BoreholeClass::NoData;  // as analyseWell leaves a section without data
-    a.sections[7].dmin_mm = a.sections[7].dmax_mm = a.sections[7].equivalentDiameter_mm = io::kNaN;
+    SectionMeasure& seventh = a.sections.measure(7);
+    seventh.cls = BoreholeClass::NoData;  // as analyseWell leaves a section without data
+    seventh.dmin_mm = seventh.dmax_mm = seventh.equivalentDiameter_mm = io::kNaN;
     for (const bool withWellhead : {false, true}) {
         ReportOptions options;
         if (withWellhead) options.wellhead = Wellhead{500000.0, 6800000.0, 30.0};
