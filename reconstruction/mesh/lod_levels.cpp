@@ -34,30 +34,10 @@ void appendRing(const WellGeometry& g, Mesh& mesh, std::size_t row,
     const WallColouring* colouring = g.options().colouring.get();
     const double exaggeration = g.options().radialExaggeration;
     const std::size_t base = mesh.positions.size();
-    // In-plane coordinates (u along arm 1, v 90 degrees clockwise), metres.
     thread_local std::vector<glm::dvec2> plane;
-    plane.resize(static_cast<std::size_t>(points));
+    drawnRing(radii, exaggeration, plane);
     for (int j = 0; j < points; ++j) {
-        const double phi = glm::two_pi<double>() * j / points;
-        const double r = radii[static_cast<std::size_t>(j)] / 1000.0;
-        plane[static_cast<std::size_t>(j)] = glm::dvec2(r * std::cos(phi), r * std::sin(phi));
-    }
-    glm::dvec2 centroid(0.0);
-    if (exaggeration != 1.0) {
-        // Polygon centroid (shoelace); the tool axis when the ring has no area.
-        double area2 = 0.0;
-        glm::dvec2 sum(0.0);
-        for (std::size_t j = 0; j < plane.size(); ++j) {
-            const glm::dvec2 &a = plane[j], &b = plane[(j + 1) % plane.size()];
-            const double cross = a.x * b.y - b.x * a.y;
-            area2 += cross;
-            sum += (a + b) * cross;
-        }
-        if (std::abs(area2) > 1e-12) centroid = sum / (3.0 * area2);
-    }
-    for (int j = 0; j < points; ++j) {
-        const glm::dvec2 drawn =
-            centroid + (plane[static_cast<std::size_t>(j)] - centroid) * exaggeration;
+        const glm::dvec2 drawn = plane[static_cast<std::size_t>(j)] / 1000.0;
         const Ned p = c + drawn.x * f.arm1 + drawn.y * f.side;
         mesh.positions.emplace_back(toScene(p));
         const double r = radii[static_cast<std::size_t>(j)];
@@ -133,6 +113,59 @@ Mesh buildLevel(const WellGeometry& g, const std::vector<std::size_t>& rows, int
 }
 
 }  // namespace
+
+void drawnRing(const std::vector<double>& radii_mm, double exaggeration,
+               std::vector<glm::dvec2>& out) {
+    const std::size_t points = radii_mm.size();
+    out.resize(points);
+    for (std::size_t j = 0; j < points; ++j) {
+        const double phi =
+            glm::two_pi<double>() * static_cast<double>(j) / static_cast<double>(points);
+        out[j] = glm::dvec2(radii_mm[j] * std::cos(phi), radii_mm[j] * std::sin(phi));
+    }
+    if (exaggeration == 1.0) return;
+    // Polygon centroid (shoelace); the tool axis when the ring has no area.
+    double area2 = 0.0;
+    glm::dvec2 sum(0.0), centroid(0.0);
+    for (std::size_t j = 0; j < points; ++j) {
+        const glm::dvec2 &a = out[j], &b = out[(j + 1) % points];
+        const double cross = a.x * b.y - b.x * a.y;
+        area2 += cross;
+        sum += (a + b) * cross;
+    }
+    if (std::abs(area2) > 1e-6) centroid = sum / (3.0 * area2);
+    for (glm::dvec2& p : out) p = centroid + (p - centroid) * exaggeration;
+}
+
+double ringError_mm(const WellGeometry& g, std::size_t row, const PeriodicSplineSampler* level) {
+    if (!g.measured(row)) return 0.0;
+    const auto knots = static_cast<std::size_t>(g.knotCount());
+    std::vector<double> pads(knots), full(static_cast<std::size_t>(g.sampler().samples()));
+    g.sectionKnots(row, pads.data());
+    g.sampler().sample(pads.data(), full.data());
+    std::vector<double> coarse = pads;
+    if (level) {
+        coarse.resize(static_cast<std::size_t>(level->samples()));
+        level->sample(pads.data(), coarse.data());
+    }
+    std::vector<glm::dvec2> fine, polygon;
+    const double exaggeration = g.options().radialExaggeration;
+    drawnRing(full, exaggeration, fine);
+    drawnRing(coarse, exaggeration, polygon);
+    // Each fine point's distance to the nearest edge of the coarse polygon.
+    double worst = 0.0;
+    for (const glm::dvec2& p : fine) {
+        double nearest = std::numeric_limits<double>::infinity();
+        for (std::size_t k = 0; k < polygon.size(); ++k) {
+            const glm::dvec2 a = polygon[k], ab = polygon[(k + 1) % polygon.size()] - a;
+            const double len2 = glm::dot(ab, ab);
+            const double t = len2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+            nearest = std::min(nearest, glm::length(p - (a + t * ab)));
+        }
+        worst = std::max(worst, nearest);
+    }
+    return worst;
+}
 
 double chordError(double radius, int points) {
     return radius * (1.0 - std::cos(glm::pi<double>() / std::max(points, 3)));

@@ -3,11 +3,14 @@
 #include <cstddef>
 #include <vector>
 
+#include <glm/vec2.hpp>
+
 #include "reconstruction/mesh/mesh.h"
 
 namespace caliper3d::reconstruction {
 
 class WellGeometry;
+class PeriodicSplineSampler;
 struct GeometryOptions;
 
 // One level of a segment's level-of-detail pyramid (docs/architecture.md, "Level of detail").
@@ -52,6 +55,19 @@ SegmentMesh buildCoarseSegment(const WellGeometry& geometry, std::size_t segment
 // row meet without a crack; the others get `points` samples (0: the pads' N-gon). What every
 // pyramid level and every span of the level-of-detail tree (lod_tree.h) draws.
 Mesh buildRingMesh(const WellGeometry& geometry, const std::vector<std::size_t>& rows, int points);
+
+// A ring of `radii_mm` at equal angles from arm 1 in its section's plane (x along arm 1, y
+// 90 degrees clockwise), millimetres, drawn `exaggeration` times larger about the centroid of
+// its area as every level draws it.
+void drawnRing(const std::vector<double>& radii_mm, double exaggeration,
+               std::vector<glm::dvec2>& out);
+
+// The largest distance, drawn, in millimetres, from a point of `row`'s full-detail ring to the
+// ring a coarser level draws for it: the spline sampled by `level`, or the pads' polygon when
+// `level` is null. Measured, where chordError assumes a circle: a breakout's ring strays
+// further from its polygon than a round hole's. 0 for a row without data.
+double ringError_mm(const WellGeometry& geometry, std::size_t row,
+                    const PeriodicSplineSampler* level);
 
 // The largest chord error of a closed polygon of `points` vertices on a circle of `radius`.
 double chordError(double radius, int points);

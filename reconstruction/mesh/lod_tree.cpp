@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <thread>
 
 #include <glm/geometric.hpp>
@@ -30,11 +31,27 @@ std::size_t spanSize(int depth) {
     return size;
 }
 
+// How much the full ring can move when its pads move: the largest sum of the absolute
+// weights of one sample (the sampler's infinity norm, its Lebesgue constant; about 1.55 for
+// six pads and 48 samples). Pads within e of a line give samples within this times e.
+double samplerNorm(const PeriodicSplineSampler& sampler) {
+    double worst = 0.0;
+    const auto knots = static_cast<std::size_t>(sampler.knots());
+    for (std::size_t j = 0; j < static_cast<std::size_t>(sampler.samples()); ++j) {
+        double sum = 0.0;
+        for (std::size_t k = 0; k < knots; ++k) sum += std::abs(sampler.weights()[j * knots + k]);
+        worst = std::max(worst, sum);
+    }
+    return worst;
+}
+
 // What a span hands to the span above it besides its mesh.
 struct SpanRows {
     std::vector<std::size_t> rows;  // kept, increasing
-    double error_mm = 0.0;          // of the radii, undrawn (no exaggeration, no chord error)
-    double pathDeviation_m = 0.0;   // the straight path between kept rows from the true path
+    double error_mm = 0.0;          // of the pads' polygons, drawn (exaggeration included)
+    double ringError_mm = 0.0;      // of the level's rings against the full spline, drawn
+    double pathDeviation_m = 0.0;   // the straight path between kept rows from the true path,
+                                    //   or the tool's turn between them, drawn
     double maxRadius_mm = 0.0;      // largest knot value, undrawn
 };
 
@@ -96,6 +113,45 @@ std::vector<std::size_t> swingDoor(const WellGeometry& g,
     return kept;
 }
 
+// The largest drawn distance (mm) between a measured candidate's pad polygon and the straight
+// line (in depth) between the polygons of the kept rows on either side of it, each polygon
+// drawn about its own centroid as buildRingMesh draws it.
+double keptDeviation_mm(const WellGeometry& g, const std::vector<std::size_t>& candidates,
+                        const std::vector<double>& values, std::size_t knots,
+                        const std::vector<std::size_t>& kept) {
+    const std::vector<double>& depth = g.table().depth_m;
+    const double exaggeration = g.options().radialExaggeration;
+    std::vector<double> pads(knots);
+    auto ring = [&](std::size_t c, std::vector<glm::dvec2>& out) {
+        std::copy_n(values.begin() + static_cast<std::ptrdiff_t>(c * knots), knots, pads.begin());
+        drawnRing(pads, exaggeration, out);
+    };
+    std::vector<glm::dvec2> from, to, here;
+    double worst = 0.0;
+    std::size_t a = 0;  // the candidate that is kept[k]; every kept row is a candidate
+    for (std::size_t k = 0; k + 1 < kept.size(); ++k) {
+        while (candidates[a] < kept[k]) ++a;
+        std::size_t b = a;
+        while (candidates[b] < kept[k + 1]) ++b;
+        if (b > a + 1 && g.measured(kept[k]) && g.measured(kept[k + 1])) {
+            ring(a, from);
+            ring(b, to);
+            const double length = depth[kept[k + 1]] - depth[kept[k]];
+            for (std::size_t c = a + 1; c < b; ++c) {
+                if (!g.measured(candidates[c])) continue;
+                ring(c, here);
+                const double t =
+                    length > 0.0 ? (depth[candidates[c]] - depth[kept[k]]) / length : 0.0;
+                for (std::size_t j = 0; j < knots; ++j)
+                    worst =
+                        std::max(worst, glm::length(here[j] - (from[j] + t * (to[j] - from[j]))));
+            }
+        }
+        a = b;
+    }
+    return worst;
+}
+
 double distanceToChord(const Ned& p, const Ned& a, const Ned& b) {
     const Ned ab = b - a;
     const double len2 = glm::dot(ab, ab);
@@ -119,7 +175,7 @@ Built buildSpan(const WellGeometry& g, int depth, std::size_t index,
 
     // The rows to choose from: every measured row at depth 1, else the rows the children kept.
     std::vector<std::size_t> candidates;
-    double childError_mm = 0.0, childDeviation_m = 0.0;
+    double childError_mm = 0.0, childDeviation_m = 0.0, childRingError_mm = 0.0;
     if (depth == 1) {
         candidates.reserve(last - first + 1);
         for (std::size_t r = first; r <= last; ++r)
@@ -132,6 +188,7 @@ Built buildSpan(const WellGeometry& g, int depth, std::size_t index,
             for (std::size_t r : child.rows)
                 if (candidates.empty() || r > candidates.back()) candidates.push_back(r);
             childError_mm = std::max(childError_mm, child.error_mm);
+            childRingError_mm = std::max(childRingError_mm, child.ringError_mm);
             childDeviation_m = std::max(childDeviation_m, child.pathDeviation_m);
             result.maxRadius_mm = std::max(result.maxRadius_mm, child.maxRadius_mm);
         }
@@ -147,7 +204,24 @@ Built buildSpan(const WellGeometry& g, int depth, std::size_t index,
 
     const LodLevel level = spanLevel(g.options(), static_cast<int>(knots), depth);
     result.rows = swingDoor(g, candidates, values, knots, level);
-    result.error_mm = level.tolerance_mm + childError_mm;
+    // The error is measured, not the tolerance assumed: the kept rows' straight lines differ
+    // from the candidates' by at most `level.tolerance_mm` (times the exaggeration), and
+    // mostly far less on a smooth wall. Both the children's polygons and this span's are
+    // piecewise linear in depth with breaks at the candidates (this span keeps a subset of
+    // them), so their largest difference lies on a candidate; adding the children's error
+    // bounds the distance to every measured row's polygon (the triangle inequality).
+    result.error_mm = keptDeviation_mm(g, candidates, values, knots, result.rows) + childError_mm;
+    // The ring each kept row draws (the pads' polygon, or fewer spline points) against its
+    // full spline, measured on the kept rows; between them the rings are close to the
+    // straight line between theirs (the spline is linear in the pads).
+    {
+        std::optional<PeriodicSplineSampler> sampler;
+        if (level.points > 0) sampler.emplace(static_cast<int>(knots), level.points);
+        for (std::size_t r : result.rows)
+            result.ringError_mm =
+                std::max(result.ringError_mm, ringError_mm(g, r, sampler ? &*sampler : nullptr));
+        result.ringError_mm = std::max(result.ringError_mm, childRingError_mm);
+    }
 
     // How far the straight path between kept rows strays from the candidates' centres.
     double deviation_m = 0.0;
@@ -159,6 +233,18 @@ Built buildSpan(const WellGeometry& g, int depth, std::size_t index,
             std::max(deviation_m, distanceToChord(g.centre(candidate), g.centre(result.rows[k]),
                                                   g.centre(result.rows[k + 1])));
     }
+    // The tool turns between kept rows: a straight edge from a pad's point at one kept row to
+    // the same pad's point at the next cuts inside the wall between them, by up to
+    // r (1 - cos(turn / 2)) at the middle for a drawn radius r.
+    const double drawnRadius_m =
+        result.maxRadius_mm * std::max(1.0, 2.0 * g.options().radialExaggeration - 1.0) / 1000.0;
+    for (std::size_t i = 0; i + 1 < result.rows.size(); ++i) {
+        const std::size_t r0 = result.rows[i], r1 = result.rows[i + 1];
+        if (!g.measured(r0) || !g.measured(r1)) continue;
+        const double cosTurn = std::clamp(glm::dot(g.frame(r0).arm1, g.frame(r1).arm1), -1.0, 1.0);
+        const double turn = std::acos(cosTurn);
+        deviation_m = std::max(deviation_m, drawnRadius_m * (1.0 - std::cos(turn / 2.0)));
+    }
     result.pathDeviation_m = deviation_m + childDeviation_m;
 
     SpanMesh& mesh = out.mesh;
@@ -169,14 +255,13 @@ Built buildSpan(const WellGeometry& g, int depth, std::size_t index,
     mesh.firstRow = first;
     mesh.lastRow = last;
     const double exaggeration = g.options().radialExaggeration;
-    const double drawn_mm = result.maxRadius_mm * exaggeration;
     // As for a segment (lod_levels.cpp): a drawn point lies within F r + (F - 1) r of the path.
     mesh.maxRadius_m =
         static_cast<float>(result.maxRadius_mm * std::max(1.0, 2.0 * exaggeration - 1.0) / 1000.0);
-    mesh.error_mm = static_cast<float>(
-        result.error_mm * exaggeration +
-        chordError(drawn_mm, level.points > 0 ? level.points : static_cast<int>(knots)) +
-        result.pathDeviation_m * 1000.0);
+    // A full ring is the spline through its pads: pads within e of a line give a spline
+    // within samplerNorm e of the line's spline, so the pads' error counts that much.
+    mesh.error_mm = static_cast<float>(samplerNorm(g.sampler()) * result.error_mm +
+                                       result.ringError_mm + result.pathDeviation_m * 1000.0);
     mesh.mesh = buildRingMesh(g, result.rows, level.points);
 
     const glm::dvec3 a = toScene(g.centre(first)), b = toScene(g.centre(last));

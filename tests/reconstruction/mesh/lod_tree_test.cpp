@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <glm/vector_relational.hpp>
 
 #include "reconstruction/mesh/lod_levels.h"
@@ -209,4 +210,48 @@ TEST(LodTreeTest, AStretchWithoutDataIsAGapInEveryMergedMesh) {
             EXPECT_FALSE(above && below) << "span " << span.depth << "/" << span.index;
         }
     }
+}
+
+TEST(LodTreeTest, ASpanOfAnUnchangingHoleHasNoErrorButItsPolygonsAndTheToolsTurn) {
+    // A vertical hole at gauge: leaving rows out changes nothing, so a span's error is the
+    // chord error of its six-sided rings alone (measured, not the tolerance the rows were kept
+    // to), and it switches in as soon as its polygon is small enough on the screen.
+    GeometryOptions options;
+    options.radialExaggeration = 50.0;
+    SyntheticWellSpec spec = syntheticProfile("circle", 300.0, 0.02);
+    spec.toolRotation_degPerM = 0.0;
+    const WellGeometry still(std::make_shared<const SectionTable>(makeSyntheticWell(spec)),
+                             options);
+    const double drawn_mm = spec.bitSize_mm / 2.0 * options.radialExaggeration;
+    const double chord_mm = chordError(drawn_mm, still.knotCount());
+    const std::vector<SpanMesh> spans = buildSpanMeshes(still);
+    ASSERT_EQ(spans.size(), 22u);
+    for (const SpanMesh& span : spans)
+        EXPECT_NEAR(span.error_mm, chord_mm, 0.001 * drawn_mm) << span.depth << "/" << span.index;
+
+    // A tool turning 2 degrees a metre: the straight edges between kept rings cut inside the
+    // wall by up to r (1 - cos(turn / 2)) at each depth, r the drawn radius bound
+    // (2F - 1) r, the turn at most the rate times the depth's longest spacing.
+    spec.toolRotation_degPerM = 2.0;
+    const WellGeometry turning(std::make_shared<const SectionTable>(makeSyntheticWell(spec)),
+                               options);
+    const double bound_mm = spec.bitSize_mm / 2.0 * (2.0 * options.radialExaggeration - 1.0);
+    for (const SpanMesh& span : buildSpanMeshes(turning)) {
+        double allowed_mm = chord_mm;
+        for (int d = 1; d <= span.depth; ++d) {
+            const double turn_rad =
+                glm::radians(spec.toolRotation_degPerM *
+                             spanLevel(options, turning.knotCount(), d).maxSpacing_m);
+            allowed_mm += bound_mm * (1.0 - std::cos(turn_rad / 2.0));
+        }
+        EXPECT_GT(span.error_mm, chord_mm + 1.0) << span.depth << "/" << span.index;
+        EXPECT_LE(span.error_mm, allowed_mm + 0.001 * drawn_mm) << span.depth << "/" << span.index;
+    }
+
+    // The example well's breakout and washout are errors the coarser spans do carry.
+    const WellGeometry example(exampleWell(300.0, 0.02), options);
+    float largest = 0.0f;
+    for (const SpanMesh& span : buildSpanMeshes(example))
+        largest = std::max(largest, span.error_mm);
+    EXPECT_GT(largest, 2.0 * chord_mm);
 }
