@@ -164,6 +164,48 @@ struct Built {
     SpanRows rows;
 };
 
+// The ring and path parts of a span's error (see buildSpan), into `result`.
+void measureRingsAndPath(const WellGeometry& g, const std::vector<std::size_t>& candidates,
+                         const LodLevel& level, double childRingError_mm, double childDeviation_m,
+                         SpanRows& result) {
+    const auto knots = static_cast<std::size_t>(g.knotCount());
+    // The ring each kept row draws (the pads' polygon, or fewer spline points) against its
+    // full spline, measured on the kept rows; between them the rings are close to the
+    // straight line between theirs (the spline is linear in the pads).
+    {
+        std::optional<PeriodicSplineSampler> sampler;
+        if (level.points > 0) sampler.emplace(static_cast<int>(knots), level.points);
+        for (std::size_t r : result.rows)
+            result.ringError_mm =
+                std::max(result.ringError_mm, ringError_mm(g, r, sampler ? &*sampler : nullptr));
+        result.ringError_mm = std::max(result.ringError_mm, childRingError_mm);
+    }
+
+    // How far the straight path between kept rows strays from the candidates' centres.
+    double deviation_m = 0.0;
+    std::size_t k = 0;
+    for (const std::size_t candidate : candidates) {
+        while (k + 1 < result.rows.size() && result.rows[k + 1] < candidate) ++k;
+        if (k + 1 >= result.rows.size()) break;
+        deviation_m =
+            std::max(deviation_m, distanceToChord(g.centre(candidate), g.centre(result.rows[k]),
+                                                  g.centre(result.rows[k + 1])));
+    }
+    // The tool turns between kept rows: a straight edge from a pad's point at one kept row to
+    // the same pad's point at the next cuts inside the wall between them, by up to
+    // r (1 - cos(turn / 2)) at the middle for a drawn radius r.
+    const double drawnRadius_m =
+        result.maxRadius_mm * std::max(1.0, 2.0 * g.options().radialExaggeration - 1.0) / 1000.0;
+    for (std::size_t i = 0; i + 1 < result.rows.size(); ++i) {
+        const std::size_t r0 = result.rows[i], r1 = result.rows[i + 1];
+        if (!g.measured(r0) || !g.measured(r1)) continue;
+        const double cosTurn = std::clamp(glm::dot(g.frame(r0).arm1, g.frame(r1).arm1), -1.0, 1.0);
+        const double turn = std::acos(cosTurn);
+        deviation_m = std::max(deviation_m, drawnRadius_m * (1.0 - std::cos(turn / 2.0)));
+    }
+    result.pathDeviation_m = deviation_m + childDeviation_m;
+}
+
 Built buildSpan(const WellGeometry& g, int depth, std::size_t index,
                 const std::vector<SpanRows>& children) {
     const std::size_t segments = g.segmentCount();
@@ -211,41 +253,7 @@ Built buildSpan(const WellGeometry& g, int depth, std::size_t index,
     // them), so their largest difference lies on a candidate; adding the children's error
     // bounds the distance to every measured row's polygon (the triangle inequality).
     result.error_mm = keptDeviation_mm(g, candidates, values, knots, result.rows) + childError_mm;
-    // The ring each kept row draws (the pads' polygon, or fewer spline points) against its
-    // full spline, measured on the kept rows; between them the rings are close to the
-    // straight line between theirs (the spline is linear in the pads).
-    {
-        std::optional<PeriodicSplineSampler> sampler;
-        if (level.points > 0) sampler.emplace(static_cast<int>(knots), level.points);
-        for (std::size_t r : result.rows)
-            result.ringError_mm =
-                std::max(result.ringError_mm, ringError_mm(g, r, sampler ? &*sampler : nullptr));
-        result.ringError_mm = std::max(result.ringError_mm, childRingError_mm);
-    }
-
-    // How far the straight path between kept rows strays from the candidates' centres.
-    double deviation_m = 0.0;
-    std::size_t k = 0;
-    for (const std::size_t candidate : candidates) {
-        while (k + 1 < result.rows.size() && result.rows[k + 1] < candidate) ++k;
-        if (k + 1 >= result.rows.size()) break;
-        deviation_m =
-            std::max(deviation_m, distanceToChord(g.centre(candidate), g.centre(result.rows[k]),
-                                                  g.centre(result.rows[k + 1])));
-    }
-    // The tool turns between kept rows: a straight edge from a pad's point at one kept row to
-    // the same pad's point at the next cuts inside the wall between them, by up to
-    // r (1 - cos(turn / 2)) at the middle for a drawn radius r.
-    const double drawnRadius_m =
-        result.maxRadius_mm * std::max(1.0, 2.0 * g.options().radialExaggeration - 1.0) / 1000.0;
-    for (std::size_t i = 0; i + 1 < result.rows.size(); ++i) {
-        const std::size_t r0 = result.rows[i], r1 = result.rows[i + 1];
-        if (!g.measured(r0) || !g.measured(r1)) continue;
-        const double cosTurn = std::clamp(glm::dot(g.frame(r0).arm1, g.frame(r1).arm1), -1.0, 1.0);
-        const double turn = std::acos(cosTurn);
-        deviation_m = std::max(deviation_m, drawnRadius_m * (1.0 - std::cos(turn / 2.0)));
-    }
-    result.pathDeviation_m = deviation_m + childDeviation_m;
+    measureRingsAndPath(g, candidates, level, childRingError_mm, childDeviation_m, result);
 
     SpanMesh& mesh = out.mesh;
     mesh.depth = depth;
