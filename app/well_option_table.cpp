@@ -482,7 +482,8 @@ void geometryRows(Rows& rows) {
 
     rows.add(
         "segment-length", "METRES", G::Reading,
-        "Length of one level-of-detail segment in metres (default 1).",
+        "Length of one level-of-detail segment in metres (default: 1, or 100 rows "
+        "rounded up to whole metres on a log sampled more sparsely than 1 cm).",
         [](const std::string& t, WellSource&, LoadOptions& o) {
             const double length = number(t, "segment-length");
             if (!(length > 0.0))

@@ -19,6 +19,7 @@
 #include "reconstruction/section/arm_geometry.h"
 #include "reconstruction/section/invalid_arm_readings.h"
 #include "reconstruction/section/section_coverage.h"
+#include "reconstruction/segment_length.h"
 
 namespace caliper3d::reconstruction {
 
@@ -173,6 +174,8 @@ void WellGeometry::computePathAndOrientation() {
 void WellGeometry::cutSegments() {
     const io::SectionTable& t = *m_table;
     const std::size_t rows = t.rowCount();
+    if (!(m_options.segmentLength_m > 0.0))
+        m_options.segmentLength_m = autoSegmentLength(t.depth_m);
     const double segment = std::max(m_options.segmentLength_m, 1e-3);
     std::size_t first = 0;
     while (first + 1 < rows) {

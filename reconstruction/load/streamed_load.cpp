@@ -15,6 +15,7 @@
 #include "reconstruction/load/well_warnings.h"
 #include "reconstruction/mesh/lod_levels.h"
 #include "reconstruction/path/north_reference.h"
+#include "reconstruction/segment_length.h"
 
 namespace caliper3d::reconstruction {
 
@@ -51,10 +52,18 @@ public:
         else
             m_rows.append(rows);
         const std::size_t n = m_rows.rowCount();
+        if (!(m_options.segmentLength_m > 0.0)) {
+            // Automatic: set by the well's first rows, as the whole well's geometry sets it.
+            if (n < kSegmentStepRows) return true;
+            m_options.segmentLength_m = autoSegmentLength(m_rows.depth_m);
+        }
         if (n < 2 || m_rows.depth_m[n - 1] - m_rows.depth_m[0] < 2.0 * m_options.segmentLength_m)
             return true;
         return buildStretch();
     }
+
+    // The segment length the stretches were cut to; 0 while still automatic (none built).
+    double segmentLength_m() const { return m_options.segmentLength_m; }
 
 private:
     bool buildStretch() {
@@ -204,6 +213,8 @@ LoadedWell loadWellStreamed(const WellSource& source, const LoadOptions& options
     whole.source = source.path;
     out.table = std::make_shared<const io::SectionTable>(std::move(whole));
     geometry.threads = 2;  // the reading thread has ended: both cores place the whole well
+    // The segments already sent were cut to this length: the whole well keeps it.
+    if (builder.segmentLength_m() > 0.0) geometry.segmentLength_m = builder.segmentLength_m();
     out.geometry = std::make_shared<const WellGeometry>(out.table, geometry);
     if (options.cancel && options.cancel->load()) throw GeometryCancelled();
     if (options.geometryWarnings) warnGeometry(*out.geometry, out.diagnostics);

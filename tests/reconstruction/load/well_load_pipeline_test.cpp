@@ -205,3 +205,33 @@ TEST(WellLoadPipelineTest, OpeningAndCancellingHundredsOfTimesIsClean) {
     EXPECT_EQ(stoppedInTheRead + stoppedLater, 200u);
     EXPECT_GT(stoppedInTheRead, 0u);
 }
+
+TEST(WellLoadPipelineTest, ALogSampledEveryDecimetreIsCutIntoTenMetreSegments) {
+    // 4,001 rows 0.1 m apart: the automatic segment length is 100 rows, 10 m, the same for the
+    // stretches streamed while reading and for the whole well.
+    const auto file =
+        test::scratch("pipeline_dm_" + std::to_string(static_cast<long>(::getpid())) + ".txt");
+    io::writeColumnTextFile(file.string(),
+                            makeSyntheticWell(syntheticProfile("example", 400.0, 0.1)));
+    WellLoadPipeline pipeline(WellSource{file.string(), {}, {}, {}}, LoadOptions{}, Wellhead{});
+    pipeline.start();
+    const std::vector<LoadEvent> events = drainAll(pipeline);
+    ASSERT_TRUE(std::holds_alternative<LoadFinished>(events.back()));
+    std::shared_ptr<const WellGeometry> whole;
+    std::vector<const SegmentMesh*> segments;
+    for (const LoadEvent& e : events) {
+        if (const auto* started = std::get_if<LoadStarted>(&e)) whole = started->geometry;
+        if (const auto* segment = std::get_if<SegmentMesh>(&e)) segments.push_back(segment);
+    }
+    ASSERT_TRUE(whole);
+    EXPECT_EQ(whole->options().segmentLength_m, 10.0);
+    EXPECT_EQ(std::get<LoadFinished>(events.back()).segments, 40u);
+    ASSERT_EQ(segments.size(), 40u);
+    for (std::size_t s = 0; s < segments.size(); ++s) {
+        EXPECT_EQ(segments[s]->index, s);
+        EXPECT_EQ(segments[s]->firstRow, 100 * s);
+        EXPECT_EQ(segments[s]->lastRow, 100 * (s + 1));
+        EXPECT_EQ(segments[s]->firstRow, whole->segmentRows(s).first);
+        EXPECT_EQ(segments[s]->lastRow, whole->segmentRows(s).second);
+    }
+}
