@@ -40,7 +40,7 @@ inline bool operator!=(const WellSource& a, const WellSource& b) {
 struct LoadOptions {
     io::ReadOptions read;
     int splinePoints = 48;
-    double segmentLength_m = 0.0;  // 0: automatic (autoSegmentLength, well_geometry.h)
+    double segmentLength_m = 0.0;    // 0: automatic (autoSegmentLength, well_geometry.h)
     double shapeTolerance_mm = 0.5;  // level-of-detail shape error of the finest coarse level
     double radialExaggeration = 1.0;
     // What the wall is coloured by. Applied by the callers that draw (the window after its

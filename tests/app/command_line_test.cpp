@@ -51,12 +51,13 @@ TEST(CommandLineTest, ExportWritesTheMeshFormatItsExtensionNames) {
     std::filesystem::remove(glb);
     CommandRun exported = run("export " + log.string() + " -o " + glb.string());
     ASSERT_EQ(exported.status, 0) << exported.output;
-    // 30 segments of 1 m, one mesh each; the triangles it reports are those in the file.
-    EXPECT_NE(exported.output.find("(1 well, 30 meshes, "), std::string::npos) << exported.output;
+    // Rows 0.1 m apart: 3 segments of 100 rows (10 m), one mesh each; the triangles it
+    // reports are those in the file.
+    EXPECT_NE(exported.output.find("(1 well, 3 meshes, "), std::string::npos) << exported.output;
     Assimp::Importer importer;
     const aiScene* scene = importer.ReadFile(glb.string(), 0);
     ASSERT_NE(scene, nullptr) << importer.GetErrorString();
-    ASSERT_EQ(scene->mNumMeshes, 30u);
+    ASSERT_EQ(scene->mNumMeshes, 3u);
     std::size_t faces = 0;
     for (unsigned int m = 0; m < scene->mNumMeshes; ++m) faces += scene->mMeshes[m]->mNumFaces;
     EXPECT_NE(exported.output.find(" vertices, " + std::to_string(faces) + " triangles)"),

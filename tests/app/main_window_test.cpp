@@ -212,7 +212,7 @@ TEST_F(MainWindowTest, RecolouringAndReExaggeratingReuseTheWellInMemory) {
     EXPECT_NE(window.statusText().indexOf("nothing read again"), -1)
         << window.statusText().toStdString();
     // The washout's sections now draw in the washout's colour.
-    const reconstruction::SegmentMesh segment = styled->buildSegment(20);
+    const reconstruction::SegmentMesh segment = styled->buildSegment(2);  // 20-30 m (10 m each)
     ASSERT_FALSE(segment.levels.front().colours.empty());
     EXPECT_EQ(segment.levels.front().colours.front(), 0xD55E00FFu);
 

@@ -174,8 +174,8 @@ TEST(RenderCommandTest, DepthDrawsOnlyTheIntervalAndFramesIt) {
     const CommandRun r =
         runCaliper3d("render " + kilometreWell() + " -o " + png + " --depth 400,500", false);
     ASSERT_EQ(r.status, 0) << r.output;
-    // 400.0, 400.1, ... 500.0 m: the sections drawn.
-    EXPECT_NE(r.output.find(": 1001 sections, 100 segments"), std::string::npos) << r.output;
+    // 400.0, 400.1, ... 500.0 m: the sections drawn, in segments of 100 rows (10 m).
+    EXPECT_NE(r.output.find(": 1001 sections, 10 segments"), std::string::npos) << r.output;
     // The 100 m drawn fill the picture's height, as a whole well's length does; and they are
     // exaggerated for 100 m (x 10), not for 1 km.
     const QImage picture(QString::fromStdString(png));
