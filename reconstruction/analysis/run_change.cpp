@@ -34,6 +34,7 @@ double halfRange(const std::vector<float>& values, double repeatability_mm) {
 }
 
 std::string signedMetres(double v) {
+    if (std::abs(v) < 0.0005) v = 0.0;  // not "-0.000"
     char text[32];
     std::snprintf(text, sizeof text, "%+.3f m", v);
     return text;
@@ -45,10 +46,10 @@ ColourLegend changeLegend(const RunChange& change, std::string range) {
     legend.unit = "mm";
     legend.range = std::move(range);
     legend.centre = "no change";
-    legend.note = "equivalent diameter, depths matched " +
-                  (change.mapping.given ? "as given " : std::string()) +
-                  signedMetres(change.mapping.shift_m);
-    legend.noValueText = "not compared:\noutside the overlap, no data,\narms not open or cased";
+    // Short lines: the panel must leave the picture's middle to the well.
+    legend.note = "equiv. diameter, shift " + signedMetres(change.mapping.shift_m) +
+                  (change.mapping.given ? " (given)" : "");
+    legend.noValueText = "not compared:\nno overlap, no data,\narms not open, cased";
     return legend;
 }
 
@@ -142,8 +143,7 @@ std::shared_ptr<const WallColouring> changeColouring(
         hi = halfRange(values, change.repeatability95_mm);
         lo = -hi;
         char text[96];
-        std::snprintf(text, sizeof text, "98th pct of |change|, at least %.1f mm",
-                      change.repeatability95_mm);
+        std::snprintf(text, sizeof text, "98th pct, at least %.1f mm", change.repeatability95_mm);
         rangeText = text;
     }
     ColourLegend legend = changeLegend(change, std::move(rangeText));
