@@ -15,7 +15,7 @@
 #include "app/verb_parser.h"
 #include "io/number_parsing.h"
 #include "reconstruction/analysis/comparison_writer.h"
-#include "reconstruction/analysis/match_curve.h"
+#include "reconstruction/analysis/run_change.h"
 #include "reconstruction/analysis/run_comparison.h"
 #include "reconstruction/load/load_well.h"
 #include "reconstruction/load/well_warnings.h"
@@ -88,23 +88,13 @@ AnalysedRun analyseRun(const WellSource& well, const LoadOptions& load,
 
 reconstruction::DepthMapping depthMapping(VerbParser& verb, const AnalysedRun& a,
                                           const AnalysedRun& b) {
-    reconstruction::DepthMapping mapping;
-    if (verb.isSet("shift")) {
-        mapping.shift_m = number(verb, "shift", false);
-        mapping.given = true;
-        return mapping;
-    }
-    const std::string curve = reconstruction::chooseMatchCurve(*a.loaded.table, *b.loaded.table,
-                                                               verb.value("match-curve"));
-    reconstruction::DepthMappingOptions options;
-    options.match.maxShift_m = number(verb, "max-shift", true);
-    options.allowStretch = !verb.isSet("no-stretch");
-    mapping = reconstruction::fitDepthMapping(
-        reconstruction::matchCurveOf(*a.loaded.table, a.analysis, curve),
-        reconstruction::matchCurveOf(*b.loaded.table, b.analysis, curve), options);
-    mapping.curve =
-        curve == reconstruction::kEquivalentDiameterCurve ? "equivalent diameter" : curve;
-    return mapping;
+    reconstruction::RunMatchRequest request;
+    if (verb.isSet("shift")) request.shift_m = number(verb, "shift", false);
+    request.curve = verb.value("match-curve");
+    request.maxShift_m = number(verb, "max-shift", true);
+    request.allowStretch = !verb.isSet("no-stretch");
+    return reconstruction::matchRuns({a.loaded.geometry.get(), &a.analysis},
+                                     {b.loaded.geometry.get(), &b.analysis}, request);
 }
 
 nlohmann::ordered_json comparisonJson(const reconstruction::RunComparison& r) {
@@ -165,8 +155,8 @@ void compareWells(VerbParser& verb, const std::vector<WellSource>& wells, InputS
     options.repeatability95_mm =
         verb.isSet("repeatability")
             ? number(verb, "repeatability", true)
-            : std::max(reconstruction::repeatabilityLimit_mm(run1.loaded.table->armCount),
-                       reconstruction::repeatabilityLimit_mm(run2.loaded.table->armCount));
+            : reconstruction::repeatabilityLimit_mm({run1.loaded.geometry.get(), &run1.analysis},
+                                                    {run2.loaded.geometry.get(), &run2.analysis});
     const reconstruction::RunComparison r =
         reconstruction::compareRuns({run1.loaded.geometry.get(), &run1.analysis},
                                     {run2.loaded.geometry.get(), &run2.analysis}, options);

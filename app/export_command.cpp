@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "app/change_colouring.h"
 #include "app/commands.h"
 #include "app/each_input.h"
 #include "app/input_options.h"
@@ -94,6 +95,9 @@ int exportMesh(const std::vector<WellSource>& sources, const LoadOptions& option
     const scenegraph::MeshDetail detail =
         full ? scenegraph::MeshDetail::Full : scenegraph::MeshDetail::Shown;
     int wells = 0, failures = 0;
+    // Colour by change: the other run read once, each well compared with it.
+    std::optional<ChangeReference> reference;
+    if (coloursByChange(options)) reference.emplace(options);
     for (const WellSource& source : sources) {
         InputSummary& input = inputs.emplace_back();
         input.file = source.path;
@@ -111,7 +115,10 @@ int exportMesh(const std::vector<WellSource>& sources, const LoadOptions& option
             // as it is freed before the next is read.
             const reconstruction::WellGeometry styled = loaded.geometry->restyled(
                 options.radialExaggeration,
-                reconstruction::makeWallColouring(*loaded.geometry, options.colour));
+                reference ? reconstruction::changeColouring(*loaded.geometry,
+                                                            reference->against(*loaded.geometry),
+                                                            options.colour.range)
+                          : reconstruction::makeWallColouring(*loaded.geometry, options.colour));
             writer.addWell(styled, std::filesystem::path(source.path).stem().string(), detail);
             steps.step(++done);
             ++wells;
@@ -274,6 +281,7 @@ int runExport(const QStringList& args) {
         ExportSettings settings;
         settings.load = inputOptionsFrom(p);
         settings.load.colour = colourRequestFrom(p);
+        checkChangeOptions(settings.load, "export");
         settings.full = detail == "full";
         settings.ascii = verb.isSet("ascii");
         settings.gzip = verb.isSet("gzip");

@@ -10,6 +10,7 @@
 #include <Inventor/nodes/SoSeparator.h>
 #include <glm/vec3.hpp>
 
+#include "app/change_colouring.h"
 #include "app/commands.h"
 #include "app/each_input.h"
 #include "app/input_options.h"
@@ -258,6 +259,7 @@ int runRender(const QStringList& args) {
         const auto pick = pickPixelFrom(p, width, height, "caliper3d render");
         LoadOptions options = inputOptionsFrom(p);
         options.colour = colourRequestFrom(p);
+        checkChangeOptions(options, "render");
         PicturePlan plan{parseDepthInterval(verb), verb.value("depth"),
                          !downHole && !p.isSet("exaggerate"), height, options.radialExaggeration};
 

@@ -13,6 +13,7 @@
 #include <Inventor/nodes/SoPerspectiveCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
 
+#include "app/change_colouring.h"
 #include "io/parse_error.h"
 #include "io/picks_reader.h"
 #include "reconstruction/load/load_well.h"
@@ -73,16 +74,40 @@ AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOpt
         }
     }
     double exaggeration = options.radialExaggeration;
-    if (plan && !loaded.empty()) plan(loaded, exaggeration);
-    std::vector<std::shared_ptr<const reconstruction::WallColouring>> colourings;
-    try {
-        colourings = reconstruction::wallColourings(loaded, options.colour);
-    } catch (const std::exception& e) {
+    // A well that cannot be coloured as asked fails them all: they share one legend.
+    const auto failAll = [&](const std::exception& e) {
         out.failures += static_cast<int>(loaded.size());
         std::fprintf(stderr, "caliper3d: %s\n", e.what());
         for (const std::size_t input : loadedInput)
             out.inputs[input].error = inputErrorFrom(e, out.inputs[input].file);
         loaded.clear();
+    };
+    // Colour by change: each whole log against the other run, before a plan cuts an interval
+    // out of it (the depth match wants the whole overlap).
+    std::vector<reconstruction::RunChange> changes;
+    if (coloursByChange(options) && !loaded.empty()) {
+        try {
+            const ChangeReference reference(options);
+            for (const auto& well : loaded) changes.push_back(reference.against(*well));
+        } catch (const UsageError&) {
+            throw;
+        } catch (const std::exception& e) {
+            failAll(e);
+        }
+    }
+    if (plan && !loaded.empty()) plan(loaded, exaggeration);
+    std::vector<std::shared_ptr<const reconstruction::WallColouring>> colourings;
+    try {
+        if (coloursByChange(options)) {
+            std::vector<const reconstruction::RunChange*> each;
+            each.reserve(changes.size());
+            for (const reconstruction::RunChange& change : changes) each.push_back(&change);
+            colourings = reconstruction::changeColourings(loaded, each, options.colour.range);
+        } else {
+            colourings = reconstruction::wallColourings(loaded, options.colour);
+        }
+    } catch (const std::exception& e) {
+        failAll(e);
     }
     for (std::size_t w = 0; w < loaded.size(); ++w) {
         const auto geometry = std::make_shared<const reconstruction::WellGeometry>(

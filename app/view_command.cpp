@@ -41,7 +41,7 @@ struct WellToOpen {
 
 int showWindow(int argc, char** argv, const std::vector<WellToOpen>& wells,
                std::optional<double> at_m = std::nullopt, bool exaggerationGiven = false,
-               int status = kExitOk) {
+               int status = kExitOk, bool runs = false) {
     QApplication application(argc, argv);
     initGui();
     MainWindow window;
@@ -57,9 +57,13 @@ int showWindow(int argc, char** argv, const std::vector<WellToOpen>& wells,
         QObject::connect(&session, &WellSession::wellAnalysed, &window, [&window, at_m](int well) {
             if (well == 0) window.model().setCurrent(0, *at_m);
         });
-    session.openWell(wells.front().source, wells.front().options);
-    for (std::size_t i = 1; i < wells.size(); ++i)
-        session.addWell(wells[i].source, wells[i].options);
+    const int first = session.openWell(wells.front().source, wells.front().options);
+    for (std::size_t i = 1; i < wells.size(); ++i) {
+        if (runs)
+            session.addRun(wells[i].source, wells[i].options, first);
+        else
+            session.addWell(wells[i].source, wells[i].options);
+    }
     // The first frame can stay black until something changes: redraw once shown.
     QTimer::singleShot(100, &window, [&window] { window.update(); });
     const int rc = application.exec();
@@ -101,6 +105,12 @@ int runView(int argc, char** argv, const QStringList& args) {
         verb.parser().addOption(
             {"at", "Measured depth (m) the views open at in the first well (the nearest section).",
              "MD"});
+        verb.parser().addOption(
+            {"runs",
+             "The FILEs are runs of one well (logged on different days or by different tools): "
+             "they open as one well, the first its main run, the others grouped under it, "
+             "depth-matched to it and shown beside it in the section inspector and the log "
+             "track (--compare-with RUN: FILE and RUN so)."});
         verb.parser().addOption({"manifest",
                                  "A batch manifest (CSV or JSON, docs/formats.md): open the well "
                                  "of every row, after the FILEs.",
@@ -118,9 +128,28 @@ int runView(int argc, char** argv, const QStringList& args) {
         }
         LoadOptions options = inputOptionsFrom(verb.parser());
         options.colour = colourRequestFrom(verb.parser());
+        // --compare-with RUN opens RUN as another run of the one FILE's well.
+        bool runs = verb.isSet("runs");
+        std::vector<std::string> files = verb.positional();
+        if (!options.colour.compareWith.empty()) {
+            if (files.size() != 1 || verb.isSet("manifest"))
+                throw UsageError(
+                    "caliper3d view: --compare-with RUN opens RUN as a run of FILE's well: give "
+                    "one FILE (or FILE... --runs)");
+            files.push_back(options.colour.compareWith);
+            options.colour.compareWith.clear();
+            runs = true;
+        }
+        if (runs && (files.size() < 2 || verb.isSet("manifest")))
+            throw UsageError(
+                "caliper3d view: --runs takes two or more FILEs, the runs of one well");
+        if (options.colour.quantity == reconstruction::kChangeQuantity && !runs)
+            throw UsageError(
+                "caliper3d view: --colour-by change needs the well's runs: "
+                "FILE... --runs, or --compare-with RUN");
         std::vector<WellToOpen> wells;
-        if (!verb.positional().empty())
-            for (const WellSource& source : wellSourcesFrom(verb.parser(), verb.positional()))
+        if (!files.empty())
+            for (const WellSource& source : wellSourcesFrom(verb.parser(), files))
                 wells.push_back({source, options});
         int status = kExitOk;
         if (verb.isSet("manifest")) {
@@ -152,7 +181,7 @@ int runView(int argc, char** argv, const QStringList& args) {
                 "caliper3d view: no display; use 'caliper3d render' or 'caliper3d export'\n");
             return kExitUsage;
         }
-        return showWindow(argc, argv, wells, at, verb.isSet("exaggerate"), status);
+        return showWindow(argc, argv, wells, at, verb.isSet("exaggerate"), status, runs);
     });
 }
 

@@ -562,7 +562,9 @@ void colourRows(Rows& rows) {
         "colour-by", "NAME", G::Colour,
         "Colour the wall by: departure (radius - bit radius, the default; diverging map, "
         "grey at bit size), diameter (equivalent), ellipticity, class (the report's classes), "
-        "dls (dogleg severity), or any other curve of the log by its mnemonic (e.g. GR).",
+        "dls (dogleg severity), change (the equivalent diameter minus that of the run "
+        "--compare-with names, depth-matched as compare does; diverging map, grey where "
+        "they agree), or any other curve of the log by its mnemonic (e.g. GR).",
         [](const std::string& t, WellSource&, LoadOptions& o) {
             o.colour.quantity = trimmed(t);
             if (o.colour.quantity.empty()) throw UsageError("--colour-by: expected a name");
@@ -595,6 +597,22 @@ void colourRows(Rows& rows) {
             })
         .value = OptionValue::CommaList;
     rows.back().effect = OptionEffect::Picture;
+
+    WellOption& compareWith = rows.add(
+        "compare-with", "RUN", G::Colour,
+        "With --colour-by change: the other run of the same well (a log file, read with the "
+        "same options) that each FILE is compared with; the wall shows FILE minus RUN.",
+        [](const std::string& t, WellSource&, LoadOptions& o) {
+            o.colour.compareWith = trimmed(t);
+            if (o.colour.compareWith.empty())
+                throw UsageError("--compare-with: expected a log file");
+        },
+        [](const WellSource&, const LoadOptions& o) -> std::optional<std::string> {
+            if (o.colour.compareWith.empty()) return std::nullopt;
+            return o.colour.compareWith;
+        });
+    compareWith.value = OptionValue::Path;
+    compareWith.effect = OptionEffect::Picture;
 }
 
 // Where each well is: its survey and wellhead.

@@ -115,13 +115,29 @@ LegendText legendText(const reconstruction::ColourLegend& legend) {
             legend.kind == ColourMapKind::Diverging ? 0.0 : (legend.lo + legend.hi) / 2.0;
         out.labels = {withUnit(legendNumber(legend.hi), legend.unit),
                       legend.kind == ColourMapKind::Diverging
-                          ? "0 (" + std::string(legend.note.empty() ? "bit" : "gauge") + ")"
+                          ? "0 (" +
+                                (!legend.centre.empty() ? legend.centre
+                                 : legend.note.empty()  ? std::string("bit")
+                                                        : std::string("gauge")) +
+                                ")"
                           : withUnit(legendNumber(centre), legend.unit),
                       withUnit(legendNumber(legend.lo), legend.unit)};
         if (!legend.range.empty()) out.footer.push_back("range: " + legend.range);
     }
     if (!legend.note.empty()) out.footer.push_back(legend.note);
-    if (legend.noValue) out.footer.emplace_back("dark grey: no value");
+    if (legend.noValue) {
+        std::string line = "dark grey: ";
+        for (const char c :
+             legend.noValueText.empty() ? std::string("no value") : legend.noValueText) {
+            if (c != '\n') {
+                line += c;
+                continue;
+            }
+            out.footer.push_back(line);
+            line.clear();
+        }
+        out.footer.push_back(line);
+    }
     out.footer.emplace_back("gaps: no data");
     return out;
 }

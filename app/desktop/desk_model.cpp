@@ -26,6 +26,47 @@ void DeskModel::updateWell(int i, DeskWell well) {
     if (m_well < 0 && geometry) setCurrentRow(i, firstMeasuredRow(*geometry));
 }
 
+void DeskModel::setRunOf(int i, int mainId) {
+    m_wells.at(static_cast<std::size_t>(i)).runOf = mainId;
+    emit wellsChanged();
+}
+
+std::vector<int> DeskModel::otherRuns(int i) const {
+    std::vector<int> out;
+    const int group = well(i).runOf;
+    if (group < 0) return out;
+    const int main = mainRun(i);
+    if (main != i) out.push_back(main);
+    for (int j = 0; j < wellCount(); ++j)
+        if (j != i && j != main && well(j).runOf == group) out.push_back(j);
+    return out;
+}
+
+int DeskModel::mainRun(int i) const {
+    const int group = well(i).runOf;
+    if (group < 0) return i;
+    const int main = indexOf(group);
+    return main >= 0 ? main : i;
+}
+
+double DeskModel::matchedDepth_m(int from, int to, double md_m) const {
+    if (from == to) return md_m;
+    if (from < 0 || to < 0 || from >= wellCount() || to >= wellCount()) return io::kNaN;
+    const DeskWell& a = well(from);
+    const DeskWell& b = well(to);
+    if (a.runOf < 0 || a.runOf != b.runOf) return io::kNaN;
+    const int main = mainRun(from);
+    // Into the main run's depths, then out to the other's.
+    double mainMd_m = md_m;
+    if (from != main) {
+        if (!a.mapping) return io::kNaN;
+        mainMd_m = a.mapping->toRun1(md_m);
+    }
+    if (to == main) return mainMd_m;
+    if (!b.mapping) return io::kNaN;
+    return b.mapping->toRun2(mainMd_m);
+}
+
 int DeskModel::indexOf(int id) const {
     for (std::size_t i = 0; i < m_wells.size(); ++i)
         if (m_wells[i].id == id) return static_cast<int>(i);

@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <QObject>
@@ -9,6 +10,7 @@
 
 #include "io/diagnostics.h"
 #include "io/picks_reader.h"
+#include "reconstruction/analysis/depth_match.h"
 #include "reconstruction/analysis/well_analysis.h"
 #include "reconstruction/load/load_well.h"
 #include "reconstruction/well_geometry.h"
@@ -35,6 +37,15 @@ struct DeskWell {
     // How far its load has got, 0 to 1: the log read (the first 70 %), then its segments
     // drawn; 1 once loaded (WellSession publishes it while the well loads).
     double loadFraction = 0.0;
+    // Runs of one well (`view RUN1 RUN2 --runs`, docs/user-guide.md, "Runs of one well"): the
+    // id of the well's first run, its main run, on every run of it (the main run's own id
+    // included); -1 for a well of its own.
+    int runOf = -1;
+    // On a run other than the main one: where each depth of the main run lies in this run
+    // (reconstruction::matchRuns, as `caliper3d compare MAIN RUN` finds it), set once both
+    // runs are analysed; `matchError` says why it could not be found.
+    std::optional<reconstruction::DepthMapping> mapping;
+    QString matchError;
 };
 
 // The window's shared state: the wells, and the one current well, depth and angle that
@@ -66,6 +77,9 @@ public:
     void removeWell(int i);
     void clearWells();                     // emits wellsChanged and currentChanged
     void setVisible(int i, bool visible);  // emits wellChanged(i)
+    // Makes well i a run of the well whose main run has id `mainId` (DeskWell::runOf);
+    // emits wellsChanged (the wells dock groups the runs).
+    void setRunOf(int i, int mainId);
 
     int currentWell() const { return m_well; }  // -1 when no well is loaded
     // The current measured depth, metres, always a row's depth (NaN when no well).
@@ -81,6 +95,15 @@ public:
     void setCurrentDepth(double md_m) { setCurrent(m_well, md_m); }
     void setCurrentRow(int well, std::size_t row);
     void setCurrentAzimuth(double azimuth_deg);  // emits azimuthChanged
+
+    // The other runs of well i's well (model indices, the main run first); empty for a well
+    // of its own.
+    std::vector<int> otherRuns(int i) const;
+    // The main run of well i's well (i itself for a main run or a well of its own).
+    int mainRun(int i) const;
+    // Where `md_m` of well `from` lies in well `to`, two runs of one well, through their
+    // depth match; NaN where a match is not (yet) known or they are not runs of one well.
+    double matchedDepth_m(int from, int to, double md_m) const;
 
     // The row of `geometry`'s table nearest `md_m` (the log's first or last beyond its ends).
     static std::size_t nearestRow(const reconstruction::WellGeometry& geometry, double md_m);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <set>
 
+#include <QFileInfo>
 #include <QFontMetrics>
 #include <QLabel>
 #include <QMouseEvent>
@@ -192,6 +193,7 @@ void LogTrackDock::sync() {
         return;
     }
     if (index == m_well && well->analysis == m_analysis) {
+        if (loadOtherRun()) redraw();
         moveCursor();
         follow(m_model.currentDepth_m());
         return;
@@ -200,8 +202,44 @@ void LogTrackDock::sync() {
     m_analysis = well->analysis;
     m_picks = well->picks;
     loadCurves(*m_analysis);
+    loadOtherRun();
     m_stack->setCurrentWidget(m_track);
     defaultWindow();
+}
+
+bool LogTrackDock::loadOtherRun() {
+    const std::vector<int> others = m_model.otherRuns(m_well);
+    std::shared_ptr<const reconstruction::WellAnalysis> analysis;
+    std::vector<double> depth_m;
+    QString name;
+    if (!others.empty()) {
+        const DeskWell& other = m_model.well(others.front());
+        name = QFileInfo(other.path).fileName();
+        if (other.analysis) {
+            const std::size_t rows = other.analysis->sections.size();
+            const auto& path = other.analysis->sections.path();
+            depth_m.reserve(rows);
+            for (std::size_t row = 0; row < rows; ++row) {
+                const double md = m_model.matchedDepth_m(others.front(), m_well, path[row].md);
+                if (!std::isfinite(md)) break;  // no match yet
+                depth_m.push_back(md);
+            }
+            if (depth_m.size() == rows) analysis = other.analysis;
+        }
+    }
+    if (!analysis) depth_m.clear();
+    if (analysis == m_otherAnalysis && depth_m == m_otherDepth_m) return false;
+    m_otherAnalysis = analysis;
+    m_otherDepth_m = std::move(depth_m);
+    m_otherName = name;
+    using reconstruction::SectionMeasure;
+    const std::size_t rows = m_otherAnalysis ? m_otherDepth_m.size() : 0;
+    const SectionMeasure* sections = m_otherAnalysis ? m_otherAnalysis->sections.data() : nullptr;
+    m_otherDmin_mm =
+        sections ? RowCurve::field(sections, &SectionMeasure::dmin_mm, rows) : RowCurve();
+    m_otherDmax_mm =
+        sections ? RowCurve::field(sections, &SectionMeasure::dmax_mm, rows) : RowCurve();
+    return true;
 }
 
 void LogTrackDock::loadCurves(const reconstruction::WellAnalysis& analysis) {
@@ -293,6 +331,12 @@ void LogTrackDock::redraw() {
     // the dashes show both it and the diameters under it.
     addCurve(m_dmax_mm, "dmax", QPen(Qt::black, 1.2));
     addCurve(m_dmin_mm, "dmin", QPen(QColor(0x00, 0x9E, 0x73), 1.2));
+    if (m_otherAnalysis) {  // another run of the well at the matched depths, dashed
+        addCurve(m_otherDepth_m, m_otherDmax_mm, m_otherName + " dmax",
+                 QPen(QColor(0xCC, 0x79, 0xA7), 1.2, Qt::DashLine));
+        addCurve(m_otherDepth_m, m_otherDmin_mm, m_otherName + " dmin",
+                 QPen(QColor(0xD5, 0x5E, 0x00), 1.2, Qt::DashLine));
+    }
     addCurve(m_bit_mm, "bit size", QPen(QColor(0x56, 0xB4, 0xE9), 1.5, Qt::DashLine));
     addPicks();
     m_chart->addSeries(m_cursor);  // last: drawn over the rest
@@ -372,8 +416,13 @@ void LogTrackDock::addBands() {
 }
 
 void LogTrackDock::addCurve(const RowCurve& values, const QString& name, const QPen& pen) {
+    addCurve(m_depth_m, values, name, pen);
+}
+
+void LogTrackDock::addCurve(const RowCurve& depth_m, const RowCurve& values, const QString& name,
+                            const QPen& pen) {
     for (const TraceRun& run :
-         decimateTrace(m_depth_m, values, top_m(), bottom_m(), m_drawnHeight_px)) {
+         decimateTrace(depth_m, values, top_m(), bottom_m(), m_drawnHeight_px)) {
         auto* series = new QLineSeries;
         QVector<QPointF> points;
         points.reserve(int(run.size()));

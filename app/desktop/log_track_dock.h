@@ -70,6 +70,9 @@ private:
     void redraw();  // the curves and bands of the depth window
     void addBands();
     void addCurve(const RowCurve& values, const QString& name, const QPen& pen);
+    void addCurve(const RowCurve& depth_m, const RowCurve& values, const QString& name,
+                  const QPen& pen);
+    bool loadOtherRun();  // the other run's traces; true when they changed
     void addPicks();
     void moveCursor();
     void follow(double md_m);  // scrolls so that md_m is in view
@@ -94,6 +97,12 @@ private:
     // thinned for each window.
     RowCurve m_depth_m, m_dmin_mm, m_dmax_mm, m_bit_mm;
     std::vector<io::Pick> m_picks;  // the current well's image-log picks
+    // Another run of the current well (DeskModel::otherRuns, the first): its dmin and dmax
+    // at its rows' depths matched into the current well's (dashed), once the match is known.
+    std::shared_ptr<const reconstruction::WellAnalysis> m_otherAnalysis;
+    std::vector<double> m_otherDepth_m;  // its rows' depths in the current well's depths
+    RowCurve m_otherDmin_mm, m_otherDmax_mm;
+    QString m_otherName;
     int m_drawnHeight_px = 0;
     double m_valueLow_mm = 150.0, m_valueHigh_mm = 300.0;  // the diameters shown, padded
     int m_fittedWidth_px = 0;                              // fitValueAxis's plot width

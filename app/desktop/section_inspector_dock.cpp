@@ -5,6 +5,7 @@
 #include <vector>
 
 #include <QBoxLayout>
+#include <QFileInfo>
 #include <QFormLayout>
 #include <QLabel>
 #include <QResizeEvent>
@@ -52,7 +53,7 @@ constexpr int kAxisPoints = 33;  // along each ellipse axis
 // The series' colours, named once for the plot and its key.
 const QColor kBitColour(150, 150, 150), kEllipseColour(230, 140, 20), kMajorColour(200, 60, 30),
     kMinorColour(40, 120, 200), kSplineColour(20, 20, 20), kNorthColour(30, 150, 60),
-    kHighSideColour(150, 60, 170);
+    kHighSideColour(150, 60, 170), kOtherRunColour(0, 114, 178);
 
 QString keyText() {
     const auto item = [](const QColor& c, const char* mark, const char* name) {
@@ -65,7 +66,8 @@ QString keyText() {
                        item(kMinorColour, "\u2014", "minor axis"),
                        item(kBitColour, "- -", "bit size"),
                        item(kNorthColour, "\u2014", "north"),
-                       item(kHighSideColour, "\u2014", "high side")}
+                       item(kHighSideColour, "\u2014", "high side"),
+                       item(kOtherRunColour, "- -", "another run of the well")}
         .join(" &nbsp; ");
 }
 
@@ -144,6 +146,8 @@ void SectionInspectorDock::buildChart() {
     addSeries(new QLineSeries, "ellipse", QColor(230, 140, 20), 1.5);
     addSeries(new QLineSeries, "major axis", QColor(200, 60, 30), 1.5);
     addSeries(new QLineSeries, "minor axis", QColor(40, 120, 200), 1.5);
+    addSeries(new QLineSeries, "other run", kOtherRunColour, 2.0)
+        ->setPen(QPen(kOtherRunColour, 2.0, Qt::DashLine));
     addSeries(new QLineSeries, "spline", QColor(20, 20, 20), 2.0);
     addSeries(new QLineSeries, "north", QColor(30, 150, 60), 2.0);
     addSeries(new QLineSeries, "high side", QColor(150, 60, 170), 2.0);
@@ -184,6 +188,9 @@ QXYSeries* SectionInspectorDock::series(const QString& name) const {
 void SectionInspectorDock::refresh() {
     const DeskWell* well = m_model->current();
     m_outline = reconstruction::SectionOutline{};
+    m_otherOutline = reconstruction::SectionOutline{};
+    m_otherWell = -1;
+    m_otherDepth_m = io::kNaN;
     if (well && well->geometry) {
         // North where it is known, else the high side (an inclined hole without azimuth whose
         // arm 1 came from RB).
@@ -193,21 +200,47 @@ void SectionInspectorDock::refresh() {
                                    ? reconstruction::AngleReference::North
                                    : reconstruction::AngleReference::HighSide;
         m_outline = reconstruction::sectionOutline(*well->geometry, row, reference, kSplineSamples);
+        otherRunOutline(reference);
     }
     showOutline();
     showNumbers();
+}
+
+// Another run of the current well (the main run, or the main run's first other run) at the
+// depth matched to the current one, about its own tool axis from the same reference.
+void SectionInspectorDock::otherRunOutline(reconstruction::AngleReference reference) {
+    const int current = m_model->currentWell();
+    const std::vector<int> others = m_model->otherRuns(current);
+    if (others.empty()) return;
+    m_otherWell = others.front();
+    const DeskWell& other = m_model->well(m_otherWell);
+    m_otherDepth_m = m_model->matchedDepth_m(current, m_otherWell, m_model->currentDepth_m());
+    if (!other.geometry || !std::isfinite(m_otherDepth_m)) return;
+    const std::vector<double>& md = other.geometry->table().depth_m;
+    if (md.empty() || m_otherDepth_m < md.front() || m_otherDepth_m > md.back()) return;
+    const std::size_t row = DeskModel::nearestRow(*other.geometry, m_otherDepth_m);
+    if (!reconstruction::referenceKnown(*other.geometry, row, reference)) return;
+    m_otherOutline =
+        reconstruction::sectionOutline(*other.geometry, row, reference, kSplineSamples);
 }
 
 void SectionInspectorDock::showOutline() {
     const reconstruction::SectionOutline& o = m_outline;
     std::vector<PolarPoint> ellipse;
     if (o.measured) ellipse = reconstruction::ellipsePoints(o.ellipse, kSplineSamples);
-    const double range = radialRange(o, ellipse);
+    // The other run's outline in view too.
+    std::vector<PolarPoint> shown = ellipse;
+    if (m_otherOutline.measured)
+        shown.insert(shown.end(), m_otherOutline.spline.begin(), m_otherOutline.spline.end());
+    const double range = radialRange(o, shown);
     m_radius->setRange(0.0, range);
     QList<QPointF> pads;
     for (const PolarPoint& p : o.pads) pads.append({p.angle_deg, p.radius_mm});
     m_series.at("pads")->replace(pads);
     m_series.at("spline")->replace(polarPolyline(o.spline, true));
+    m_series.at("other run")
+        ->replace(m_otherOutline.measured ? polarPolyline(m_otherOutline.spline, true)
+                                          : QList<QPointF>{});
     m_series.at("ellipse")->replace(polarPolyline(ellipse, true));
     const bool axes = o.measured && elongated();
     m_series.at("major axis")
@@ -250,6 +283,29 @@ bool SectionInspectorDock::elongated() const {
            reconstruction::ClassificationRules{}.axisMinElongation_mm;
 }
 
+QString SectionInspectorDock::otherRunText() const {
+    if (m_otherWell < 0) return {};
+    const DeskWell& other = m_model->well(m_otherWell);
+    const QString name = QFileInfo(other.path).fileName().toHtmlEscaped();
+    // The match's error is on the record of whichever of the two is not the main run.
+    const DeskWell* current = m_model->current();
+    const QString error = !other.matchError.isEmpty() ? other.matchError
+                          : current                   ? current->matchError
+                                                      : QString();
+    QString text;
+    if (!std::isfinite(m_otherDepth_m))
+        text = name + (error.isEmpty() ? QString(": depth match not known yet")
+                                       : ": not matched: " + error.toHtmlEscaped());
+    else if (!m_otherOutline.measured)
+        text =
+            QString("%1 at MD %2 m (matched): no section").arg(name).arg(m_otherDepth_m, 0, 'f', 2);
+    else
+        text = QString("<span style='color:%1'>- -</span> %2 at MD %3 m (matched)")
+                   .arg(kOtherRunColour.name(), name)
+                   .arg(m_otherDepth_m, 0, 'f', 2);
+    return "<br><small>" + text + "</small>";
+}
+
 void SectionInspectorDock::setAllValues(const QString& text) {
     for (auto& entry : m_values) entry.second->setText(text);
 }
@@ -265,15 +321,16 @@ void SectionInspectorDock::showNumbers() {
     // Which north the azimuths below are from, and the declination applied
     // (docs/conventions.md, "North").
     const std::string& north = well->geometry->table().north;
-    m_heading->setText(QString("<b>%1</b> at MD %2 m (section %3 of %4)%5")
-                           .arg(well->name.toHtmlEscaped())
-                           .arg(m_model->currentDepth_m(), 0, 'f', 2)
-                           .arg(row + 1)
-                           .arg(well->geometry->table().rowCount())
-                           .arg(north.empty() ? QString()
-                                              : "<br><small>North: " +
-                                                    QString::fromStdString(north).toHtmlEscaped() +
-                                                    "</small>"));
+    m_heading->setText(
+        QString("<b>%1</b> at MD %2 m (section %3 of %4)%5")
+            .arg(well->name.toHtmlEscaped())
+            .arg(m_model->currentDepth_m(), 0, 'f', 2)
+            .arg(row + 1)
+            .arg(well->geometry->table().rowCount())
+            .arg((north.empty() ? QString()
+                                : "<br><small>North: " +
+                                      QString::fromStdString(north).toHtmlEscaped() + "</small>") +
+                 otherRunText()));
     fitHeading();
     if (!well->analysis || row >= well->analysis->sections.size()) {
         setAllValues("analysing...");

@@ -37,11 +37,17 @@ public:
     // text, "no data", "none", "unknown" or "analysing..."; empty for a field not shown.
     QString value(const QString& field) const;
     // The series named "pads", "spline", "ellipse", "major axis", "minor axis", "bit size",
-    // "north", "high side" (null for another name).
+    // "north", "high side", "other run" (null for another name).
     QtCharts::QXYSeries* series(const QString& name) const;
     QtCharts::QPolarChart* chart() const { return m_chart; }
     // The outline plotted (empty when there is no current section).
     const reconstruction::SectionOutline& outline() const { return m_outline; }
+    // Where the current well has other runs (DeskModel::otherRuns): the first of them, its
+    // outline at the matched depth (series "other run", dashed) and that depth; -1, empty and
+    // NaN otherwise.
+    int otherWell() const { return m_otherWell; }
+    const reconstruction::SectionOutline& otherOutline() const { return m_otherOutline; }
+    double otherDepth_m() const { return m_otherDepth_m; }
 
     static constexpr int kSplineSamples = 180;  // of the plotted spline and ellipse
 
@@ -56,6 +62,8 @@ private:
     void buildChart();
     void buildNumbers(QWidget* panel);
     void showOutline();
+    void otherRunOutline(reconstruction::AngleReference reference);
+    QString otherRunText() const;
     void showNumbers();
     void setAllValues(const QString& text);
     bool elongated() const;  // whether the section has a major axis to draw
@@ -72,6 +80,9 @@ private:
     std::map<QString, QLabel*> m_values;  // by report field
     QLabel* m_heading = nullptr;
     reconstruction::SectionOutline m_outline;
+    reconstruction::SectionOutline m_otherOutline;
+    int m_otherWell = -1;
+    double m_otherDepth_m = 0.0;
 };
 
 }  // namespace caliper3d::app

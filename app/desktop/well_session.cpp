@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include <QApplication>
 #include <QElapsedTimer>
@@ -15,6 +16,7 @@
 #include "app/desktop/retired_loads.h"
 #include "io/picks_reader.h"
 #include "io/warnings_text.h"
+#include "reconstruction/analysis/run_change.h"
 #include "reconstruction/analysis/wall_colour_request.h"
 #include "reconstruction/load/well_load_pipeline.h"
 #include "scenegraph/picture_scale.h"
@@ -105,6 +107,47 @@ int WellSession::openWell(const WellSource& source, const LoadOptions& options) 
 
 int WellSession::addWell(const QString& path, const LoadOptions& options) {
     return addWell(WellSource{path.toStdString(), {}, {}, {}}, options);
+}
+
+int WellSession::addRun(const WellSource& source, const LoadOptions& options, int mainId) {
+    const int id = addWell(source, options);
+    const int main = m_model.indexOf(mainId);
+    if (main < 0 || id == mainId) return id;
+    m_model.setRunOf(main, mainId);
+    m_model.setRunOf(m_model.indexOf(id), mainId);
+    setWellVisible(m_model.indexOf(id), false);
+    return id;
+}
+
+void WellSession::matchRuns(int index) {
+    if (index < 0 || m_model.well(index).runOf < 0) return;
+    const int main = m_model.mainRun(index);
+    std::vector<int> runs = m_model.otherRuns(main);
+    for (const int run : runs) {
+        const DeskWell& a = m_model.well(main);
+        const DeskWell& b = m_model.well(run);
+        if (b.mapping || !b.matchError.isEmpty() || !a.analysis || !b.analysis) continue;
+        DeskWell record = b;
+        try {
+            record.mapping = reconstruction::matchRuns({a.geometry.get(), a.analysis.get()},
+                                                       {b.geometry.get(), b.analysis.get()});
+            emit status(QString("%1 matched to %2: %3 m (%4, correlation %5)")
+                            .arg(b.name, a.name)
+                            .arg(record.mapping->shift_m, 0, 'f', 3)
+                            .arg(QString::fromStdString(record.mapping->curve))
+                            .arg(record.mapping->match.correlation, 0, 'f', 3));
+        } catch (const std::exception& e) {
+            record.matchError = QString::fromStdString(e.what());
+            emit status(b.name + ": not matched to " + a.name + ": " + record.matchError);
+        }
+        m_model.updateWell(run, std::move(record));
+    }
+}
+
+bool WellSession::allAnalysed() const {
+    for (int i = 0; i < m_model.wellCount(); ++i)
+        if (m_model.well(i).geometry && !m_model.well(i).analysis) return false;
+    return true;
 }
 
 namespace {
@@ -262,6 +305,11 @@ void WellSession::analyse(Well& well) {
         this, record.geometry, options,
         [this, &well](std::shared_ptr<const reconstruction::WellAnalysis> analysis) {
             edit(well, [&analysis](DeskWell& r) { r.analysis = std::move(analysis); });
+            matchRuns(modelIndex(well));
+            // A colouring by change waits for the runs' analyses.
+            if (m_look.colour.quantity == reconstruction::kChangeQuantity && !loading() &&
+                allAnalysed())
+                restyle(m_look.radialExaggeration, m_look.colour);
             emit wellAnalysed(modelIndex(well));
         });
 }
@@ -357,10 +405,18 @@ std::shared_ptr<const reconstruction::WellGeometry> WellSession::geometry(std::s
 }
 
 std::vector<std::string> WellSession::colourQuantities() const {
+    std::vector<std::string> names{"departure", "diameter", "ellipticity", "class", "dls"};
     for (int i = 0; i < m_model.wellCount(); ++i)
-        if (m_model.well(i).geometry)
-            return reconstruction::colourQuantities(m_model.well(i).geometry->table());
-    return {"departure", "diameter", "ellipticity", "class", "dls"};
+        if (m_model.well(i).geometry) {
+            names = reconstruction::colourQuantities(m_model.well(i).geometry->table());
+            break;
+        }
+    for (int i = 0; i < m_model.wellCount(); ++i)
+        if (m_model.well(i).runOf >= 0) {
+            names.insert(names.begin() + 5, reconstruction::kChangeQuantity);
+            break;
+        }
+    return names;
 }
 
 int WellSession::retiredLoadsRunning() const {
@@ -448,7 +504,10 @@ bool WellSession::restyleWells(double radialExaggeration,
     }
     std::vector<std::shared_ptr<const reconstruction::WallColouring>> colourings;
     try {
-        colourings = reconstruction::wallColourings(geometries, colour, values);
+        if (colour.quantity == reconstruction::kChangeQuantity)
+            colourings = changeColourings(colour, onlyId);
+        else
+            colourings = reconstruction::wallColourings(geometries, colour, values);
     } catch (const std::exception& e) {
         QApplication::restoreOverrideCursor();
         emit status(QString::fromStdString(e.what()));
@@ -483,6 +542,40 @@ bool WellSession::restyleWells(double radialExaggeration,
     return true;
 }
 
+// Each chosen well's wall against the run it is compared with: the main run's against its
+// first other run, another run's against the main run (docs/analysis.md, "Colour by change").
+std::vector<std::shared_ptr<const reconstruction::WallColouring>> WellSession::changeColourings(
+    const reconstruction::ColourRequest& colour, int onlyId) {
+    std::vector<std::shared_ptr<const reconstruction::WellGeometry>> geometries;
+    std::vector<reconstruction::RunChange> changes;
+    changes.reserve(m_wells.size());
+    for (const auto& well : m_wells) {
+        const int i = modelIndex(*well);
+        const DeskWell& record = m_model.well(i);
+        if (!record.geometry || (onlyId >= 0 && well->id != onlyId)) continue;
+        const std::vector<int> others = m_model.otherRuns(i);
+        if (others.empty())
+            throw std::invalid_argument(record.name.toStdString() +
+                                        ": no other run of the well to compare with (open runs "
+                                        "with view RUN1 RUN2 --runs)");
+        const DeskWell& other = m_model.well(others.front());
+        if (!record.analysis || !other.analysis || !other.geometry)
+            throw std::invalid_argument(
+                "Wait for the runs to be analysed before colouring by "
+                "change");
+        changes.push_back(
+            reconstruction::measureRunChange({record.geometry.get(), record.analysis.get()},
+                                             {other.geometry.get(), other.analysis.get()},
+                                             fileName(record.source.path).toStdString(),
+                                             fileName(other.source.path).toStdString(), {}, 2));
+        geometries.push_back(record.geometry);
+    }
+    std::vector<const reconstruction::RunChange*> each;
+    each.reserve(changes.size());
+    for (const reconstruction::RunChange& change : changes) each.push_back(&change);
+    return reconstruction::changeColourings(geometries, each, colour.range);
+}
+
 // Once every well is loaded: its colours as asked (a quantity other than the departure from
 // bit size, a range, a well without a bit size) and the legend.
 void WellSession::applyStyleAfterLoad() {
@@ -491,6 +584,8 @@ void WellSession::applyStyleAfterLoad() {
         if (m_model.well(i).geometry) geometries.push_back(m_model.well(i).geometry);
     if (geometries.empty()) return;
     const reconstruction::ColourRequest colour = m_look.colour;
+    // Colouring by change waits for the runs' analyses (the analysis job restyles then).
+    if (colour.quantity == reconstruction::kChangeQuantity && !allAnalysed()) return;
     bool rebuild = colour.quantity != "departure" || colour.range.has_value();
     double exaggeration = m_look.radialExaggeration;
     if (!m_exaggerationKept)  // what render's default picture draws: a hole that reads as a tube

@@ -71,6 +71,11 @@ public:
     // Adds a well to those shown; each loads on its own worker.
     int addWell(const WellSource& source, const LoadOptions& options);
     int addWell(const QString& path, const LoadOptions& options);
+    // Adds another run of the well whose first run is `mainId` (a well's id): it loads as a
+    // well does, hidden (its wall lies on the main run's), is grouped under the main run in
+    // the model (DeskWell::runOf) and, once both are analysed, depth-matched to it
+    // (DeskWell::mapping). docs/user-guide.md, "Runs of one well".
+    int addRun(const WellSource& source, const LoadOptions& options, int mainId);
     // Stops every load under way within a block of the log; the wells not yet loaded are
     // removed (a part of a well is never left drawn as if it were the whole).
     void cancelLoading();
@@ -143,11 +148,15 @@ private:
     template <typename Edit>
     void edit(const Well& well, Edit change);
     void analyse(Well& well);
+    void matchRuns(int modelIndex);  // the depth match of a run to its main run, when due
+    bool allAnalysed() const;
     void wellDone();
     double loadFraction(const Well& well) const;
     void applyStyleAfterLoad();
     bool restyleWells(double radialExaggeration, const reconstruction::ColourRequest& colour,
                       int onlyId);  // -1: every well
+    std::vector<std::shared_ptr<const reconstruction::WallColouring>> changeColourings(
+        const reconstruction::ColourRequest& colour, int onlyId);
 
     DeskModel& m_model;
     std::unique_ptr<RetiredLoads> m_retired;  // declared first: destroyed after the wells

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include <QComboBox>
+#include <QFileInfo>
 #include <QHeaderView>
 #include <QTreeWidget>
 
@@ -23,46 +24,76 @@ WellsDock::WellsDock(DeskModel& model, QWidget* parent)
     connect(&model, &DeskModel::wellsChanged, this, &WellsDock::rebuild);
     connect(&model, &DeskModel::wellChanged, this, &WellsDock::refresh);
     connect(&model, &DeskModel::currentChanged, this, [this](int well) {
-        if (well >= 0 && well < m_tree->topLevelItemCount())
-            m_tree->setCurrentItem(m_tree->topLevelItem(well));
+        if (QTreeWidgetItem* shown = item(well)) m_tree->setCurrentItem(shown);
     });
     connect(m_tree, &QTreeWidget::itemChanged, this, [this](QTreeWidgetItem* item, int column) {
         if (column != Name) return;
-        const int well = m_tree->indexOfTopLevelItem(item);
+        const int well = wellOf(item);
         const bool visible = item->checkState(Name) == Qt::Checked;
         if (well >= 0 && m_model.well(well).visible != visible)
             emit visibilityToggled(well, visible);
     });
     connect(m_tree, &QTreeWidget::itemClicked, this, [this](QTreeWidgetItem* item) {
-        const int well = m_tree->indexOfTopLevelItem(item);
-        if (well != m_model.currentWell()) m_model.setCurrent(well, m_model.currentDepth_m());
+        const int well = wellOf(item);
+        if (well < 0 || well == m_model.currentWell()) return;
+        // Another run of the current well opens at the matched depth.
+        const double matched =
+            m_model.matchedDepth_m(m_model.currentWell(), well, m_model.currentDepth_m());
+        m_model.setCurrent(well, std::isfinite(matched) ? matched : m_model.currentDepth_m());
     });
     rebuild();
+}
+
+QTreeWidgetItem* WellsDock::item(int well) const {
+    return well >= 0 && well < static_cast<int>(m_items.size())
+               ? m_items[static_cast<std::size_t>(well)]
+               : nullptr;
+}
+
+int WellsDock::wellOf(const QTreeWidgetItem* item) const {
+    return item ? item->data(Name, Qt::UserRole).toInt() : -1;
 }
 
 void WellsDock::rebuild() {
     const QSignalBlocker block(m_tree);
     m_tree->clear();
+    m_items.assign(static_cast<std::size_t>(m_model.wellCount()), nullptr);
+    bool grouped = false;
     for (int i = 0; i < m_model.wellCount(); ++i) {
-        auto* item = new QTreeWidgetItem(m_tree);
+        // A run other than the main one goes under its main run (which comes first).
+        const int main = m_model.mainRun(i);
+        QTreeWidgetItem* parent = main != i && main < i ? item(main) : nullptr;
+        auto* entry = parent ? new QTreeWidgetItem(parent) : new QTreeWidgetItem(m_tree);
+        grouped = grouped || parent != nullptr;
+        entry->setData(Name, Qt::UserRole, i);
+        m_items[static_cast<std::size_t>(i)] = entry;
         auto* colour = new QComboBox(m_tree);
         colour->setObjectName(QString("colourBy%1").arg(i));
-        m_tree->setItemWidget(item, Colour, colour);
+        m_tree->setItemWidget(entry, Colour, colour);
         connect(colour, QOverload<int>::of(&QComboBox::activated), this,
                 [this, i, colour](int) { emit colourChosen(i, colour->currentText()); });
-        fill(item, i);
+        fill(entry, i);
     }
+    m_tree->setRootIsDecorated(grouped);
+    m_tree->expandAll();
 }
 
 void WellsDock::refresh(int well) {
-    if (well < 0 || well >= m_tree->topLevelItemCount()) return;
+    if (!item(well)) return;
     const QSignalBlocker block(m_tree);
-    fill(m_tree->topLevelItem(well), well);
+    fill(item(well), well);
 }
 
 void WellsDock::fill(QTreeWidgetItem* item, int well) {
     const DeskWell& w = m_model.well(well);
-    item->setText(Name, w.name);
+    const std::vector<int> others = m_model.otherRuns(well);
+    const bool run = w.runOf >= 0;
+    const bool mainRun = run && m_model.mainRun(well) == well;
+    // Runs are told apart by their files (one well's runs share its name).
+    item->setText(Name, !run ? w.name
+                             : QString("%1 (%2 %3)")
+                                   .arg(w.name, mainRun ? QString("main run,") : QString("run,"),
+                                        QFileInfo(w.path).fileName()));
     item->setToolTip(Name, w.path);
     item->setCheckState(Name, w.visible ? Qt::Checked : Qt::Unchecked);
     auto* colour = qobject_cast<QComboBox*>(m_tree->itemWidget(item, Colour));
@@ -72,6 +103,8 @@ void WellsDock::fill(QTreeWidgetItem* item, int well) {
         if (w.geometry)
             for (const std::string& name : reconstruction::colourQuantities(w.geometry->table()))
                 colour->addItem(QString::fromStdString(name));
+        if (w.geometry && !others.empty())  // against the main run, or the main's first run
+            colour->insertItem(5, reconstruction::kChangeQuantity);
         colour->setCurrentText(QString::fromStdString(w.options.colour.quantity));
         colour->setEnabled(w.geometry != nullptr);
     }
@@ -112,6 +145,17 @@ void WellsDock::fill(QTreeWidgetItem* item, int well) {
                          : w.geometry ? "drawing" + done
                                       : "reading" + done);
     item->setToolTip(State, w.error);
+    if (run && !mainRun && w.error.isEmpty() && w.analysis) {
+        // Its depth match to the main run (as `caliper3d compare MAIN RUN` finds it).
+        if (w.mapping)
+            item->setText(State, QString("matched %1 m (%2, correlation %3)")
+                                     .arg(w.mapping->shift_m, 0, 'f', 3)
+                                     .arg(QString::fromStdString(w.mapping->curve))
+                                     .arg(w.mapping->match.correlation, 0, 'f', 3));
+        else if (!w.matchError.isEmpty())
+            item->setText(State, "not matched");
+        item->setToolTip(State, w.matchError);
+    }
 }
 
 }  // namespace caliper3d::app

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <vector>
+
 #include <QDockWidget>
 
 class QTreeWidget;
@@ -9,7 +11,8 @@ namespace caliper3d::app {
 
 class DeskModel;
 
-// The wells shown: each with a box to show or hide it, what its wall is coloured by, its bit
+// The wells shown, the runs of one well grouped under its main run (their depth match in
+// their state): each with a box to show or hide it, what its wall is coloured by, its bit
 // size and units as read, its rows and depths, and whether it is reading or drawing (with
 // the fraction of its load done), analysing, loaded or failed. Clicking a well makes it the current
 // one.
@@ -19,6 +22,8 @@ class WellsDock : public QDockWidget {
 public:
     explicit WellsDock(DeskModel& model, QWidget* parent = nullptr);
     QTreeWidget* tree() const { return m_tree; }
+    // The item of well i (a record of the model): top level, or under its well's main run.
+    QTreeWidgetItem* item(int well) const;
 
     enum Column { Name, Colour, BitSize, Units, Rows, Depths, State, ColumnCount };
 
@@ -31,8 +36,11 @@ private:
     void refresh(int well);
     void fill(QTreeWidgetItem* item, int well);
 
+    int wellOf(const QTreeWidgetItem* item) const;
+
     DeskModel& m_model;
     QTreeWidget* m_tree = nullptr;
+    std::vector<QTreeWidgetItem*> m_items;  // by well
 };
 
 }  // namespace caliper3d::app

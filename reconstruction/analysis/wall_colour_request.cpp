@@ -132,6 +132,9 @@ std::shared_ptr<const WallColouring> makeWallColouring(const WellGeometry& g,
     if (request.range && !(request.range->first < request.range->second))
         throw std::invalid_argument("--colour-range: LO must be below HI");
 
+    if (name == kChangeQuantity)
+        throw std::invalid_argument(
+            t.source + ": colouring by change needs the other run of the well: --compare-with RUN");
     const io::ExtraCurve* curve = nullptr;
     for (const io::ExtraCurve& c : t.extraCurves)
         if (lower(c.mnemonic) == name) curve = &c;

@@ -17,9 +17,14 @@ namespace caliper3d::reconstruction {
 struct ColourRequest {
     std::string quantity = "departure";
     std::optional<std::pair<double, double>> range;
+    // For "change" (`--compare-with RUN`): the other run of the same well the drawn one is
+    // compared with (docs/analysis.md, "Colour by change"); the window names it itself.
+    std::string compareWith;
 };
+// The quantity of a colouring by change against another run (run_change.h).
+inline constexpr const char* kChangeQuantity = "change";
 inline bool operator==(const ColourRequest& a, const ColourRequest& b) {
-    return a.quantity == b.quantity && a.range == b.range;
+    return a.quantity == b.quantity && a.range == b.range && a.compareWith == b.compareWith;
 }
 inline bool operator!=(const ColourRequest& a, const ColourRequest& b) {
     return !(a == b);
@@ -48,6 +53,8 @@ std::vector<std::string> colourQuantities(const io::SectionTable& table);
 // legend says so. Throws std::invalid_argument naming the valid quantities for an unknown
 // one, or for a range that is empty or (for departures) does not hold 0.
 // `values`: the well's sectionValues when already computed (null: computed here when needed).
+// "change" needs the other run: it is made by changeColouring (run_change.h), and here throws
+// std::invalid_argument saying so.
 std::shared_ptr<const WallColouring> makeWallColouring(const WellGeometry& geometry,
                                                        const ColourRequest& request,
                                                        const SectionValues* values = nullptr,

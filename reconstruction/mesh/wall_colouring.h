@@ -20,6 +20,12 @@ struct ColourLegend {
     std::string note;           // e.g. what stands in for a missing bit size
     std::vector<std::pair<std::string, std::uint32_t>> categories;  // categorical maps
     bool noValue = false;  // some drawn sections have no value: they show kNoValueColour
+    // What the centre of a diverging map stands for ("no change"); empty: the bit, or the
+    // gauge where a note says what stands in for it.
+    std::string centre;
+    // What a section without a value means ("not compared: ..."); empty: "no value". A
+    // '\n' starts a new line of the legend.
+    std::string noValueText;
 };
 
 // The wall's colour at each point: a departure of the point's radius from a reference

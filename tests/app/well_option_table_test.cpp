@@ -47,6 +47,7 @@ const std::map<std::string, std::vector<std::string>>& samples() {
         {"tool-reach", {"10in", "84.66666666666667mm"}},
         {"colour-by", {"GR", "ellipticity", " dls "}},
         {"colour-range", {"-10.125,13.333333333333334", "0,0.5"}},
+        {"compare-with", {"run1.las", "/data/first run.las"}},
         {"survey", {"surveys/a survey.csv", "/data/-odd.csv"}},
         {"wellhead", {"512300.25,6801200.5,25.5", "0,0,-3", "1e6,-2.5,0"}},
     };

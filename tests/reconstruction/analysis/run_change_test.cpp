@@ -1,0 +1,195 @@
+// Colouring one run's wall by its change against another run of the same well: a synthetic
+// pair with known differences (a deeper counter, a tool turned 90 degrees, a washout 10 mm
+// wider in the drawn run).
+#include "reconstruction/analysis/run_change.h"
+
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+#include <utility>
+
+#include <gtest/gtest.h>
+
+#include "reconstruction/mesh/colour_map.h"
+#include "reconstruction/synthetic/synthetic_well.h"
+#include "reconstruction/well_interval.h"
+
+using namespace caliper3d;
+using namespace caliper3d::reconstruction;
+
+namespace {
+
+using Kind = SyntheticFeature::Kind;
+
+// The equivalent diameter of a 48-gon inscribed in a circle of diameter d is d times this.
+const double kInscribed = std::sqrt(24.0 * std::sin(2.0 * M_PI / 48.0) / M_PI);
+
+struct Run {
+    std::shared_ptr<const WellGeometry> geometry;
+    WellAnalysis analysis;
+    ComparedRun compared() const { return {geometry.get(), &analysis}; }
+};
+
+Run analyse(const SyntheticWellSpec& spec) {
+    Run r;
+    auto table = std::make_shared<const io::SectionTable>(makeSyntheticWell(spec));
+    r.geometry = std::make_shared<const WellGeometry>(table, GeometryOptions{});
+    r.analysis = analyseWell(*r.geometry, AnalysisOptions{});
+    return r;
+}
+
+// The other run: 150 m of vertical hole every 5 cm, 24 arms, a gamma ray, a round washout of
+// 265.9 mm over 100-102 m.
+SyntheticWellSpec otherRun() {
+    SyntheticWellSpec spec;
+    spec.length_m = 150.0;
+    spec.step_m = 0.05;
+    spec.armCount = 24;
+    spec.gammaRay = true;
+    spec.features.push_back({Kind::Washout, 100.0, 102.0, 265.9, 265.9, 0.0, 0.0});
+    return spec;
+}
+
+// The drawn run: its counter 0.35 m deeper, its tool 90 degrees round, the washout 10 mm
+// wider (as `synth --depth-offset 0.35 --tool-azimuth 90 --widen 10`).
+SyntheticWellSpec drawnRun() {
+    SyntheticWellSpec spec = otherRun();
+    spec.depthOffset_m = 0.35;
+    spec.initialToolAzimuth_deg = 90.0;
+    spec.features[0].dmax_mm += 10.0;
+    spec.features[0].dmin_mm += 10.0;
+    return spec;
+}
+
+struct Pair {
+    Run drawn = analyse(drawnRun());
+    Run other = analyse(otherRun());
+    RunChange change = measureRunChange(drawn.compared(), other.compared(), "run2.las", "run1.las");
+};
+
+std::size_t rowAt(const WellGeometry& g, double md) {
+    return static_cast<std::size_t>(std::lround((md - g.table().depth_m.front()) / 0.05));
+}
+
+const Pair& pair() {
+    static const Pair kPair;
+    return kPair;
+}
+
+}  // namespace
+
+TEST(RunChangeTest, TheWidenedWashoutReadsItsChangeAndTheRestNone) {
+    const Pair& p = pair();
+    EXPECT_NEAR(p.change.mapping.shift_m, -0.35, 0.01);  // the other run reads 0.35 m shallower
+    const WellGeometry& g = *p.drawn.geometry;
+    const std::vector<float> change = changeAtDepths(p.change, g.table().depth_m);
+    ASSERT_EQ(change.size(), g.table().rowCount());
+    std::size_t inWashout = 0, unchanged = 0;
+    for (std::size_t row = 0; row < change.size(); ++row) {
+        const double md = g.table().depth_m[row];
+        if (md > 100.45 && md < 102.25) {  // the washout, in the drawn run's depths
+            EXPECT_NEAR(change[row], kInscribed * 10.0, 0.5) << md;
+            ++inWashout;
+        } else if (md > 0.4 && (md < 100.2 || md > 102.5)) {
+            EXPECT_NEAR(change[row], 0.0, 0.5) << md;
+            ++unchanged;
+        }
+    }
+    EXPECT_GT(inWashout, 30u);
+    EXPECT_GT(unchanged, 2900u);  // of 3001 rows
+}
+
+TEST(RunChangeTest, AboveTheOverlapThereIsNoChangeAndTheWallTakesTheNoValueColour) {
+    const Pair& p = pair();
+    const WellGeometry& g = *p.drawn.geometry;
+    const auto colouring = changeColouring(g, p.change);
+    // Both runs wrote 0-150 m; the drawn run's 0-0.30 m lie above the other's first depth
+    // (0.35 m shallower), so they are beyond the overlap.
+    std::size_t beyond = 0;
+    for (std::size_t row = 0; row < g.table().rowCount(); ++row) {
+        const double md = g.table().depth_m[row];
+        if (md > 0.32 && md < 0.38) continue;  // the overlap's edge, within the match's 1 cm
+        const float value = changeAtDepths(p.change, {md}).front();
+        if (md < 0.35) {
+            EXPECT_TRUE(std::isnan(value)) << md;
+            EXPECT_EQ(colouring->colour(row, 110.0), kNoValueColour) << md;
+            ++beyond;
+        } else {
+            EXPECT_FALSE(std::isnan(value)) << md;
+            EXPECT_NE(colouring->colour(row, 110.0), kNoValueColour) << md;
+        }
+    }
+    EXPECT_EQ(beyond, 7u);
+    EXPECT_TRUE(colouring->legend().noValue);
+}
+
+TEST(RunChangeTest, TheWallIsColouredOnTheDivergingMapSymmetricAboutNoChange) {
+    const Pair& p = pair();
+    const WellGeometry& g = *p.drawn.geometry;
+    const auto colouring = changeColouring(g, p.change);
+    const ColourLegend& legend = colouring->legend();
+    EXPECT_EQ(legend.kind, ColourMapKind::Diverging);
+    EXPECT_DOUBLE_EQ(legend.lo, -legend.hi);
+    // 40 of 3001 rows changed by ~10 mm: the 98th percentile of |change| is under the
+    // repeatability limit (24 arms: 3 mm), which the range keeps.
+    EXPECT_DOUBLE_EQ(legend.hi, 3.0);
+    EXPECT_EQ(legend.title, "run2.las minus run1.las");
+    EXPECT_EQ(legend.unit, "mm");
+    EXPECT_EQ(legend.centre, "no change");
+    const std::size_t washout = rowAt(g, 101.3);
+    const std::size_t gauge = rowAt(g, 50.0);
+    // The widened washout at the red end (beyond the range: clamped), the gauge hole grey.
+    EXPECT_EQ(colouring->colour(washout, 137.95), divergingColour(1.0));
+    const float atGauge = changeAtDepths(p.change, {g.table().depth_m[gauge]}).front();
+    EXPECT_EQ(colouring->colour(gauge, 107.95),
+              divergingColour(mapPosition(ColourMapKind::Diverging, atGauge, -3.0, 3.0)));
+    EXPECT_NEAR(mapPosition(ColourMapKind::Diverging, atGauge, -3.0, 3.0), 0.5, 0.05);
+    // A range given is kept, and must hold no change.
+    const auto given = changeColouring(g, p.change, std::make_pair(-20.0, 20.0));
+    EXPECT_EQ(given->legend().range, "given");
+    EXPECT_EQ(given->colour(washout, 0.0),
+              divergingColour(mapPosition(
+                  ColourMapKind::Diverging,
+                  changeAtDepths(p.change, {g.table().depth_m[washout]}).front(), -20.0, 20.0)));
+    EXPECT_THROW(changeColouring(g, p.change, std::make_pair(2.0, 20.0)), std::invalid_argument);
+}
+
+TEST(RunChangeTest, AnIntervalOfTheDrawnRunTakesTheChangesOfItsDepths) {
+    const Pair& p = pair();
+    const WellGeometry& g = *p.drawn.geometry;
+    const auto interval = intervalGeometry(g, 99.0, 104.0, g.options());
+    const std::vector<float> whole = changeAtDepths(p.change, g.table().depth_m);
+    const std::vector<float> part = changeAtDepths(p.change, interval->table().depth_m);
+    ASSERT_EQ(part.size(), interval->table().rowCount());
+    for (std::size_t row = 0; row < part.size(); ++row) {
+        const std::size_t same =
+            static_cast<std::size_t>(std::lround(interval->table().depth_m[row] / 0.05));
+        EXPECT_EQ(part[row], whole[same]) << interval->table().depth_m[row];
+    }
+}
+
+TEST(RunChangeTest, ChangesOfSeveralWellsShareOneSymmetricRange) {
+    const Pair& p = pair();
+    // The other run against itself: no change anywhere (the match finds a shift of about 0).
+    const RunChange none =
+        measureRunChange(p.other.compared(), p.other.compared(), "run1.las", "run1.las");
+    ASSERT_GT(none.compared, 2900u);
+    for (const float v : none.change_mm)
+        if (std::isfinite(v)) {
+            EXPECT_NEAR(v, 0.0, 0.01);  // the match is found to a sub-step shift, ~0
+        }
+    const RunChange widened = runChangeOf(compareRuns(p.drawn.compared(), p.other.compared(),
+                                                      [&] {
+                                                          RunComparisonOptions o;
+                                                          o.mapping = p.change.mapping;
+                                                          o.repeatability95_mm = 3.0;
+                                                          return o;
+                                                      }()),
+                                          "run2.las", "run1.las");
+    const auto shared =
+        changeColourings({p.other.geometry, p.drawn.geometry}, {&none, &widened}, std::nullopt);
+    ASSERT_EQ(shared.size(), 2u);
+    EXPECT_DOUBLE_EQ(shared[0]->legend().hi, shared[1]->legend().hi);
+    EXPECT_DOUBLE_EQ(shared[0]->legend().lo, -shared[0]->legend().hi);
+    EXPECT_NE(shared[0]->legend().range.find("over all 2 wells"), std::string::npos);
+}
