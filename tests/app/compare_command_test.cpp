@@ -105,6 +105,8 @@ TEST(CompareCommandTest, FindsTheShiftTheWiderBreakoutAndTheNewWashout) {
         if (md > 20.1 && md < 24.9) {
             EXPECT_NEAR(table.number(i, "d_dmax_mm"), 10.0, 0.5) << md;
             EXPECT_EQ(table.rows[i].at("significant"), "yes") << md;
+            EXPECT_NEAR(table.number(i, "max_growth_mm"), 5.0, 0.5) << md;
+            EXPECT_EQ(table.rows[i].at("note"), "") << md;
         }
         if (md > 50.1 && md < 51.9) {
             EXPECT_EQ(table.rows[i].at("class2"), "washout") << md;
@@ -112,6 +114,12 @@ TEST(CompareCommandTest, FindsTheShiftTheWiderBreakoutAndTheNewWashout) {
         if (md > 30.0 && md < 45.0) {
             EXPECT_EQ(table.rows[i].at("d_deq_mm"), "0.00") << md;
             EXPECT_EQ(table.rows[i].at("significant"), "no") << md;
+            // Unchanged: the outlines are not compared, and the row says so.
+            EXPECT_EQ(table.rows[i].at("max_growth_mm"), "") << md;
+            EXPECT_EQ(table.rows[i].at("note"),
+                      "outline not compared: diameters within 1.50 mm and major axis within 10 "
+                      "deg")
+                << md;
         }
     }
     const Csv zoneTable = readCsv(zones);
@@ -132,6 +140,25 @@ TEST(CompareCommandTest, FindsTheShiftTheWiderBreakoutAndTheNewWashout) {
     EXPECT_NEAR(summary["comparison"]["shift_m"].get<double>(), 0.35, 0.01);
     EXPECT_EQ(summary["comparison"]["agree"], false);
     EXPECT_EQ(summary["comparison"]["zones"].size(), 2u);
+}
+
+TEST(CompareCommandTest, AllOutlinesComparesTheWallAtEveryOrientedSection) {
+    const auto dir = caliper3d::test::freshScratchFolder("compare_all_outlines");
+    const std::string run1 = writeRun(dir, "run1.las", firstRun());
+    const std::string run2 = writeRun(dir, "run2.las", secondRun());
+    const auto csv = dir / "change.csv";
+    const CommandRun r =
+        runCaliper3d("compare " + run1 + " " + run2 + " --all-outlines -o " + csv.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    const Csv table = readCsv(csv);
+    ASSERT_EQ(table.rows.size(), 1594u);
+    for (std::size_t i = 0; i < table.rows.size(); ++i) {
+        const double md = table.number(i, "md_m");
+        EXPECT_EQ(table.rows[i].at("note"), "") << md;
+        if (md > 30.0 && md < 45.0) {
+            EXPECT_NEAR(table.number(i, "max_growth_mm"), 0.0, 0.05) << md;
+        }
+    }
 }
 
 TEST(CompareCommandTest, ARunAgainstItselfAgreesWithZeroChange) {
