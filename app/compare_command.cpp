@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <future>
 #include <iostream>
 #include <thread>
 
@@ -49,6 +50,10 @@ void addCompareOptions(QCommandLineParser& p) {
                  "MM"});
     p.addOption({"keep-bias",
                  "Do not remove each run's reading offset in casing of known inner diameter."});
+    p.addOption({"all-outlines",
+                 "Compare the wall at every azimuth on every oriented section (default: only "
+                 "where a diameter changed by more than half the repeatability or the major "
+                 "axis turned by more than 10 degrees; elsewhere the note says so)."});
     p.addOption({"threads", "Analysis threads (default: the machine's cores).", "N"});
 }
 
@@ -122,6 +127,7 @@ nlohmann::ordered_json comparisonJson(const reconstruction::RunComparison& r) {
             {"sections", r.sections.size()},
             {"compared", r.compared},
             {"oriented", r.oriented},
+            {"outlines_skipped", r.outlinesSkipped},
             {"bias_mm", {finite(r.bias1.offset_mm), finite(r.bias2.offset_mm)}},
             {"repeatability_mm", r.repeatability95_mm},
             {"significant", r.significant},
@@ -143,15 +149,24 @@ void compareWells(VerbParser& verb, const std::vector<WellSource>& wells, InputS
     LoadOptions load = inputOptionsFrom(p);
     reconstruction::AnalysisOptions analysis;
     analysis.threads = threadsFrom(p);
-    load.readThreads = std::min(2, analysis.threads);
     load.geometryWarnings = false;
-    const AnalysedRun run1 = analyseRun(wells[0], load, analysis);
-    const AnalysedRun run2 = analyseRun(wells[1], load, analysis);
+    // The two runs are read and analysed side by side, each on half the threads: a run's path
+    // is built on one thread, which the other run's read can use meanwhile.
+    const int half = std::max(1, analysis.threads / 2);
+    load.readThreads = std::min(2, half);
+    reconstruction::AnalysisOptions each = analysis;
+    each.threads = half;
+    std::future<AnalysedRun> second =
+        std::async(analysis.threads > 1 ? std::launch::async : std::launch::deferred,
+                   [&] { return analyseRun(wells[1], load, each); });
+    const AnalysedRun run1 = analyseRun(wells[0], load, each);
+    const AnalysedRun run2 = second.get();
 
     reconstruction::RunComparisonOptions options;
     options.mapping = depthMapping(verb, run1, run2);
     options.removeBias = !verb.isSet("keep-bias");
     options.threads = analysis.threads;
+    options.outlineGate = verb.isSet("all-outlines") ? 0.0 : reconstruction::kCompareOutlineGate;
     options.repeatability95_mm =
         verb.isSet("repeatability")
             ? number(verb, "repeatability", true)
@@ -163,9 +178,9 @@ void compareWells(VerbParser& verb, const std::vector<WellSource>& wells, InputS
 
     const std::string out = verb.value("output"), zones = verb.value("zones");
     if (out == "-")
-        reconstruction::writeComparisonCsv(std::cout, r);
+        reconstruction::writeComparisonCsv(std::cout, r, analysis.threads);
     else
-        reconstruction::writeComparisonCsv(out, r);
+        reconstruction::writeComparisonCsv(out, r, analysis.threads);
     if (zones == "-")
         reconstruction::writeZoneChanges(std::cout, r);
     else if (!zones.empty())

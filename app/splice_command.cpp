@@ -13,6 +13,7 @@
 #include "app/input_options.h"
 #include "app/input_summary.h"
 #include "app/verb_parser.h"
+#include "io/casing_program.h"
 #include "io/las_writer.h"
 #include "io/number_parsing.h"
 #include "reconstruction/analysis/match_curve.h"
@@ -158,6 +159,8 @@ void spliceWells(VerbParser& verb, const std::vector<WellSource>& wells,
     const std::string joins = describeJoins(log, files);
     io::LasWriteOptions las;
     las.wellName = tables.front()->wellName.empty() ? "CALIPER3D" : tables.front()->wellName;
+    // Each run's casing program over its own rows (readCasingProgram reads it back).
+    las.parameters = io::casingParameters(log.table.casing);
     las.other = "Spliced by caliper3d splice from " + std::to_string(files.size()) +
                 " runs; depths are the first run's.\n" + joins;
     const std::string out = verb.value("output");

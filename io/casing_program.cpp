@@ -144,7 +144,10 @@ double nominalCasingId_mm(double size_mm, double weight_kgPerM) {
     return kNaN;
 }
 
-std::vector<CasingString> readCasingProgram(const LasHeader& h, const std::string& file,
+namespace {
+
+// The header's current casing (the plain mnemonics); empty when it gives no shoe.
+std::vector<CasingString> readCurrentCasing(const LasHeader& h, const std::string& file,
                                             Diagnostics* diagnostics) {
     CasingString c;
     std::string bottomFrom, driller;
@@ -194,6 +197,100 @@ std::vector<CasingString> readCasingProgram(const LasHeader& h, const std::strin
     if (const LasItem* i = item(h, "CSGT")) c.type = i->value;
     c.innerDiameter_mm = nominalCasingId_mm(c.size_mm, c.weight_kgPerM);
     return {c};
+}
+
+// "FROM, TO" of a CSRG[n] item in metres; false with a warning when it is not two numbers of a
+// length unit.
+bool readInterval(const LasItem& i, double& from_m, double& to_m, const std::string& file,
+                  Diagnostics* diagnostics) {
+    const std::vector<std::string> p = parts(i.value);
+    const auto unit = parseLengthUnit(i.unit);
+    double a = 0.0, b = 0.0;
+    if (p.size() != 2 || !unit || !parseNumber(p[0], a) || !parseNumber(p[1], b) || !(a <= b)) {
+        if (diagnostics)
+            diagnostics->warn(file, i.line,
+                              i.mnemonic + " '" + i.value +
+                                  "' is not two depths FROM, TO with a length unit; the casing "
+                                  "is taken to hold over the whole log");
+        return false;
+    }
+    // One factor (exactly 1 for metres), so that a depth written in metres reads back as the
+    // very row depth it was written from.
+    const double toMetres = toMillimetres(*unit) / 1000.0;
+    from_m = a * toMetres;
+    to_m = b * toMetres;
+    return true;
+}
+
+// The numbered strings CSGL[n] ..., from n = 1 to the first without a shoe.
+void readNumberedCasing(const LasHeader& h, const std::string& file, Diagnostics* diagnostics,
+                        std::vector<CasingString>& out) {
+    for (int n = 1;; ++n) {
+        const std::string k = "[" + std::to_string(n) + "]";
+        const LasItem* shoe = item(h, ("CSGL" + k).c_str());
+        const double bottom = shoe ? length(h, *shoe, 1000.0, file, diagnostics) : kNaN;
+        if (!std::isfinite(bottom)) return;
+        CasingString c;
+        c.bottom_m = bottom;
+        c.source = "~Parameter CSGL" + k;
+        if (const LasItem* i = item(h, ("CSGS" + k).c_str())) {
+            c.size_mm = length(h, *i, 1.0, file, diagnostics);
+            if (std::isfinite(c.size_mm)) c.source += ", CSGS" + k;
+        }
+        if (const LasItem* i = item(h, ("CSGW" + k).c_str())) {
+            c.weight_kgPerM = positiveValue(h, *i, file, diagnostics) * massPerLength(i->unit);
+            if (std::isfinite(c.weight_kgPerM)) c.source += ", CSGW" + k;
+        }
+        if (const LasItem* i = item(h, ("CSID" + k).c_str())) {
+            c.innerDiameter_mm = length(h, *i, 1.0, file, diagnostics);
+            if (std::isfinite(c.innerDiameter_mm)) c.source += ", CSID" + k;
+        }
+        if (!std::isfinite(c.innerDiameter_mm))
+            c.innerDiameter_mm = nominalCasingId_mm(c.size_mm, c.weight_kgPerM);
+        if (const LasItem* i = item(h, ("CSGT" + k).c_str())) c.type = i->value;
+        if (const LasItem* i = item(h, ("CSRG" + k).c_str()))
+            if (readInterval(*i, c.appliesFrom_m, c.appliesTo_m, file, diagnostics))
+                c.source += ", CSRG" + k;
+        out.push_back(c);
+    }
+}
+
+// The shortest text that reads back to the same double, whatever the locale.
+std::string exact(double v) {
+    char buffer[32];
+    return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, v).ptr);
+}
+
+}  // namespace
+
+std::vector<CasingString> readCasingProgram(const LasHeader& h, const std::string& file,
+                                            Diagnostics* diagnostics) {
+    std::vector<CasingString> out = readCurrentCasing(h, file, diagnostics);
+    readNumberedCasing(h, file, diagnostics, out);
+    return out;
+}
+
+std::vector<LasParameter> casingParameters(const std::vector<CasingString>& program) {
+    std::vector<LasParameter> out;
+    for (std::size_t n = 0; n < program.size(); ++n) {
+        const CasingString& c = program[n];
+        if (!std::isfinite(c.bottom_m)) continue;
+        const std::string k = "[" + std::to_string(n + 1) + "]";
+        const std::string of = ", string " + std::to_string(n + 1);
+        out.push_back({"CSGL" + k, "M", exact(c.bottom_m), "casing shoe depth" + of});
+        if (std::isfinite(c.size_mm))
+            out.push_back({"CSGS" + k, "MM", exact(c.size_mm), "casing outer diameter" + of});
+        if (std::isfinite(c.weight_kgPerM))
+            out.push_back({"CSGW" + k, "KG/M", exact(c.weight_kgPerM), "casing weight" + of});
+        if (std::isfinite(c.innerDiameter_mm))
+            out.push_back(
+                {"CSID" + k, "MM", exact(c.innerDiameter_mm), "casing inner diameter" + of});
+        if (!c.type.empty()) out.push_back({"CSGT" + k, "", c.type, "casing type" + of});
+        if (std::isfinite(c.appliesFrom_m) && std::isfinite(c.appliesTo_m))
+            out.push_back({"CSRG" + k, "M", exact(c.appliesFrom_m) + ", " + exact(c.appliesTo_m),
+                           "log depths this casing holds over" + of});
+    }
+    return out;
 }
 
 std::optional<CasingString> parseCasingSpec(std::string_view text, std::string& error) {
@@ -247,11 +344,6 @@ std::optional<CasingString> parseCasingSpec(std::string_view text, std::string& 
 }
 
 std::string casingSpecText(const CasingString& c) {
-    // The shortest text that reads back to the same double, whatever the locale.
-    auto exact = [](double v) {
-        char buffer[32];
-        return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, v).ptr);
-    };
     std::string out = exact(c.bottom_m) + "," + exact(c.size_mm) + "mm";
     if (std::isfinite(c.weight_kgPerM))
         out += "," + exact(c.weight_kgPerM) + "kg/m";
@@ -279,6 +371,13 @@ std::string describeCasing(const CasingString& c) {
         out += "inner diameter unknown (no weight)";
     else
         out += "inner diameter unknown (size and weight not in the API 5CT table)";
+    if (std::isfinite(c.appliesFrom_m) || std::isfinite(c.appliesTo_m))
+        out +=
+            "; holds over " +
+            (std::isfinite(c.appliesFrom_m) ? fixed(c.appliesFrom_m, 2) : std::string("top")) +
+            "-" +
+            (std::isfinite(c.appliesTo_m) ? fixed(c.appliesTo_m, 2) + " m" : std::string("end")) +
+            " of the log";
     if (!c.source.empty()) out += " [" + c.source + "]";
     return out;
 }
@@ -286,7 +385,7 @@ std::string describeCasing(const CasingString& c) {
 const CasingString* casingAt(const std::vector<CasingString>& program, double md_m) {
     const CasingString* inside = nullptr;
     for (const CasingString& c : program) {
-        if (!(md_m <= c.bottom_m)) continue;
+        if (!(md_m <= c.bottom_m) || md_m < c.appliesFrom_m || md_m > c.appliesTo_m) continue;
         if (!inside || (std::isfinite(c.size_mm) &&
                         (!std::isfinite(inside->size_mm) || c.size_mm < inside->size_mm)))
             inside = &c;

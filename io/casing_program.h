@@ -8,6 +8,7 @@
 #include "io/casing_string.h"
 #include "io/diagnostics.h"
 #include "io/las_header.h"
+#include "io/las_writer.h"
 
 namespace caliper3d::io {
 
@@ -22,8 +23,16 @@ double nominalCasingId_mm(double size_mm, double weight_kgPerM);
 // the type from CSGT. One string (the header's current casing); empty when no shoe depth is
 // given. An item that cannot be read (no unit, not a number) is skipped with a warning naming
 // its line; a size without a shoe depth is warned about and not used.
+// Then the numbered strings a spliced log writes (casingParameters): CSGL[1], CSGS[1], CSGW[1],
+// CSID[1] (inner diameter), CSGT[1] and CSRG[1] (the log depths it holds over, "FROM, TO"),
+// then [2], ... up to the first number without a shoe.
 std::vector<CasingString> readCasingProgram(const LasHeader& header, const std::string& file,
                                             Diagnostics* diagnostics);
+
+// The ~Parameter lines of a casing program, read back by readCasingProgram to the same strings
+// (their sources aside): the numbered form above, one number per string, each with its shoe,
+// size, weight, inner diameter, type and depths (when both ends are known) where known.
+std::vector<LasParameter> casingParameters(const std::vector<CasingString>& program);
 
 // One --casing value "BOTTOM,SIZE[,WEIGHT|ID]": the shoe's measured depth in metres; the outer
 // diameter as a length ("7in", "177.8mm"; a bare number is inches); then either the nominal
@@ -38,7 +47,8 @@ std::string casingSpecText(const CasingString& casing);
 std::string describeCasing(const CasingString& casing);
 
 // The casing string a section at measured depth `md_m` is inside: the narrowest one whose shoe
-// is at or below it; nullptr in open hole.
+// is at or below it, of those that hold at md_m (CasingString::appliesFrom_m, appliesTo_m);
+// nullptr in open hole.
 const CasingString* casingAt(const std::vector<CasingString>& program, double md_m);
 
 }  // namespace caliper3d::io

@@ -18,13 +18,19 @@ struct CasingString {
     double innerDiameter_mm = std::numeric_limits<double>::quiet_NaN();
     std::string type;    // CSGT ("SURFACE", "INTERMEDIATE", ...); empty when not given
     std::string source;  // where it was read: "~Parameter CSGL, CSGS, CSGW", "--casing"
+    // The measured depths of the log this string holds over, both included; NaN: the whole
+    // log. A log spliced from runs (caliper3d splice) keeps each run's casing over that run's
+    // rows only: a string set after a run was logged does not case that run's open hole.
+    double appliesFrom_m = std::numeric_limits<double>::quiet_NaN();
+    double appliesTo_m = std::numeric_limits<double>::quiet_NaN();
 };
 
 inline bool operator==(const CasingString& a, const CasingString& b) {
     auto same = [](double x, double y) { return x == y || (std::isnan(x) && std::isnan(y)); };
     return same(a.bottom_m, b.bottom_m) && same(a.size_mm, b.size_mm) &&
            same(a.weight_kgPerM, b.weight_kgPerM) && same(a.innerDiameter_mm, b.innerDiameter_mm) &&
-           a.type == b.type && a.source == b.source;
+           a.type == b.type && a.source == b.source && same(a.appliesFrom_m, b.appliesFrom_m) &&
+           same(a.appliesTo_m, b.appliesTo_m);
 }
 
 }  // namespace caliper3d::io

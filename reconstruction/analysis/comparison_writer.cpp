@@ -1,22 +1,22 @@
 #include "reconstruction/analysis/comparison_writer.h"
 
-#include <charconv>
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <string_view>
+#include <thread>
+#include <vector>
 
 #include "io/atomic_output.h"
+#include "io/number_format.h"
 
 namespace caliper3d::reconstruction {
 
 namespace {
 
-// std::to_chars writes a decimal point whatever the locale (as the report writer does).
 std::string fixed(double v, int decimals) {
-    char buf[400];
-    std::string text(
-        buf, std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals).ptr);
-    // Never "-0.00": a difference that rounds to nothing has no sign.
-    if (text.front() == '-' && text.find_first_not_of("-0.") == std::string::npos) text.erase(0, 1);
+    std::string text;
+    io::appendFixed(text, v, decimals);
     return text;
 }
 
@@ -27,7 +27,7 @@ std::string signedFixed(double v, int decimals) {
 
 void field(std::string& line, double v, int decimals) {
     line += ',';
-    if (std::isfinite(v)) line += fixed(v, decimals);
+    if (std::isfinite(v)) io::appendFixed(line, v, decimals);
 }
 
 void field(std::string& line, std::string_view text) {
@@ -43,17 +43,30 @@ double axialDifference(double a, double b) {
     return d;
 }
 
-std::string note(const SectionChange& c, const RunComparison& r) {
-    if (!c.compared()) return "not compared: " + std::string(notComparedText(c.notCompared));
-    if (c.oriented) return "";
-    if (r.unoriented1 && r.unoriented2) return "azimuth unknown: neither run oriented";
-    if (r.unoriented1) return "azimuth unknown: run 1 not oriented";
-    if (r.unoriented2) return "azimuth unknown: run 2 not oriented";
-    return "azimuth unknown here";
-}
+// The notes of a comparison's rows, made once.
+struct RowNotes {
+    explicit RowNotes(const RunComparison& r) {
+        for (int k = 1; k < 7; ++k)
+            notCompared[k] =
+                "not compared: " + std::string(notComparedText(static_cast<NotCompared>(k)));
+        unoriented = r.unoriented1 && r.unoriented2 ? "azimuth unknown: neither run oriented"
+                     : r.unoriented1                ? "azimuth unknown: run 1 not oriented"
+                     : r.unoriented2                ? "azimuth unknown: run 2 not oriented"
+                                                    : "azimuth unknown here";
+        skipped = "outline not compared: diameters within " + fixed(r.outlineGate_mm, 2) +
+                  " mm and major axis within " + fixed(kOutlineAxisTurn_deg, 0) + " deg";
+    }
+    std::string_view of(const SectionChange& c) const {
+        if (!c.compared()) return notCompared[static_cast<int>(c.notCompared)];
+        if (c.oriented) return "";
+        if (c.outlineSkipped) return skipped;
+        return unoriented;
+    }
+    std::string notCompared[7], unoriented, skipped;
+};
 
-std::string csvRow(const SectionChange& c, const RunComparison& r) {
-    std::string line = fixed(c.md1_m, 4);
+void appendRow(std::string& line, const SectionChange& c, const RowNotes& notes) {
+    io::appendFixed(line, c.md1_m, 4);
     field(line, c.md2_m, 4);
     const auto triple = [&line](double a, double b) {
         field(line, a, 2);
@@ -76,9 +89,35 @@ std::string csvRow(const SectionChange& c, const RunComparison& r) {
     field(line, c.maxGrowth_mm, 2);
     field(line, c.maxGrowthAzimuth_deg, 1);
     field(line, c.compared() ? (c.significant ? "yes" : "no") : "");
-    field(line, note(c, r));
+    field(line, notes.of(c));
     line += '\n';
-    return line;
+}
+
+// The rows in blocks, `threads` blocks formatted at once and written in order.
+void writeRows(std::ostream& out, const RunComparison& r, int threads) {
+    constexpr std::size_t kBlockRows = 16384;
+    const RowNotes notes(r);
+    const std::size_t rows = r.sections.size();
+    const std::size_t blocks = (rows + kBlockRows - 1) / kBlockRows;
+    const std::size_t lanes = std::max<std::size_t>(
+        1, std::min<std::size_t>(static_cast<std::size_t>(std::max(1, threads)), blocks));
+    std::vector<std::string> text(lanes);
+    for (std::size_t first = 0; first < blocks; first += lanes) {
+        const std::size_t count = std::min(lanes, blocks - first);
+        const auto format = [&](std::size_t k) {
+            text[k].clear();
+            text[k].reserve(kBlockRows * 192);
+            const std::size_t from = (first + k) * kBlockRows,
+                              to = std::min(rows, from + kBlockRows);
+            for (std::size_t i = from; i < to; ++i) appendRow(text[k], r.sections[i], notes);
+        };
+        std::vector<std::thread> workers;
+        for (std::size_t k = 1; k < count; ++k) workers.emplace_back(format, k);
+        format(0);
+        for (std::thread& w : workers) w.join();
+        for (std::size_t k = 0; k < count; ++k)
+            out.write(text[k].data(), static_cast<std::streamsize>(text[k].size()));
+    }
 }
 
 std::string range(double top, double bottom) {
@@ -116,6 +155,11 @@ std::string overlapLine(const RunComparison& r) {
                     std::to_string(r.sections.size()) +
                     " sections): " + std::to_string(r.compared) + " compared, " +
                     std::to_string(r.oriented) + " of them with azimuths";
+    if (r.outlinesSkipped > 0)
+        s += " (" + std::to_string(r.outlinesSkipped) +
+             " more oriented, their outlines not compared: diameters within " +
+             fixed(r.outlineGate_mm, 2) + " mm, major axis within " +
+             fixed(kOutlineAxisTurn_deg, 0) + " deg)";
     std::string left;
     for (int k = 1; k < 7; ++k)
         if (r.notCompared[k] > 0)
@@ -140,13 +184,21 @@ std::string largestLine(const RunComparison& r) {
     };
     std::string s = "largest changes: " + one("equivalent diameter", r.deq) + "; " +
                     one("dmin", r.dmin) + "; " + one("dmax", r.dmax) + "; ";
-    if (std::isnan(r.growth.change))
+    if (std::isnan(r.growth.change) && r.outlinesSkipped > 0)
+        s += "wall growth by azimuth not compared (the outlines of " +
+             std::to_string(r.outlinesSkipped) + " oriented sections skipped: diameters within " +
+             fixed(r.outlineGate_mm, 2) + " mm and major axis within " +
+             fixed(kOutlineAxisTurn_deg, 0) + " deg)";
+    else if (std::isnan(r.growth.change))
         s += "wall growth by azimuth not compared (azimuth unknown)";
     else
         s += "wall " + signedFixed(r.growth.change, 2) + " mm from the centre " +
              (std::isfinite(r.growth.azimuth_deg) ? "at azimuth " + fixed(r.growth.azimuth_deg, 1)
                                                   : std::string("all round")) +
-             " at " + fixed(r.growth.md1_m, 2) + " m";
+             " at " + fixed(r.growth.md1_m, 2) + " m" +
+             (r.outlinesSkipped > 0
+                  ? " (of the " + std::to_string(r.oriented) + " outlines compared)"
+                  : std::string());
     return s + "\n";
 }
 
@@ -190,25 +242,17 @@ std::string volumeLine(const RunComparison& r) {
 
 }  // namespace
 
-void writeComparisonCsv(std::ostream& out, const RunComparison& r) {
+void writeComparisonCsv(std::ostream& out, const RunComparison& r, int threads) {
     out << "md_m,md2_m,deq1_mm,deq2_mm,d_deq_mm,dmin1_mm,dmin2_mm,d_dmin_mm,dmax1_mm,dmax2_mm,"
            "d_dmax_mm,class1,class2,major_azimuth1_deg,major_azimuth2_deg,d_major_azimuth_deg,"
            "area1_mm2,area2_mm2,d_area_mm2,d_area_pct,d_deq_pct,max_growth_mm,"
            "max_growth_azimuth_deg,significant,note\n";
-    std::string block;
-    for (const SectionChange& c : r.sections) {
-        block += csvRow(c, r);
-        if (block.size() > (1u << 16)) {
-            out << block;
-            block.clear();
-        }
-    }
-    out << block;
+    writeRows(out, r, threads);
 }
 
-void writeComparisonCsv(const std::string& path, const RunComparison& r) {
+void writeComparisonCsv(const std::string& path, const RunComparison& r, int threads) {
     io::AtomicOutput file(path);
-    writeComparisonCsv(file.stream(), r);
+    writeComparisonCsv(file.stream(), r, threads);
     file.commit();
 }
 

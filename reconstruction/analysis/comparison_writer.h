@@ -14,10 +14,12 @@ namespace caliper3d::reconstruction {
 // then major_azimuth1_deg,major_azimuth2_deg,d_major_azimuth_deg,area1_mm2,area2_mm2,
 //   d_area_mm2,d_area_pct,d_deq_pct,max_growth_mm,max_growth_azimuth_deg,significant,note.
 // Differences are run 2 minus run 1; an undefined value is an empty field; `note` says why a
-// depth is not compared or why its azimuths are unknown. Decimal point whatever the locale.
-void writeComparisonCsv(std::ostream& out, const RunComparison& comparison);
+// depth is not compared, why its azimuths are unknown or why its outline was not compared
+// (RunComparisonOptions::outlineGate). Decimal point whatever the locale. Rows are formatted
+// in blocks, `threads` blocks at once, and written in order.
+void writeComparisonCsv(std::ostream& out, const RunComparison& comparison, int threads = 1);
 // The same to a file, whole or not at all (io/atomic_output.h).
-void writeComparisonCsv(const std::string& path, const RunComparison& comparison);
+void writeComparisonCsv(const std::string& path, const RunComparison& comparison, int threads = 1);
 
 // The zones table: change,class,top1_m,bottom1_m,top2_m,bottom2_m,length1_m,length2_m,
 // mean_d_deq_mm,max_d_dmax_mm,max_d_dmax_md_m: the class zones of either run paired

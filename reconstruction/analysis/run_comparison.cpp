@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "reconstruction/analysis/section_angle_reference.h"
 #include "reconstruction/analysis/section_profile.h"
 
 namespace caliper3d::reconstruction {
@@ -57,8 +58,9 @@ namespace {
 std::vector<NotCompared> rowReasons(const WellAnalysis& a) {
     std::vector<NotCompared> out(a.sections.size(), NotCompared::None);
     for (std::size_t i = 0; i < out.size(); ++i) {
-        if (a.sections[i].cls == BoreholeClass::Cased) out[i] = NotCompared::Cased1;
-        if (a.sections[i].cls == BoreholeClass::NoData) out[i] = NotCompared::NoData1;
+        const BoreholeClass cls = a.sections.measure(i).cls;
+        if (cls == BoreholeClass::Cased) out[i] = NotCompared::Cased1;
+        if (cls == BoreholeClass::NoData) out[i] = NotCompared::NoData1;
     }
     for (const NoDataInterval& closed : a.armsNotOpen)
         for (std::size_t i = closed.firstRow; i <= closed.lastRow && i < out.size(); ++i)
@@ -93,12 +95,19 @@ double lerp(double a, double b, double w) {
 struct Measures {
     double deq = io::kNaN, dmin = io::kNaN, dmax = io::kNaN, area = io::kNaN;
 };
-Measures measures(const SectionResult& s, double offset_mm) {
+Measures measures(const SectionMeasure& s, double offset_mm) {
     const double b = std::isfinite(offset_mm) ? offset_mm : 0.0;
     Measures m{s.equivalentDiameter_mm - b, s.dmin_mm - b, s.dmax_mm - b, s.area_mm2};
     if (b != 0.0 && s.equivalentDiameter_mm > 0.0)
         m.area *= (m.deq / s.equivalentDiameter_mm) * (m.deq / s.equivalentDiameter_mm);
     return m;
+}
+
+// Axial difference of two directions of [0, 180), in [0, 90]; NaN when either is (a round
+// section has no axis).
+double axisTurn_deg(double a, double b) {
+    const double d = std::fmod(std::abs(b - a), 180.0);
+    return std::min(d, 180.0 - d);
 }
 
 // Reads both runs section by section; owns the scratch the outlines need.
@@ -115,6 +124,7 @@ public:
           m_offset2(options.removeBias ? bias2.offset_mm : io::kNaN),
           m_reasons1(reasons1),
           m_reasons2(reasons2),
+          m_gate_mm(options.outlineGate * options.repeatability95_mm),
           m_profiler1(*run1.geometry, options.azimuthBins),
           m_profiler2(*run2.geometry, options.azimuthBins),
           m_p1(static_cast<std::size_t>(options.azimuthBins)),
@@ -134,9 +144,13 @@ private:
     // null where it has none.
     const double* profile2(std::size_t row);
 
+    // Whether the outlines of a compared section are worth comparing (outlineGate).
+    bool outlineMayDiffer(const SectionChange& c) const;
+
     double m_offset1, m_offset2;
     const std::vector<NotCompared>& m_reasons1;
     const std::vector<NotCompared>& m_reasons2;
+    double m_gate_mm;  // 0: every outline
     SectionProfiler m_profiler1, m_profiler2;
     std::vector<double> m_p1, m_p2;
     // The last two outlines of run 2 computed: their rows (none: SIZE_MAX), whether they have
@@ -160,10 +174,12 @@ const double* SectionComparer::profile2(std::size_t row) {
 
 SectionChange SectionComparer::compare(std::size_t i, double md2, std::size_t j0, std::size_t j1,
                                        double w) {
-    const SectionResult& s1 = m_run1.analysis->sections[i];
-    const SectionResult& n2 = m_run2.analysis->sections[j0];
+    const SectionResults& sections1 = m_run1.analysis->sections;
+    const SectionResults& sections2 = m_run2.analysis->sections;
+    const SectionMeasure& s1 = sections1.measure(i);
+    const SectionMeasure& n2 = sections2.measure(j0);
     SectionChange c;
-    c.md1_m = s1.md_m;
+    c.md1_m = sections1.md_m(i);
     c.md2_m = md2;
     c.class1 = s1.cls;
     c.class2 = n2.cls;
@@ -173,7 +189,7 @@ SectionChange SectionComparer::compare(std::size_t i, double md2, std::size_t j0
     const bool blend = j1 != j0 && m_reasons2[j1] == NotCompared::None;
     const Measures m1 = measures(s1, m_offset1);
     const Measures a = measures(n2, m_offset2);
-    const Measures b = blend ? measures(m_run2.analysis->sections[j1], m_offset2) : a;
+    const Measures b = blend ? measures(sections2.measure(j1), m_offset2) : a;
     const double wj = blend ? w : 0.0;
     c.deq1_mm = m1.deq;
     c.dmin1_mm = m1.dmin;
@@ -188,12 +204,31 @@ SectionChange SectionComparer::compare(std::size_t i, double md2, std::size_t j0
         m_run2.geometry->orientation(j0) != WellGeometry::Orientation::Unoriented;
     if (oriented1) c.majorAzimuth1_deg = s1.majorAzimuth_deg;
     if (oriented2) c.majorAzimuth2_deg = n2.majorAzimuth_deg;
-    if (oriented1 && oriented2) compareOutlines(i, j0, blend ? j1 : j0, wj, c);
+    if (oriented1 && oriented2) {
+        // Only an outline that could be compared is skipped: where either run has no north
+        // (the profiler says so at once), the row says "azimuth unknown", gate or not.
+        const bool northKnown = referenceKnown(*m_run1.geometry, i, AngleReference::North) &&
+                                referenceKnown(*m_run2.geometry, j0, AngleReference::North);
+        if (!northKnown || outlineMayDiffer(c))
+            compareOutlines(i, j0, blend ? j1 : j0, wj, c);
+        else
+            c.outlineSkipped = true;
+    }
     const double limit = m_options.repeatability95_mm;
     c.significant = std::abs(c.deq2_mm - c.deq1_mm) > limit ||
                     std::abs(c.dmin2_mm - c.dmin1_mm) > limit ||
                     std::abs(c.dmax2_mm - c.dmax1_mm) > limit;
     return c;
+}
+
+bool SectionComparer::outlineMayDiffer(const SectionChange& c) const {
+    if (!(m_gate_mm > 0.0)) return true;
+    const double largest =
+        std::max({std::abs(c.deq2_mm - c.deq1_mm), std::abs(c.dmin2_mm - c.dmin1_mm),
+                  std::abs(c.dmax2_mm - c.dmax1_mm)});
+    // A diameter that is NaN in either run tells nothing: compare the outlines.
+    if (!(largest <= m_gate_mm)) return true;
+    return axisTurn_deg(c.majorAzimuth1_deg, c.majorAzimuth2_deg) > kOutlineAxisTurn_deg;
 }
 
 void SectionComparer::compareOutlines(std::size_t i, std::size_t j0, std::size_t j1, double w,
@@ -247,8 +282,9 @@ void countSections(RunComparison& r) {
         if (!c.compared()) continue;
         ++r.compared;
         r.oriented += c.oriented;
-        any1 |= std::isfinite(c.majorAzimuth1_deg) || c.oriented;
-        any2 |= std::isfinite(c.majorAzimuth2_deg) || c.oriented;
+        r.outlinesSkipped += c.outlineSkipped;
+        any1 |= std::isfinite(c.majorAzimuth1_deg) || c.oriented || c.outlineSkipped;
+        any2 |= std::isfinite(c.majorAzimuth2_deg) || c.oriented || c.outlineSkipped;
         r.classChanges += c.class1 != c.class2;
         if (c.significant) {
             ++r.significant;
@@ -260,8 +296,9 @@ void countSections(RunComparison& r) {
         if (c.oriented && (std::isnan(r.growth.change) || c.maxGrowth_mm > r.growth.change))
             r.growth = {c.maxGrowth_mm, c.md1_m, c.maxGrowthAzimuth_deg};
     }
-    r.unoriented1 = r.oriented == 0 && !any1;
-    r.unoriented2 = r.oriented == 0 && !any2;
+    const bool anyBoth = r.oriented + r.outlinesSkipped > 0;
+    r.unoriented1 = !anyBoth && !any1;
+    r.unoriented2 = !anyBoth && !any2;
 }
 
 void integrateVolumes(RunComparison& r) {
@@ -387,8 +424,9 @@ RunComparison compareRuns(const ComparedRun& run1, const ComparedRun& run2,
     r.repeatability95_mm = options.repeatability95_mm;
     r.bias1 = biasOf(*run1.analysis);
     r.bias2 = biasOf(*run2.analysis);
-    const auto& s1 = run1.analysis->sections;
-    const auto& s2 = run2.analysis->sections;
+    r.outlineGate_mm = options.outlineGate * options.repeatability95_mm;
+    const SectionResults& s1 = run1.analysis->sections;
+    const SectionResults& s2 = run2.analysis->sections;
     if (s1.size() == 0 || s2.size() == 0) throw std::runtime_error("a run has no sections");
     // Where each depth of run 1 lies in run 2 (cheap, in order), then the sections compared in
     // chunks, one comparer (and its scratch) per chunk.
@@ -397,17 +435,17 @@ RunComparison compareRuns(const ComparedRun& run1, const ComparedRun& run2,
         double md2, w;
     };
     std::vector<Task> tasks;
-    const double first2 = s2[0].md_m, last2 = s2[s2.size() - 1].md_m;
+    const double first2 = s2.md_m(0), last2 = s2.md_m(s2.size() - 1);
     const double tolerance = 1e-6;
     std::size_t j = 0;  // first row of run 2 at or below md2
     for (std::size_t i = 0; i < s1.size(); ++i) {
-        const double md2 = r.mapping.toRun2(s1[i].md_m);
+        const double md2 = r.mapping.toRun2(s1.md_m(i));
         if (md2 < first2 - tolerance || md2 > last2 + tolerance) continue;
-        while (j + 1 < s2.size() && s2[j].md_m < md2) ++j;
+        while (j + 1 < s2.size() && s2.md_m(j) < md2) ++j;
         // Rows j - 1 and j enclose md2 (j alone at the top, or on a row).
-        const std::size_t above = j > 0 && s2[j].md_m > md2 ? j - 1 : j;
-        const double span = s2[j].md_m - s2[above].md_m;
-        const double w = span > 0.0 ? (md2 - s2[above].md_m) / span : 0.0;
+        const std::size_t above = j > 0 && s2.md_m(j) > md2 ? j - 1 : j;
+        const double span = s2.md_m(j) - s2.md_m(above);
+        const double w = span > 0.0 ? (md2 - s2.md_m(above)) / span : 0.0;
         const std::size_t nearest = w > 0.5 ? j : above;
         tasks.push_back({i, nearest, nearest == j ? above : j, md2, nearest == j ? 1.0 - w : w});
     }

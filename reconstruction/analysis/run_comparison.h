@@ -34,7 +34,20 @@ struct RunComparisonOptions {
     // Subtract each run's reading offset in casing of known inner diameter (CasingCheck).
     bool removeBias = true;
     int threads = 1;  // sections are compared in this many chunks at once
+    // Compare the outlines (the wall at each azimuth) only where the orientation-free figures
+    // say the section may have changed: a diameter (equivalent, dmin or dmax) differs by more
+    // than this fraction of repeatability95_mm, or the major axes' azimuths (where both runs
+    // have one) by more than kOutlineAxisTurn_deg. Elsewhere the outline is not compared
+    // (SectionChange::outlineSkipped: no wall growth is reported there, and the note says why). 0,
+    // the default: every section of two oriented runs (docs/analysis.md, "Two runs of one well").
+    double outlineGate = 0.0;
 };
+
+// The gate `caliper3d compare` uses: half the repeatability limit (1.5 mm for an imager).
+inline constexpr double kCompareOutlineGate = 0.5;
+// A major axis that turned by more than this between the runs opens the gate whatever the
+// diameters say (a breakout that rotated keeps its size).
+inline constexpr double kOutlineAxisTurn_deg = 10.0;
 
 // Why a depth of the overlap is not compared: a run without data there (too few arms), with
 // arms that did not open, or inside casing.
@@ -67,6 +80,9 @@ struct SectionChange {
     double maxGrowth_mm = io::kNaN;
     double maxGrowthAzimuth_deg = io::kNaN;  // [0, 360); NaN where the growth is uniform
     bool significant = false;  // a diameter changed by more than the repeatability limit
+    // Both runs oriented, but the outline not compared: every diameter within the gate and the
+    // major axis turned less than kOutlineAxisTurn_deg (RunComparisonOptions::outlineGate).
+    bool outlineSkipped = false;
 
     bool compared() const { return notCompared == NotCompared::None; }
 };
@@ -120,6 +136,8 @@ struct RunComparison {
     double overlapTop1_m = io::kNaN, overlapBottom1_m = io::kNaN;
     std::size_t compared = 0;         // sections compared
     std::size_t oriented = 0;         // of which both runs oriented (azimuths compared)
+    std::size_t outlinesSkipped = 0;  // of which both runs oriented, outline not compared
+    double outlineGate_mm = 0.0;      // the diameter change below which it was not (0: none)
     std::size_t notCompared[7] = {};  // by NotCompared reason
     std::size_t significant = 0;
     double significant_m = 0.0;    // their combined length (one step each)

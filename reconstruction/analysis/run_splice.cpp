@@ -27,7 +27,7 @@ std::string metres(double v) {
 }
 
 // The curves of every run: each optional curve where any run has it, every extra curve by
-// mnemonic, and RUN.
+// mnemonic, and RUN. No casing: placeCasing gives each run's its rows.
 io::SectionTable emptyLog(const std::vector<const io::SectionTable*>& runs) {
     const io::SectionTable& first = *runs.front();
     io::SectionTable out = first.rows(0, 0);
@@ -39,10 +39,8 @@ io::SectionTable emptyLog(const std::vector<const io::SectionTable*>& runs) {
                             [&](const io::ExtraCurve& o) { return o.mnemonic == e.mnemonic; });
             if (!known) out.extraCurves.push_back({e.mnemonic, e.unit, e.description, {}});
         }
-        for (const io::CasingString& c : t->casing)
-            if (std::find(out.casing.begin(), out.casing.end(), c) == out.casing.end())
-                out.casing.push_back(c);
     }
+    out.casing.clear();
     out.extraCurves.push_back({"RUN", "", "Run the row came from (1: the first log given)", {}});
     return out;
 }
@@ -86,6 +84,34 @@ struct LogDepth {
     double operator()(double d) const { return (d - shift) / (1.0 + stretch); }
 };
 
+// Each run's casing program over the log's rows from that run (from and to the midpoints with
+// the neighbouring rows of other runs), its shoes in the log's depths: the casing a run was
+// logged in, and only that, cases its rows.
+void placeCasing(io::SectionTable& log, const std::vector<const io::SectionTable*>& runs,
+                 const std::vector<LogDepth>& toLog) {
+    const std::vector<double>& run = log.extraCurves.back().values;  // RUN
+    const std::vector<double>& depth = log.depth_m;
+    const std::size_t rows = log.rowCount();
+    for (std::size_t first = 0; first < rows;) {
+        std::size_t last = first;
+        while (last + 1 < rows && run[last + 1] == run[first]) ++last;
+        const auto k = static_cast<std::size_t>(run[first]) - 1;
+        const double from = first == 0 ? depth[first] : 0.5 * (depth[first - 1] + depth[first]);
+        const double to = last + 1 == rows ? depth[last] : 0.5 * (depth[last] + depth[last + 1]);
+        for (const io::CasingString& c : runs[k]->casing) {
+            io::CasingString placed = c;
+            placed.bottom_m = toLog[k](c.bottom_m);
+            // A run spliced before keeps its own limits within these.
+            placed.appliesFrom_m =
+                std::isfinite(c.appliesFrom_m) ? std::max(from, toLog[k](c.appliesFrom_m)) : from;
+            placed.appliesTo_m =
+                std::isfinite(c.appliesTo_m) ? std::min(to, toLog[k](c.appliesTo_m)) : to;
+            if (placed.appliesFrom_m <= placed.appliesTo_m) log.casing.push_back(placed);
+        }
+        first = last + 1;
+    }
+}
+
 }  // namespace
 
 SplicedLog spliceRuns(const std::vector<const io::SectionTable*>& runs,
@@ -114,6 +140,7 @@ SplicedLog spliceRuns(const std::vector<const io::SectionTable*>& runs,
         appendRow(out.table, carried, first, i, first.depth_m[i], 1.0);
     const double step1 = medianStep(first.depth_m);
     LogDepth toLog;
+    std::vector<LogDepth> toLogOf(1);  // each run's, the first's the identity
     for (std::size_t k = 1; k < runs.size(); ++k) {
         const io::SectionTable& run = *runs[k];
         const DepthMapping& m = mappings[k - 1];
@@ -125,6 +152,7 @@ SplicedLog spliceRuns(const std::vector<const io::SectionTable*>& runs,
             step1 > 0.0)
             shift = std::round(shift / step1) * step1;
         toLog = {shift, stretch};
+        toLogOf.push_back(toLog);
 
         SpliceJoin join;
         join.run = k;
@@ -175,6 +203,7 @@ SplicedLog spliceRuns(const std::vector<const io::SectionTable*>& runs,
                 if (before.depth_m[i] > b + tolerance) out.table.appendRows(before, i, i + 1);
         out.joins.push_back(join);
     }
+    placeCasing(out.table, runs, toLogOf);
     return out;
 }
 

@@ -32,7 +32,10 @@ struct SpliceOptions {
 };
 
 struct SplicedLog {
-    io::SectionTable table;  // every run's curves (NaN where a run lacks one) and curve RUN
+    // Every run's curves (NaN where a run lacks one; the bit size row by row) and curve RUN;
+    // each run's casing program in the log's depths, holding over that run's rows only
+    // (io::CasingString::appliesFrom_m, appliesTo_m).
+    io::SectionTable table;
     std::vector<SpliceJoin> joins;
 };
 

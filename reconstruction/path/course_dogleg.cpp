@@ -36,23 +36,29 @@ public:
         double md;
     };
 
+    // The points with md in [from, to] as rows [lo, hi): what std::lower_bound(from) and
+    // std::upper_bound(to) give, found by stepping forward from the last call's rows, since the
+    // course's ends only move down the hole (two binary searches a point cost more than the
+    // rest of the loop on a log of a million rows).
+    struct Window {
+        std::size_t lo = 0, hi = 0;
+    };
+
     // Mean tangent (and depth) of the points with md in [from, to]; the nearest point's when
-    // none is.
-    Mean operator()(double from, double to) const {
-        auto byMd = [](const PathPoint& p, double md) { return p.md < md; };
-        const auto lo = std::lower_bound(m_path.begin(), m_path.end(), from, byMd);
-        const auto hi = std::upper_bound(m_path.begin(), m_path.end(), to,
-                                         [](double md, const PathPoint& p) { return md < p.md; });
-        if (lo < hi) {
-            const auto a = static_cast<std::size_t>(lo - m_path.begin());
-            const auto b = static_cast<std::size_t>(hi - m_path.begin());
+    // none is. `from` and `to` never decrease from one call with `window` to the next.
+    Mean operator()(Window& window, double from, double to) const {
+        const std::size_t n = m_path.size();
+        while (window.lo < n && m_path[window.lo].md < from) ++window.lo;
+        while (window.hi < n && !(to < m_path[window.hi].md)) ++window.hi;
+        const std::size_t a = window.lo, b = window.hi;
+        if (a < b) {
             const glm::dvec3 s = m_sum[b] - m_sum[a];
             const double length = glm::length(s);
             if (length > 0.0)
                 return {s / length, (m_mdSum[b] - m_mdSum[a]) / static_cast<double>(b - a)};
         }
-        const auto near = lo == m_path.end() ? lo - 1 : lo;
-        return {tangent(*near), near->md};
+        const PathPoint& near = m_path[a == n ? a - 1 : a];
+        return {tangent(near), near.md};
     }
 
 private:
@@ -67,12 +73,13 @@ void setCourseLengthDls(std::vector<PathPoint>& path, double course_m, double wi
     if (path.size() < 2 || !(path.back().md - path.front().md >= 1.0)) return;
     const MeanDirection mean(path);
     const double top = path.front().md, bottom = path.back().md;
+    MeanDirection::Window upper, lower;
     for (PathPoint& p : path) {
         const double a = std::max(top, p.md - course_m / 2.0);
         const double b = std::min(bottom, p.md + course_m / 2.0);
         // Each end's direction belongs to the mean depth of the points averaged there.
-        const MeanDirection::Mean ta = mean(a - window_m, a + window_m);
-        const MeanDirection::Mean tb = mean(b - window_m, b + window_m);
+        const MeanDirection::Mean ta = mean(upper, a - window_m, a + window_m);
+        const MeanDirection::Mean tb = mean(lower, b - window_m, b + window_m);
         const double dogleg =
             glm::degrees(std::atan2(glm::length(glm::cross(ta.direction, tb.direction)),
                                     glm::dot(ta.direction, tb.direction)));

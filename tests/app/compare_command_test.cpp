@@ -12,8 +12,10 @@
 
 #include "cli_run.h"
 #include "csv_table.h"
+#include "io/casing_program.h"
 #include "io/las_reader.h"
 #include "io/las_writer.h"
+#include "io/log_reader.h"
 #include "reconstruction/synthetic/synthetic_well.h"
 #include "test_support.h"
 
@@ -105,6 +107,8 @@ TEST(CompareCommandTest, FindsTheShiftTheWiderBreakoutAndTheNewWashout) {
         if (md > 20.1 && md < 24.9) {
             EXPECT_NEAR(table.number(i, "d_dmax_mm"), 10.0, 0.5) << md;
             EXPECT_EQ(table.rows[i].at("significant"), "yes") << md;
+            EXPECT_NEAR(table.number(i, "max_growth_mm"), 5.0, 0.5) << md;
+            EXPECT_EQ(table.rows[i].at("note"), "") << md;
         }
         if (md > 50.1 && md < 51.9) {
             EXPECT_EQ(table.rows[i].at("class2"), "washout") << md;
@@ -112,6 +116,12 @@ TEST(CompareCommandTest, FindsTheShiftTheWiderBreakoutAndTheNewWashout) {
         if (md > 30.0 && md < 45.0) {
             EXPECT_EQ(table.rows[i].at("d_deq_mm"), "0.00") << md;
             EXPECT_EQ(table.rows[i].at("significant"), "no") << md;
+            // Unchanged: the outlines are not compared, and the row says so.
+            EXPECT_EQ(table.rows[i].at("max_growth_mm"), "") << md;
+            EXPECT_EQ(table.rows[i].at("note"),
+                      "outline not compared: diameters within 1.50 mm and major axis within 10 "
+                      "deg")
+                << md;
         }
     }
     const Csv zoneTable = readCsv(zones);
@@ -132,6 +142,25 @@ TEST(CompareCommandTest, FindsTheShiftTheWiderBreakoutAndTheNewWashout) {
     EXPECT_NEAR(summary["comparison"]["shift_m"].get<double>(), 0.35, 0.01);
     EXPECT_EQ(summary["comparison"]["agree"], false);
     EXPECT_EQ(summary["comparison"]["zones"].size(), 2u);
+}
+
+TEST(CompareCommandTest, AllOutlinesComparesTheWallAtEveryOrientedSection) {
+    const auto dir = caliper3d::test::freshScratchFolder("compare_all_outlines");
+    const std::string run1 = writeRun(dir, "run1.las", firstRun());
+    const std::string run2 = writeRun(dir, "run2.las", secondRun());
+    const auto csv = dir / "change.csv";
+    const CommandRun r =
+        runCaliper3d("compare " + run1 + " " + run2 + " --all-outlines -o " + csv.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    const Csv table = readCsv(csv);
+    ASSERT_EQ(table.rows.size(), 1594u);
+    for (std::size_t i = 0; i < table.rows.size(); ++i) {
+        const double md = table.number(i, "md_m");
+        EXPECT_EQ(table.rows[i].at("note"), "") << md;
+        if (md > 30.0 && md < 45.0) {
+            EXPECT_NEAR(table.number(i, "max_growth_mm"), 0.0, 0.05) << md;
+        }
+    }
 }
 
 TEST(CompareCommandTest, ARunAgainstItselfAgreesWithZeroChange) {
@@ -323,6 +352,76 @@ TEST(SpliceCommandTest, TwoOverlappingRunsBecomeOneLogWithEveryFeatureAtItsDepth
             EXPECT_NEAR(r1[i], 107.95, 1e-3) << d;
         }
     }
+}
+
+TEST(SpliceCommandTest, EachRunsCasingAndBitSizeReadBackOverItsOwnRows) {
+    // Run 1: a 12 1/4 in hole below 13 3/8 in 68 lb/ft casing set to 10.01 m; run 2, its
+    // counter 0.3 m deeper: 8 1/2 in below 9 5/8 in 47 lb/ft casing set to 55.01 m of its
+    // counter (54.71 m of run 1's), in what run 1 logged as open hole. Both give the casing and
+    // the bit size in ~Parameter only (no BS curve). Joined at 49.85 m, read back: run 1's rows
+    // cased to 10.01 m only, run 2's cased to 54.71 m, each row with its run's bit size.
+    const auto dir = caliper3d::test::freshScratchFolder("splice_casing");
+    SyntheticWellSpec upper = firstRun();
+    upper.length_m = 60.0;
+    SyntheticWellSpec lower = firstRun();
+    lower.top_m = 40.0;
+    lower.length_m = 60.0;
+    lower.depthOffset_m = 0.3;
+    const auto writeWithHeader = [&](const std::string& name, const SyntheticWellSpec& spec,
+                                     const std::vector<io::LasParameter>& parameters) {
+        io::SectionTable t = makeSyntheticWell(spec);
+        t.bitSize_mm.clear();
+        io::LasWriteOptions las;
+        las.parameters = parameters;
+        const std::string path = (dir / name).string();
+        io::writeLasFile(path, t, las);
+        return path;
+    };
+    const std::string run1 = writeWithHeader("run1.las", upper,
+                                             {{"BS", "IN", "12.25", "bit size"},
+                                              {"CSGL", "M", "10.01", "casing shoe"},
+                                              {"CSGS", "IN", "13.375", "casing size"},
+                                              {"CSGW", "LB/FT", "68", "casing weight"},
+                                              {"CSGT", "", "SURFACE", "casing type"}});
+    const std::string run2 = writeWithHeader("run2.las", lower,
+                                             {{"BS", "IN", "8.5", "bit size"},
+                                              {"CSGL", "M", "55.01", "casing shoe"},
+                                              {"CSGS", "IN", "9.625", "casing size"},
+                                              {"CSGW", "LB/FT", "47", "casing weight"}});
+    const auto out = dir / "spliced.las";
+    const CommandRun r = runCaliper3d("splice " + run1 + " " + run2 + " -o " + out.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+
+    io::Diagnostics diagnostics;
+    const io::SectionTable t = io::readCaliperLog(out.string(), {}, &diagnostics);
+    ASSERT_EQ(t.rowCount(), 1995u);
+    ASSERT_EQ(t.casing.size(), 2u);
+    const double id133 = (13.375 - 2 * 0.480) * 25.4, id958 = (9.625 - 2 * 0.472) * 25.4;
+    EXPECT_NEAR(t.casing[0].innerDiameter_mm, id133, 1e-9);
+    EXPECT_EQ(t.casing[0].type, "SURFACE");
+    EXPECT_NEAR(t.casing[1].innerDiameter_mm, id958, 1e-9);
+    EXPECT_NEAR(t.casing[1].bottom_m, 54.71, 1e-9);
+    const std::vector<double>& runs = t.extraCurves.back().values;
+    ASSERT_EQ(t.extraCurves.back().mnemonic, "RUN");
+    ASSERT_EQ(t.bitSize_mm.size(), t.rowCount());
+    std::size_t cased = 0;
+    for (std::size_t i = 0; i < t.rowCount(); ++i) {
+        const double md = t.depth_m[i];
+        const bool first = md < 49.85 - 1e-6;
+        ASSERT_EQ(runs[i], first ? 1.0 : 2.0) << md;
+        EXPECT_NEAR(t.bitSize_mm[i], first ? 311.15 : 215.9, 1e-9) << md;
+        const io::CasingString* c = io::casingAt(t.casing, md);
+        const double expected =
+            first ? (md < 10.01 ? id133 : io::kNaN) : (md < 54.71 ? id958 : io::kNaN);
+        if (std::isnan(expected)) {
+            EXPECT_EQ(c, nullptr) << md;
+        } else {
+            ASSERT_NE(c, nullptr) << md;
+            EXPECT_NEAR(c->innerDiameter_mm, expected, 1e-9) << md;
+            ++cased;
+        }
+    }
+    EXPECT_EQ(cased, 201u + 98u);
 }
 
 TEST(SpliceCommandTest, RunsOfDifferentToolsOrWithoutOverlapAreRefused) {

@@ -118,6 +118,83 @@ TEST(CasingProgramTest, NarrowestStringWhoseShoeIsBelow) {
     EXPECT_EQ(casingAt(p, 1200.1), nullptr);
 }
 
+TEST(CasingProgramTest, AStringHoldsOnlyOverItsOwnDepthsOfTheLog) {
+    // A spliced log: 13 3/8 in to 300 m over the first run's rows (0-1190 m), 9 5/8 in to
+    // 1200 m over the second's (1190-2500 m): the first run logged 300-1190 m in open hole.
+    CasingString surface, intermediate;
+    surface.bottom_m = 300.0;
+    surface.size_mm = 339.7;
+    surface.appliesFrom_m = 0.0;
+    surface.appliesTo_m = 1190.0;
+    intermediate.bottom_m = 1200.0;
+    intermediate.size_mm = 244.5;
+    intermediate.appliesFrom_m = 1190.0;
+    intermediate.appliesTo_m = 2500.0;
+    const std::vector<CasingString> p{surface, intermediate};
+    EXPECT_EQ(casingAt(p, 100.0), &p[0]);
+    EXPECT_EQ(casingAt(p, 300.1), nullptr);
+    EXPECT_EQ(casingAt(p, 1189.9), nullptr);
+    EXPECT_EQ(casingAt(p, 1190.1), &p[1]);
+    EXPECT_EQ(casingAt(p, 1200.1), nullptr);
+    EXPECT_NE(describeCasing(p[1]).find("holds over 1190.00-2500.00 m of the log"),
+              std::string::npos)
+        << describeCasing(p[1]);
+}
+
+TEST(CasingProgramTest, NumberedStringsWrittenReadBackTheSame) {
+    CasingString surface, intermediate;
+    surface.bottom_m = 300.0;
+    surface.size_mm = 339.725;
+    surface.weight_kgPerM = 68.0 * 1.48816394;  // 13 3/8 in 68 lb/ft
+    surface.innerDiameter_mm = nominalCasingId_mm(surface.size_mm, surface.weight_kgPerM);
+    surface.type = "SURFACE";
+    surface.appliesFrom_m = 0.0;
+    surface.appliesTo_m = 1189.975;
+    intermediate.bottom_m = 1200.3;
+    intermediate.size_mm = 244.475;
+    intermediate.innerDiameter_mm = 220.5;  // given, no weight
+    intermediate.appliesFrom_m = 1189.975;
+    intermediate.appliesTo_m = 2500.0;
+    std::string items;
+    for (const LasParameter& p : casingParameters({surface, intermediate}))
+        items += " " + p.mnemonic + "." + p.unit + " " + p.value + " : " + p.description + "\n";
+    Diagnostics d;
+    const std::vector<CasingString> read = readCasingProgram(headerWith(items), "h.las", &d);
+    EXPECT_TRUE(d.warnings.empty());
+    ASSERT_EQ(read.size(), 2u) << items;
+    for (std::size_t k = 0; k < 2; ++k) {
+        const CasingString& expected = k == 0 ? surface : intermediate;
+        const CasingString& c = read[k];
+        // Depths go through metres to millimetres and back: equal to rounding.
+        EXPECT_NEAR(c.bottom_m, expected.bottom_m, 1e-9) << k;
+        EXPECT_NEAR(c.appliesFrom_m, expected.appliesFrom_m, 1e-9) << k;
+        EXPECT_NEAR(c.appliesTo_m, expected.appliesTo_m, 1e-9) << k;
+        EXPECT_EQ(c.size_mm, expected.size_mm) << k;
+        EXPECT_EQ(c.innerDiameter_mm, expected.innerDiameter_mm) << k;
+        EXPECT_EQ(c.type, expected.type) << k;
+    }
+    EXPECT_EQ(read[0].weight_kgPerM, surface.weight_kgPerM);
+    EXPECT_TRUE(std::isnan(read[1].weight_kgPerM));
+    EXPECT_EQ(read[0].source, "~Parameter CSGL[1], CSGS[1], CSGW[1], CSID[1], CSRG[1]");
+    EXPECT_NEAR(read[0].innerDiameter_mm, (13.375 - 2 * 0.480) * 25.4, 1e-9);
+    // Numbered strings after the header's current one, up to the first number without a shoe.
+    const std::vector<CasingString> both = readCasingProgram(
+        headerWith(" CSGL.M 80 :\n CSGS.IN 7 :\n CSGL[1].M 50 :\n CSGL[3].M 90 :\n"), "h.las",
+        nullptr);
+    ASSERT_EQ(both.size(), 2u);
+    EXPECT_DOUBLE_EQ(both[0].bottom_m, 80.0);
+    EXPECT_DOUBLE_EQ(both[1].bottom_m, 50.0);
+    EXPECT_TRUE(std::isnan(both[1].appliesFrom_m));
+    // An interval that is not two depths is warned about and the string holds everywhere.
+    Diagnostics bad;
+    const std::vector<CasingString> loose =
+        readCasingProgram(headerWith(" CSGL[1].M 50 :\n CSRG[1].M 10 :\n"), "h.las", &bad);
+    ASSERT_EQ(loose.size(), 1u);
+    EXPECT_TRUE(std::isnan(loose[0].appliesTo_m));
+    ASSERT_EQ(bad.warnings.size(), 1u);
+    EXPECT_NE(bad.warnings[0].message.find("CSRG[1] '10' is not two depths"), std::string::npos);
+}
+
 TEST(CasingProgramTest, RealFmiAndCmiHeadersGiveTheirCasing) {
     const auto fmi = caliper3d::test::sharedData() / "real" / "1AA063409108W400_FMI_SONIC_MAIN.las";
     CALIPER3D_REQUIRE_DATA(fmi);

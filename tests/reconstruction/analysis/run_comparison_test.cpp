@@ -57,8 +57,9 @@ DepthCurve gammaOf(const io::SectionTable& t) {
 }
 
 RunComparison compare(const AnalysedRun& a, const AnalysedRun& b,
-                      double limit = kImagerRepeatability95_mm) {
+                      double limit = kImagerRepeatability95_mm, double outlineGate = 0.0) {
     RunComparisonOptions options;
+    options.outlineGate = outlineGate;
     options.mapping = fitDepthMapping(gammaOf(*a.table), gammaOf(*b.table));
     options.mapping.curve = "GR";
     options.repeatability95_mm = limit;
@@ -300,4 +301,107 @@ TEST(RunComparisonTest, EachRunsReadingInCasingIsRemovedAsItsBias) {
     }
     EXPECT_TRUE(r.agree());
     EXPECT_NE(formatComparisonSummary(r).find("mm removed (reading in casing"), std::string::npos);
+}
+
+TEST(RunComparisonTest, TheOutlineGateSkipsOnlySectionsWhoseOutlinesAreUnchanged) {
+    // The pair of the first test, its second pass also 90 degrees round: compared with the
+    // gate `compare` uses (diameters within 1.5 mm, axis within 10 degrees) and without it.
+    const AnalysedRun run1 = analyse(makeSyntheticWell(firstRun(24)));
+    SyntheticWellSpec spec2 = firstRun(24);
+    spec2.depthOffset_m = 0.35;
+    spec2.initialToolAzimuth_deg = 90.0;
+    spec2.features[0].dmax_mm = 255.9;
+    spec2.features.push_back({Kind::Washout, 100.0, 102.0, 265.9, 265.9, 0.0, 0.0});
+    const AnalysedRun run2 = analyse(makeSyntheticWell(spec2));
+    const RunComparison all = compare(run1, run2);
+    const RunComparison gated = compare(run1, run2, kImagerRepeatability95_mm, kCompareOutlineGate);
+    EXPECT_EQ(all.outlinesSkipped, 0u);
+    EXPECT_DOUBLE_EQ(gated.outlineGate_mm, 1.5);
+    ASSERT_EQ(gated.sections.size(), all.sections.size());
+    EXPECT_EQ(gated.oriented + gated.outlinesSkipped, all.oriented);
+    EXPECT_GT(gated.outlinesSkipped, 9 * gated.oriented);  // the hole is mostly unchanged
+    for (std::size_t k = 0; k < gated.sections.size(); ++k) {
+        const SectionChange& g = gated.sections[k];
+        const SectionChange& a = all.sections[k];
+        // Everything orientation-free is the same, and so is every outline compared.
+        EXPECT_EQ(g.deq2_mm - g.deq1_mm, a.deq2_mm - a.deq1_mm);
+        EXPECT_EQ(g.significant, a.significant);
+        if (inside(g.md1_m, 40.0, 45.0, 0.1) || inside(g.md1_m, 100.0, 102.0, 0.1)) {
+            ASSERT_TRUE(g.oriented) << g.md1_m;
+            EXPECT_FALSE(g.outlineSkipped);
+        }
+        if (g.oriented) {
+            EXPECT_EQ(g.maxGrowth_mm, a.maxGrowth_mm) << g.md1_m;
+            EXPECT_TRUE(g.maxGrowthAzimuth_deg == a.maxGrowthAzimuth_deg ||
+                        (std::isnan(g.maxGrowthAzimuth_deg) && std::isnan(a.maxGrowthAzimuth_deg)));
+        } else {
+            // Skipped: no growth reported, and where it was compared in full it was within
+            // the gate (the turned tool reads the unchanged hole alike).
+            ASSERT_TRUE(g.outlineSkipped) << g.md1_m;
+            EXPECT_TRUE(std::isnan(g.maxGrowth_mm));
+            EXPECT_TRUE(std::isnan(g.maxGrowthAzimuth_deg));
+            EXPECT_LE(std::abs(a.maxGrowth_mm), gated.outlineGate_mm) << g.md1_m;
+            if (!inside(g.md1_m, 39.5, 45.5, -0.1) && !inside(g.md1_m, 99.5, 102.5, -0.1))
+                EXPECT_NEAR(a.maxGrowth_mm, 0.0, 0.05) << g.md1_m;
+        }
+    }
+    EXPECT_EQ(gated.growth.change, all.growth.change);
+    EXPECT_EQ(gated.growth.md1_m, all.growth.md1_m);
+    std::ostringstream csv;
+    writeComparisonCsv(csv, gated, 2);
+    EXPECT_NE(csv.str().find(",outline not compared: diameters within 1.50 mm and major axis "
+                             "within 10 deg\n"),
+              std::string::npos);
+    EXPECT_NE(formatComparisonSummary(gated).find("more oriented, their outlines not compared"),
+              std::string::npos)
+        << formatComparisonSummary(gated);
+    // Written on one thread or on three, the same text.
+    std::ostringstream one, three;
+    writeComparisonCsv(one, gated, 1);
+    writeComparisonCsv(three, gated, 3);
+    EXPECT_EQ(one.str(), csv.str());
+    EXPECT_EQ(three.str(), csv.str());
+}
+
+TEST(RunComparisonTest, ABreakoutThatTurnedOpensTheOutlineGate) {
+    // Run 2's breakout has the same size but its axis at 45 degrees instead of 135: no diameter
+    // changes, so only the axis opens the gate. The wall moved out at 45 (and 225) by the
+    // semi-axes' difference, (245.9 - 217.9) / 2 = 14 mm.
+    const AnalysedRun run1 = analyse(makeSyntheticWell(firstRun(24)));
+    SyntheticWellSpec spec2 = firstRun(24);
+    spec2.features[0].majorAzimuth_deg = 45.0;
+    const AnalysedRun run2 = analyse(makeSyntheticWell(spec2));
+    const RunComparison r = compare(run1, run2, kImagerRepeatability95_mm, kCompareOutlineGate);
+    std::size_t turned = 0;
+    for (const SectionChange& c : r.sections) {
+        if (!inside(c.md1_m, 40.0, 45.0, 0.1)) continue;
+        ++turned;
+        EXPECT_FALSE(c.significant) << c.md1_m;
+        ASSERT_TRUE(c.oriented) << c.md1_m;
+        EXPECT_NEAR(c.maxGrowth_mm, 14.0, 0.6) << c.md1_m;
+        EXPECT_NEAR(std::fmod(c.maxGrowthAzimuth_deg, 180.0), 45.0, 7.5) << c.md1_m;
+    }
+    EXPECT_GT(turned, 90u);
+    EXPECT_NEAR(r.growth.change, 14.0, 0.6);
+}
+
+TEST(RunComparisonTest, IdenticalRunsUnderTheGateCompareNoOutlineAndSaySo) {
+    const AnalysedRun run1 = analyse(makeSyntheticWell(firstRun()));
+    const AnalysedRun run2 = analyse(makeSyntheticWell(firstRun()));
+    const RunComparison r = compare(run1, run2, kImagerRepeatability95_mm, kCompareOutlineGate);
+    EXPECT_EQ(r.oriented, 0u);
+    EXPECT_EQ(r.outlinesSkipped, r.compared);
+    EXPECT_TRUE(std::isnan(r.growth.change));
+    // Both runs are oriented: the skipped outlines are no "azimuth unknown".
+    EXPECT_FALSE(r.unoriented1);
+    EXPECT_FALSE(r.unoriented2);
+    const std::string summary = formatComparisonSummary(r);
+    EXPECT_NE(summary.find("wall growth by azimuth not compared (the outlines of " +
+                           std::to_string(r.compared) +
+                           " oriented sections skipped: diameters within 1.50 mm and major axis "
+                           "within 10 deg)"),
+              std::string::npos)
+        << summary;
+    EXPECT_EQ(summary.find("azimuths: unknown"), std::string::npos) << summary;
+    EXPECT_TRUE(r.agree());
 }

@@ -1,11 +1,13 @@
 // Splicing runs of one well: known shifts, a join in the overlap, a repeat over a bad interval.
 #include "reconstruction/analysis/run_splice.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 #include <gtest/gtest.h>
 
+#include "io/casing_program.h"
 #include "reconstruction/synthetic/synthetic_well.h"
 
 using namespace caliper3d;
@@ -57,6 +59,58 @@ TEST(RunSpliceTest, OverlappingRunsJoinInTheMiddleWithOneStepAndFeaturesAtTheirD
             EXPECT_NEAR(t.radii(i)[0], 132.95, 1e-9);
         }
     }
+}
+
+TEST(RunSpliceTest, EachRunKeepsItsCasingAndBitSizeOverItsOwnRows) {
+    // Run 1 drilled 12 1/4 in below 13 3/8 in casing to 10.01 m; run 2 8 1/2 in below 9 5/8
+    // in casing set to 55.01 m of its counter (54.71 m of the hole, run 1's open hole). Joined
+    // at 49.85 m: run 1's rows keep their open hole below 10 m, run 2's are cased to 54.71 m.
+    io::SectionTable upper = run(0.0, 60.0, 0.0);
+    io::SectionTable lower = run(40.0, 60.0, 0.3);
+    std::fill(upper.bitSize_mm.begin(), upper.bitSize_mm.end(), 311.15);
+    io::CasingString surface, intermediate;
+    surface.bottom_m = 10.01;
+    surface.size_mm = 339.725;
+    surface.innerDiameter_mm = 315.32;
+    intermediate.bottom_m = 55.01;
+    intermediate.size_mm = 244.475;
+    intermediate.innerDiameter_mm = 220.5;
+    upper.casing = {surface};
+    lower.casing = {intermediate};
+    const SplicedLog log = spliceRuns({&upper, &lower}, {shift(0.3)});
+    const io::SectionTable& t = log.table;
+    ASSERT_EQ(t.casing.size(), 2u);
+    EXPECT_EQ(t.casing[0].size_mm, surface.size_mm);
+    EXPECT_NEAR(t.casing[0].bottom_m, 10.01, 1e-9);
+    EXPECT_NEAR(t.casing[0].appliesFrom_m, 0.0, 1e-9);
+    EXPECT_NEAR(t.casing[0].appliesTo_m, 49.825, 1e-9);  // midway to run 2's first row
+    EXPECT_EQ(t.casing[1].size_mm, intermediate.size_mm);
+    EXPECT_NEAR(t.casing[1].bottom_m, 54.71, 1e-9);  // in the log's depths
+    EXPECT_NEAR(t.casing[1].appliesFrom_m, 49.825, 1e-9);
+    EXPECT_NEAR(t.casing[1].appliesTo_m, 99.7, 1e-9);
+    std::size_t cased1 = 0, open1 = 0, cased2 = 0, open2 = 0;
+    for (std::size_t i = 0; i < t.rowCount(); ++i) {
+        const double md = t.depth_m[i];
+        const bool first = runCurve(t)[i] == 1.0;
+        EXPECT_EQ(t.bitSize_mm[i], first ? 311.15 : 215.9) << md;
+        const io::CasingString* c = io::casingAt(t.casing, md);
+        if (first && md < 10.01) {
+            ASSERT_NE(c, nullptr) << md;
+            EXPECT_EQ(c->size_mm, surface.size_mm) << md;
+            ++cased1;
+        } else if (!first && md < 54.71) {
+            ASSERT_NE(c, nullptr) << md;
+            EXPECT_EQ(c->size_mm, intermediate.size_mm) << md;
+            ++cased2;
+        } else {
+            EXPECT_EQ(c, nullptr) << md;
+            ++(first ? open1 : open2);
+        }
+    }
+    EXPECT_EQ(cased1, 201u);  // 0-10 m
+    EXPECT_EQ(open1, 796u);   // 10.05-49.80 m
+    EXPECT_EQ(cased2, 98u);   // 49.85-54.70 m
+    EXPECT_EQ(open2, 900u);   // 54.75-99.70 m
 }
 
 TEST(RunSpliceTest, AShiftOffTheStepIsRoundedToWholeStepsUnlessAskedExact) {

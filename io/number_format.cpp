@@ -1,0 +1,56 @@
+#include "io/number_format.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+
+namespace caliper3d::io {
+
+namespace {
+
+// `value` rounded to `decimals` as a whole count of 10^-decimals, where that is what
+// std::to_chars prints: the product value * 10^decimals is off the exact one by a few parts in
+// 10^16 of itself, so wherever its fraction lies clearly away from a half, its rounding is the
+// exact value's. False near a half, for large values, NaN and infinity.
+bool scaledInteger(double value, int decimals, long long& n) {
+    static constexpr double kPower[] = {1.0, 10.0, 100.0, 1e3, 1e4, 1e5, 1e6};
+    if (decimals < 0 || decimals > 6) return false;
+    const double scaled = value * kPower[decimals];
+    if (!(std::abs(scaled) < 1e15)) return false;
+    const double whole = std::floor(scaled), fraction = scaled - whole;
+    if (std::abs(fraction - 0.5) <= 1e-12 * (1.0 + std::abs(scaled))) return false;
+    n = static_cast<long long>(whole) + (fraction > 0.5 ? 1 : 0);
+    return true;
+}
+
+}  // namespace
+
+void appendFixed(std::string& out, double value, int decimals) {
+    long long n = 0;
+    if (scaledInteger(value, decimals, n)) {
+        // Digits from the last, the point put in after `decimals` of them, then the sign.
+        char text[40];
+        char* p = text + sizeof text;
+        unsigned long long u =
+            n < 0 ? 0ULL - static_cast<unsigned long long>(n) : static_cast<unsigned long long>(n);
+        int k = 0;  // digits written
+        do {
+            if (k == decimals && k > 0) *--p = '.';
+            *--p = static_cast<char>('0' + u % 10);
+            u /= 10;
+            ++k;
+        } while (k <= decimals || u > 0);
+        if (n < 0) *--p = '-';
+        out.append(p, text + sizeof text);
+        return;
+    }
+    char buf[400];
+    const char* end =
+        std::to_chars(buf, buf + sizeof buf, value, std::chars_format::fixed, decimals).ptr;
+    const char* begin = buf;
+    if (*begin == '-' && std::none_of(begin, end, [](char c) { return c >= '1' && c <= '9'; }))
+        ++begin;
+    out.append(begin, end);
+}
+
+}  // namespace caliper3d::io
