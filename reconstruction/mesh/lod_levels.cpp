@@ -13,6 +13,7 @@
 #include <glm/gtc/constants.hpp>
 #include <glm/vec2.hpp>
 
+#include "reconstruction/mesh/swing_door.h"
 #include "reconstruction/mesh/wall_colouring.h"
 #include "reconstruction/well_geometry.h"
 
@@ -212,49 +213,10 @@ std::vector<std::size_t> keptRows(const WellGeometry& g, const SegmentKnots& seg
         for (std::size_t r = first; r <= last; ++r) rows.push_back(r);
         return rows;
     }
-    const std::vector<double>& depth = g.table().depth_m;
-    const std::size_t knots = segment.knots;
-    auto value = [&](std::size_t r, std::size_t k) { return segment.value(r, k); };
-    const double tol = level.tolerance_mm;
-    std::vector<double> lo(knots), hi(knots);
-    auto mustKeep = [&](std::size_t r) {
-        return r == first || r == last || !g.measured(r) ||
-               (g.measured(r) && (!g.measured(r - 1) || !g.measured(r + 1)));
-    };
-    rows.push_back(first);
-    std::size_t anchor = first;
-    while (anchor < last) {
-        std::fill(lo.begin(), lo.end(), -std::numeric_limits<double>::infinity());
-        std::fill(hi.begin(), hi.end(), std::numeric_limits<double>::infinity());
-        std::size_t best = anchor + 1;
-        const bool anchorMeasured = g.measured(anchor);
-        for (std::size_t r = anchor + 1; r <= last; ++r) {
-            const double dd = depth[r] - depth[anchor];
-            if (dd > level.maxSpacing_m && r > anchor + 1) break;
-            if (!anchorMeasured || mustKeep(r) || !(dd > 0.0)) {
-                best = r;
-                break;
-            }
-            // r may end the run when the straight line to it stays inside every corridor.
-            bool fits = true;
-            for (std::size_t k = 0; k < knots && fits; ++k) {
-                const double slope = (value(r, k) - value(anchor, k)) / dd;
-                fits = slope >= lo[k] && slope <= hi[k];
-            }
-            if (!fits) break;
-            best = r;
-            bool open = true;
-            for (std::size_t k = 0; k < knots; ++k) {
-                lo[k] = std::max(lo[k], (value(r, k) - tol - value(anchor, k)) / dd);
-                hi[k] = std::min(hi[k], (value(r, k) + tol - value(anchor, k)) / dd);
-                open = open && lo[k] <= hi[k];
-            }
-            if (!open) break;
-        }
-        rows.push_back(best);
-        anchor = best;
-    }
-    return rows;
+    return swingDoor(
+        g, last - first + 1, [first](std::size_t c) { return first + c; },
+        [&segment, first](std::size_t c, std::size_t k) { return segment.value(first + c, k); },
+        segment.knots, level);
 }
 
 glm::vec3 sceneCentre(const WellGeometry& g, std::size_t row) {

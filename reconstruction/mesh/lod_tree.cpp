@@ -8,6 +8,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "reconstruction/mesh/swing_door.h"
 #include "reconstruction/section/section_frame.h"
 #include "reconstruction/well_geometry.h"
 
@@ -54,64 +55,6 @@ struct SpanRows {
                                     //   or the tool's turn between them, drawn
     double maxRadius_mm = 0.0;      // largest knot value, undrawn
 };
-
-bool mustKeep(const WellGeometry& g, std::size_t row) {
-    const std::size_t rows = g.table().rowCount();
-    return !g.measured(row) || (row > 0 && !g.measured(row - 1)) ||
-           (row + 1 < rows && !g.measured(row + 1));
-}
-
-// The swing-door decimation of lod_levels.cpp over a subset of rows: `candidates`
-// (increasing, both span ends first and last) with their knots in `values`; a candidate
-// is left out while the straight line (in depth) between the kept candidates on either side
-// stays within `level.tolerance_mm` of every one of its knots.
-std::vector<std::size_t> swingDoor(const WellGeometry& g,
-                                   const std::vector<std::size_t>& candidates,
-                                   const std::vector<double>& values, std::size_t knots,
-                                   const LodLevel& level) {
-    std::vector<std::size_t> kept;
-    if (candidates.empty()) return kept;
-    const std::vector<double>& depth = g.table().depth_m;
-    const std::size_t last = candidates.size() - 1;
-    auto value = [&](std::size_t c, std::size_t k) { return values[c * knots + k]; };
-    std::vector<double> lo(knots), hi(knots);
-    kept.push_back(candidates[0]);
-    std::size_t anchor = 0;
-    while (anchor < last) {
-        std::fill(lo.begin(), lo.end(), -std::numeric_limits<double>::infinity());
-        std::fill(hi.begin(), hi.end(), std::numeric_limits<double>::infinity());
-        std::size_t best = anchor + 1;
-        const bool anchorMeasured = g.measured(candidates[anchor]);
-        for (std::size_t c = anchor + 1; c <= last; ++c) {
-            const double dd = depth[candidates[c]] - depth[candidates[anchor]];
-            if (dd > level.maxSpacing_m && c > anchor + 1) break;
-            if (!anchorMeasured || !(dd > 0.0)) {
-                best = c;
-                break;
-            }
-            // c may end the run when the straight line to it stays inside every corridor.
-            bool fits = true;
-            for (std::size_t k = 0; k < knots && fits; ++k) {
-                const double slope = (value(c, k) - value(anchor, k)) / dd;
-                fits = slope >= lo[k] && slope <= hi[k];
-            }
-            if (!fits) break;
-            best = c;
-            // A span end or a gap's edge ends the run (kept at every depth).
-            if (c == last || mustKeep(g, candidates[c])) break;
-            bool open = true;
-            for (std::size_t k = 0; k < knots; ++k) {
-                lo[k] = std::max(lo[k], (value(c, k) - level.tolerance_mm - value(anchor, k)) / dd);
-                hi[k] = std::min(hi[k], (value(c, k) + level.tolerance_mm - value(anchor, k)) / dd);
-                open = open && lo[k] <= hi[k];
-            }
-            if (!open) break;
-        }
-        kept.push_back(candidates[best]);
-        anchor = best;
-    }
-    return kept;
-}
 
 // The largest drawn distance (mm) between a measured candidate's pad polygon and the straight
 // line (in depth) between the polygons of the kept rows on either side of it, each polygon
@@ -245,7 +188,10 @@ Built buildSpan(const WellGeometry& g, int depth, std::size_t index,
         }
 
     const LodLevel level = spanLevel(g.options(), static_cast<int>(knots), depth);
-    result.rows = swingDoor(g, candidates, values, knots, level);
+    result.rows = swingDoor(
+        g, candidates.size(), [&candidates](std::size_t c) { return candidates[c]; },
+        [&values, knots](std::size_t c, std::size_t k) { return values[c * knots + k]; }, knots,
+        level);
     // The error is measured, not the tolerance assumed: the kept rows' straight lines differ
     // from the candidates' by at most `level.tolerance_mm` (times the exaggeration), and
     // mostly far less on a smooth wall. Both the children's polygons and this span's are
