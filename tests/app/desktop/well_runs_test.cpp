@@ -22,6 +22,7 @@
 #include "io/las_writer.h"
 #include "reconstruction/mesh/colour_map.h"
 #include "scenegraph/colour_legend.h"
+#include "support/run_pair.h"
 
 using namespace caliper3d;
 using reconstruction::SyntheticFeature;
@@ -29,24 +30,12 @@ using reconstruction::SyntheticWellSpec;
 
 namespace {
 
-// 60 m of vertical hole every 5 cm, 24 arms, a gamma ray, a washout 265.9 mm round at 30-32 m.
+// 60 m of vertical hole with a washout at 30-32 m; the second run deeper, turned, widened.
 SyntheticWellSpec firstRun() {
-    SyntheticWellSpec spec;
-    spec.armCount = 24;
-    spec.length_m = 60.0;
-    spec.step_m = 0.05;
-    spec.gammaRay = true;
-    spec.features.push_back({SyntheticFeature::Kind::Washout, 30.0, 32.0, 265.9, 265.9, 0.0, 0.0});
-    return spec;
+    return reconstruction::widenedWashoutRuns(60.0, 30.0).first;
 }
-
 SyntheticWellSpec secondRun() {
-    SyntheticWellSpec spec = firstRun();
-    spec.depthOffset_m = 0.35;
-    spec.initialToolAzimuth_deg = 90.0;
-    spec.features[0].dmax_mm += 10.0;
-    spec.features[0].dmin_mm += 10.0;
-    return spec;
+    return reconstruction::widenedWashoutRuns(60.0, 30.0).second;
 }
 
 class WellRunsTest : public ::testing::Test {

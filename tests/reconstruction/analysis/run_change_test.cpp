@@ -13,6 +13,7 @@
 #include "reconstruction/mesh/colour_map.h"
 #include "reconstruction/synthetic/synthetic_well.h"
 #include "reconstruction/well_interval.h"
+#include "support/run_pair.h"
 
 using namespace caliper3d;
 using namespace caliper3d::reconstruction;
@@ -38,27 +39,13 @@ Run analyse(const SyntheticWellSpec& spec) {
     return r;
 }
 
-// The other run: 150 m of vertical hole every 5 cm, 24 arms, a gamma ray, a round washout of
-// 265.9 mm over 100-102 m.
+// The other run: 150 m of vertical hole with a washout at 100-102 m. The drawn run: its
+// counter 0.35 m deeper, its tool 90 degrees round, the washout 10 mm wider.
 SyntheticWellSpec otherRun() {
-    SyntheticWellSpec spec;
-    spec.length_m = 150.0;
-    spec.step_m = 0.05;
-    spec.armCount = 24;
-    spec.gammaRay = true;
-    spec.features.push_back({Kind::Washout, 100.0, 102.0, 265.9, 265.9, 0.0, 0.0});
-    return spec;
+    return widenedWashoutRuns(150.0, 100.0).first;
 }
-
-// The drawn run: its counter 0.35 m deeper, its tool 90 degrees round, the washout 10 mm
-// wider (as `synth --depth-offset 0.35 --tool-azimuth 90 --widen 10`).
 SyntheticWellSpec drawnRun() {
-    SyntheticWellSpec spec = otherRun();
-    spec.depthOffset_m = 0.35;
-    spec.initialToolAzimuth_deg = 90.0;
-    spec.features[0].dmax_mm += 10.0;
-    spec.features[0].dmin_mm += 10.0;
-    return spec;
+    return widenedWashoutRuns(150.0, 100.0).second;
 }
 
 struct Pair {
