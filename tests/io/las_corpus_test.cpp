@@ -44,12 +44,6 @@ const Warning* warning(const LogInfo& info, const std::string& text) {
     return nullptr;
 }
 
-const Warning* warning(const Diagnostics& d, const std::string& text) {
-    for (const Warning& w : d.warnings)
-        if (w.message.find(text) != std::string::npos) return &w;
-    return nullptr;
-}
-
 using caliper3d::test::curve;
 using caliper3d::test::extra;
 
