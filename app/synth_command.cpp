@@ -15,6 +15,7 @@
 #include "io/column_text_writer.h"
 #include "io/las_writer.h"
 #include "io/number_parsing.h"
+#include "reconstruction/synthetic/synthetic_field.h"
 #include "reconstruction/synthetic/synthetic_well.h"
 
 namespace caliper3d::app {
@@ -49,18 +50,14 @@ std::vector<io::LasParameter> fieldLocation(double north_m, double east_m, doubl
 }
 
 // synth --field N: N wells of `length` metres, named FIELD-000, FIELD-001, ... (as their
-// files well-000.las, ...), each a profile in turn (their hole azimuths
-// turned 37 degrees a well, so no two builds point alike), wellheads about 25 m apart on a
-// square grid (their latitude, longitude and kelly bushing elevation, 25 m plus 1 m a row, in
-// the header: the field opens at its places), and DIR/manifest.csv listing them for caliper3d
-// batch.
+// files well-000.las, ...), laid out by reconstruction::syntheticFieldWell (the profiles in
+// turn, wellheads 25 m apart on a ring, each drilled away from its centre: no two cross), their
+// latitude, longitude and kelly bushing elevation in the header (the field opens at its
+// places), and DIR/manifest.csv listing them for caliper3d batch.
 void writeField(const std::string& folder, std::size_t wells, double length, double step,
                 int arms) {
     namespace fs = std::filesystem;
     fs::create_directories(folder);
-    const std::vector<std::string> profiles = reconstruction::syntheticProfileNames();
-    const std::size_t columns =
-        std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(std::sqrt(double(wells)))));
     const int digits = std::max(3, static_cast<int>(std::to_string(wells - 1).size()));
     const std::string manifestPath = (fs::path(folder) / "manifest.csv").string();
     io::AtomicOutput manifestFile(manifestPath);
@@ -68,22 +65,17 @@ void writeField(const std::string& folder, std::size_t wells, double length, dou
     manifest << "file,verb,wellhead\n";
     std::size_t sections = 0;
     for (std::size_t w = 0; w < wells; ++w) {
-        const std::string& profile = profiles[w % profiles.size()];
-        reconstruction::SyntheticWellSpec spec =
-            reconstruction::syntheticProfile(profile, length, step);
-        spec.armCount = arms;
-        spec.holeAzimuth_deg = std::fmod(spec.holeAzimuth_deg + 37.0 * double(w), 360.0);
+        reconstruction::SyntheticFieldWell well =
+            reconstruction::syntheticFieldWell(w, wells, length, step);
+        well.spec.armCount = arms;
         char name[64], wellName[64];
         std::snprintf(name, sizeof name, "well-%0*zu.las", digits, w);
         // Each well its own name in the header (WELL), numbered as its file.
         std::snprintf(wellName, sizeof wellName, "FIELD-%0*zu", digits, w);
-        const std::size_t gridColumn = w % columns, gridRow = w / columns;
         io::LasWriteOptions las;
         las.wellName = wellName;
-        las.parameters = fieldLocation(25.0 * static_cast<double>(gridRow),
-                                       25.0 * static_cast<double>(gridColumn),
-                                       25.0 + static_cast<double>(gridRow));
-        const io::SectionTable table = reconstruction::makeSyntheticWell(spec);
+        las.parameters = fieldLocation(well.north_m, well.east_m, well.elevation_m);
+        const io::SectionTable table = reconstruction::makeSyntheticWell(well.spec);
         io::writeLasFile((fs::path(folder) / name).string(), table, las);
         sections += table.rowCount();
         // No wellhead column value: each well is placed from its header.
@@ -160,8 +152,8 @@ int runSynth(const QStringList& args) {
         p.addOption(
             {"field",
              "Write N wells instead of one, into the folder -o names (well-000.las, ...: "
-             "the profiles in turn, hole azimuths varied, wellheads about 25 m apart by their "
-             "headers' latitude and longitude), with "
+             "the profiles in turn, wellheads 25 m apart on a ring by their headers' latitude "
+             "and longitude, each drilled away from the ring's centre), with "
              "a manifest.csv for caliper3d batch.",
              "N"});
         addRunOptions(p);

@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # A field in one scene, as a timed command-line run: N wells of 1 km (synth --field: named
-# wells at their header places, 25 m apart) logged every STEP metres, drawn by
-# `caliper3d render --stats` at 1280x800 in the overview (iso, every well framed) and down the
-# first well's hole (1 m below its top). Beside it, the time `caliper3d info` takes to read
-# every file (a plain parse of the field: info reads each log whole), so load_ms reads against
-# it. Prints one table row per field and view; docs/benchmarks.md records them.
+# wells at their header places, 25 m apart on a ring, drilled outwards) logged every STEP
+# metres, drawn by `caliper3d render --stats` at 1280x800 in the overview (iso, every well
+# framed) and down the first well's hole (1 m below its top). Beside it, the time
+# `caliper3d info` takes to read every file (a plain parse of the field: info reads each log
+# whole), so load_ms reads against it. Prints one table row per field and view; docs/benchmarks.md records them.
 #   bench/field_scene_bench.sh [BUILD_DIR] [WELLS:STEP ...]      (default: 20:0.1 100:0.1 20:0.0025)
 # Runs on llvmpipe without a display (EGL surfaceless), or on a GPU where one is at hand.
 set -euo pipefail

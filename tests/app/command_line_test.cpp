@@ -1,4 +1,5 @@
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -307,8 +308,8 @@ TEST(CommandLineTest, InfoShowsTheHeaderPlacementAndItsProjection) {
         << alone.output;
 }
 
-// synth --field writes header coordinates: its wells open about 25 m apart, the second row
-// 1 m higher.
+// synth --field writes header coordinates: its three wells open on a ring, 25 m from one
+// another, their kelly bushings 1 and 2 m higher than the first's.
 TEST(CommandLineTest, SynthFieldOpensAtItsHeaderPlaces) {
     const auto folder = caliper3d::test::freshScratchFolder("synth_field_places");
     ASSERT_EQ(run("synth --field 3 --length 20 -o " + folder.string() + "/").status, 0);
@@ -328,13 +329,16 @@ TEST(CommandLineTest, SynthFieldOpensAtItsHeaderPlaces) {
         offsets.push_back(o);
     }
     ASSERT_EQ(offsets.size(), 3U) << r.output;
-    // Grid 2 wide: well 1 east of well 0, well 2 north of it (grid metres differ from the
-    // ground's by the scale factor, 0.9996 near the zone's middle: 1 cm over 25 m).
-    EXPECT_NEAR(offsets[1][0], 0.0, 0.5);
-    EXPECT_NEAR(offsets[1][1], 25.0, 0.5);
-    EXPECT_NEAR(offsets[2][0], 25.0, 0.5);
-    EXPECT_NEAR(offsets[2][1], 0.0, 0.5);
-    EXPECT_DOUBLE_EQ(offsets[2][2], -1.0);
+    // Grid metres differ from the ground's by the scale factor, 0.9996 near the zone's
+    // middle: 1 cm over 25 m.
+    const auto apart = [&offsets](std::size_t a, std::size_t b) {
+        return std::hypot(offsets[a][0] - offsets[b][0], offsets[a][1] - offsets[b][1]);
+    };
+    EXPECT_NEAR(apart(0, 1), 25.0, 0.5);
+    EXPECT_NEAR(apart(1, 2), 25.0, 0.5);
+    EXPECT_NEAR(apart(2, 0), 25.0, 0.5);
+    EXPECT_DOUBLE_EQ(offsets[1][2], -1.0);
+    EXPECT_DOUBLE_EQ(offsets[2][2], -2.0);
 }
 
 // synth --field names each well after its file (FIELD-000 in well-000.las), in the LAS header.
