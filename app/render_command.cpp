@@ -25,6 +25,7 @@
 #include "scenegraph/picture/picture.h"
 #include "scenegraph/picture/png_file.h"
 #include "scenegraph/picture_scale.h"
+#include "scenegraph/render_caching.h"
 #include "scenegraph/render_stats.h"
 
 namespace caliper3d::app {
@@ -141,6 +142,8 @@ int renderPicture(const std::vector<WellSource>& sources, const RenderSettings& 
                   const std::string& out, std::vector<InputSummary>& inputs) {
     const auto start = std::chrono::steady_clock::now();
     scenegraph::initCoin();
+    // What will draw the picture, before the meshes are built (render caching on a GPU).
+    scenegraph::probeOffscreenRenderer();
     PicturePlan plan = r.plan;
     AssembledScene scene = assembleScene(sources, r.options, std::ref(plan));
     inputs = scene.inputs;

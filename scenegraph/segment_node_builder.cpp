@@ -12,6 +12,7 @@
 #include <Inventor/nodes/SoVertexProperty.h>
 
 #include "scenegraph/main_thread.h"
+#include "scenegraph/render_caching.h"
 
 namespace caliper3d::scenegraph {
 
@@ -52,14 +53,6 @@ SoIndexedTriangleStripSet* makeStrips(SoVertexProperty* vp,
 }
 
 }  // namespace
-
-bool renderCachingWanted() {
-    static const bool wanted = [] {
-        const char* value = std::getenv("CALIPER3D_RENDER_CACHING");
-        return value && std::strcmp(value, "on") == 0;
-    }();
-    return wanted;
-}
 
 SoNode* cacheableShape(SoNode* shape) {
     if (!renderCachingWanted()) return shape;

@@ -65,9 +65,8 @@ void setPartRanges(SoNode* levelNode, const reconstruction::SegmentMesh& shape,
 // renderCachingWanted() says. Every static mesh of a well goes through here: an SoLOD forbids
 // caching above it, so a cache can only sit below the level switches.
 SoNode* cacheableShape(SoNode* shape);
-// CALIPER3D_RENDER_CACHING=on|off, default off: on llvmpipe the display lists drew no faster
-// and held about 20 MB more at 4 km (docs/benchmarks.md, "The level-of-detail tree").
-bool renderCachingWanted();
+// renderCachingWanted() is in scenegraph/render_caching.h: on with a hardware OpenGL driver,
+// off on llvmpipe (or as CALIPER3D_RENDER_CACHING says).
 
 // A segment as an SoLOD: its levels (segment.firstLevel on), finest first, then an empty
 // group, switching at lodSwitchDistances. Main thread only.

@@ -29,6 +29,7 @@
 #include "app/desktop/wells_dock.h"
 #include "scenegraph/camera_setup.h"
 #include "scenegraph/colour_legend.h"
+#include "scenegraph/render_caching.h"
 #include "scenegraph/segment_node_builder.h"
 #include "scenegraph/view_overlay.h"
 
@@ -62,6 +63,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_overlay = std::make_unique<scenegraph::ViewOverlay>();
     m_viewRoot = new SoSeparator;
     m_viewRoot->ref();
+    // Notes the GL driver at the first frame: meshes built after it are render-cached on a
+    // hardware driver (scenegraph/render_caching.h).
+    m_viewRoot->addChild(scenegraph::makeRendererProbe());
     m_viewRoot->addChild(m_session->sceneRoot());
     m_viewRoot->addChild(m_overlay->root());
     m_viewer->setSceneGraph(m_viewRoot);
