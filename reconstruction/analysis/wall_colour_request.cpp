@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -122,6 +123,69 @@ std::vector<std::string> colourQuantities(const io::SectionTable& table) {
     return names;
 }
 
+namespace {
+
+// The wall coloured by the departure of each radius from the bit's (or, with no bit size, the
+// gauge's: the median equivalent diameter, as the report takes it).
+std::shared_ptr<const WallColouring> departureColouring(
+    const WellGeometry& g, const ColourRequest& request,
+    const std::function<const SectionValues&()>& analysed) {
+    const std::size_t rows = g.table().rowCount();
+    ColourLegend legend;
+    std::vector<float> values(rows, kNaNf);
+    legend.title = "radius - bit radius";
+    legend.unit = "mm";
+    bool anyBit = false;
+    for (std::size_t row = 0; row < rows; ++row) {
+        values[row] = static_cast<float>(g.bitRadius_mm(row));
+        anyBit = anyBit || std::isfinite(values[row]);
+    }
+    if (!anyBit) {
+        // As the report: the median equivalent diameter stands in for the bit size.
+        const double gauge = analysed().gauge_mm;
+        std::fill(values.begin(), values.end(), static_cast<float>(gauge / 2.0));
+        legend.title = "radius - gauge radius";
+        legend.note = "no bit size: gauge is the median equivalent diameter, " + millimetres(gauge);
+    }
+    double lo = -kDepartureRange_mm, hi = kDepartureRange_mm;
+    legend.range = "fixed";
+    if (request.range) {
+        std::tie(lo, hi) = *request.range;
+        if (!(lo < 0.0 && hi > 0.0))
+            throw std::invalid_argument(
+                "--colour-range: departures are drawn either side of the bit size, so LO "
+                "must be below 0 and HI above it");
+        legend.range = "given";
+    }
+    legend.noValue = anyNaNWhereMeasured(values, g);
+    return std::make_shared<const WallColouring>(
+        WallColouring::departure(std::move(values), lo, hi, std::move(legend)));
+}
+
+// The wall coloured by each section's class, the casing's colour in the legend where cased.
+std::shared_ptr<const WallColouring> classColouring(const WellGeometry& g, const SectionValues& a) {
+    ColourLegend legend;
+    legend.title = "class";
+    for (int c = 0; c <= static_cast<int>(BoreholeClass::Keyseat); ++c) {
+        const auto cls = static_cast<BoreholeClass>(c);
+        legend.categories.emplace_back(std::string(className(cls)), classColour(cls));
+    }
+    std::vector<float> values = a.cls;
+    // The casing's own colour, in the legend of a well that has cased sections.
+    const auto cased = static_cast<float>(BoreholeClass::Cased);
+    if (std::find(values.begin(), values.end(), cased) != values.end())
+        legend.categories.emplace_back(std::string(className(BoreholeClass::Cased)),
+                                       classColour(BoreholeClass::Cased));
+    if (a.gaugeFromSections)
+        legend.note =
+            "no bit size: gauge is the median equivalent diameter, " + millimetres(a.gauge_mm);
+    legend.noValue = anyNaNWhereMeasured(values, g);
+    return std::make_shared<const WallColouring>(
+        WallColouring::categories(std::move(values), std::move(legend)));
+}
+
+}  // namespace
+
 std::shared_ptr<const WallColouring> makeWallColouring(const WellGeometry& g,
                                                        const ColourRequest& request,
                                                        const SectionValues* known,
@@ -154,36 +218,7 @@ std::shared_ptr<const WallColouring> makeWallColouring(const WellGeometry& g,
         return *computed;
     };
 
-    if (name == "departure") {
-        legend.title = "radius - bit radius";
-        legend.unit = "mm";
-        bool anyBit = false;
-        for (std::size_t row = 0; row < rows; ++row) {
-            values[row] = static_cast<float>(g.bitRadius_mm(row));
-            anyBit = anyBit || std::isfinite(values[row]);
-        }
-        if (!anyBit) {
-            // As the report: the median equivalent diameter stands in for the bit size.
-            const double gauge = analysed().gauge_mm;
-            std::fill(values.begin(), values.end(), static_cast<float>(gauge / 2.0));
-            legend.title = "radius - gauge radius";
-            legend.note =
-                "no bit size: gauge is the median equivalent diameter, " + millimetres(gauge);
-        }
-        double lo = -kDepartureRange_mm, hi = kDepartureRange_mm;
-        legend.range = "fixed";
-        if (request.range) {
-            std::tie(lo, hi) = *request.range;
-            if (!(lo < 0.0 && hi > 0.0))
-                throw std::invalid_argument(
-                    "--colour-range: departures are drawn either side of the bit size, so LO "
-                    "must be below 0 and HI above it");
-            legend.range = "given";
-        }
-        legend.noValue = anyNaNWhereMeasured(values, g);
-        return std::make_shared<const WallColouring>(
-            WallColouring::departure(std::move(values), lo, hi, std::move(legend)));
-    }
+    if (name == "departure") return departureColouring(g, request, analysed);
 
     if (name == "dls") {
         legend.title = "dogleg severity";
@@ -198,25 +233,7 @@ std::shared_ptr<const WallColouring> makeWallColouring(const WellGeometry& g,
             values[row] = static_cast<float>(curve->values[row]);
     } else {
         const SectionValues& a = analysed();
-        if (name == "class") {
-            legend.title = "class";
-            for (int c = 0; c <= static_cast<int>(BoreholeClass::Keyseat); ++c) {
-                const auto cls = static_cast<BoreholeClass>(c);
-                legend.categories.emplace_back(std::string(className(cls)), classColour(cls));
-            }
-            values = a.cls;
-            // The casing's own colour, in the legend of a well that has cased sections.
-            const auto cased = static_cast<float>(BoreholeClass::Cased);
-            if (std::find(values.begin(), values.end(), cased) != values.end())
-                legend.categories.emplace_back(std::string(className(BoreholeClass::Cased)),
-                                               classColour(BoreholeClass::Cased));
-            if (a.gaugeFromSections)
-                legend.note = "no bit size: gauge is the median equivalent diameter, " +
-                              millimetres(a.gauge_mm);
-            legend.noValue = anyNaNWhereMeasured(values, g);
-            return std::make_shared<const WallColouring>(
-                WallColouring::categories(std::move(values), std::move(legend)));
-        }
+        if (name == "class") return classColouring(g, a);
         const bool diameter = name == "diameter";
         legend.title = diameter ? "equivalent diameter" : "ellipticity (dmax / dmin)";
         legend.unit = diameter ? "mm" : "";
