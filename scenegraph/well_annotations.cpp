@@ -410,12 +410,13 @@ SoSeparator* makeWellAnnotations(const reconstruction::WellGeometry& geometry,
 }
 
 SoSeparator* makeWholeWellAnnotations(const reconstruction::WellGeometry& geometry,
-                                      double radialExaggeration) {
+                                      double radialExaggeration, bool depthTicks) {
     auto* group = new SoSeparator;
     group->setName("well_annotations");
     if (SoSeparator* above = makeUnloggedPath(geometry)) group->addChild(above);
     AnnotationView view;
     view.radialExaggeration = radialExaggeration;
+    view.depthTicks = depthTicks;
     group->addChild(makeWellAnnotations(geometry, view));
     return group;
 }

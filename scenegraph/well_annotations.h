@@ -123,9 +123,10 @@ SoSeparator* makeWellAnnotations(const reconstruction::WellGeometry& geometry,
 
 // A well's unlogged path and annotations for a view that shows it whole with the default
 // direction of a viewer's camera (looking north), in one group: what a window adds beside
-// each well's WellScene.
+// each well's WellScene. Without `depthTicks`, its name and path only (a window of several
+// wells ticks the current one).
 SoSeparator* makeWholeWellAnnotations(const reconstruction::WellGeometry& geometry,
-                                      double radialExaggeration);
+                                      double radialExaggeration, bool depthTicks = true);
 
 // The path above the logged interval (reconstruction::unloggedPathLine), dashed and
 // thinner than the logged path; null when the log starts at the wellhead.

@@ -35,7 +35,7 @@ bool WellView::visible() const {
 
 void WellView::annotate(const reconstruction::WellGeometry& geometry, double radialExaggeration) {
     assertMainThread("WellView");
-    SoSeparator* annotations = makeWholeWellAnnotations(geometry, radialExaggeration);
+    SoSeparator* annotations = makeWholeWellAnnotations(geometry, radialExaggeration, m_depthTicks);
     if (!m_picks.empty())
         annotations->addChild(makePickMarkers(geometry, m_picks, radialExaggeration));
     if (m_annotations)

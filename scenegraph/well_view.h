@@ -44,6 +44,10 @@ public:
     // Image-log picks drawn with the annotations (scenegraph/pick_markers.h) from the next
     // annotate() on.
     void setPicks(std::vector<io::Pick> picks) { m_picks = std::move(picks); }
+    // Whether the annotations carry depth ticks, from the next annotate() on (a window of
+    // several wells ticks the current one only).
+    void setDepthTicks(bool ticks) { m_depthTicks = ticks; }
+    bool depthTicks() const { return m_depthTicks; }
     // Adds (or replaces) the annotations for `geometry` as drawn at `radialExaggeration`.
     void annotate(const reconstruction::WellGeometry& geometry, double radialExaggeration);
     // A new scene in place of the one shown, every segment's coarse levels built here (a
@@ -56,6 +60,7 @@ private:
     std::unique_ptr<WellScene> m_scene;
     SoSeparator* m_annotations = nullptr;  // a child of m_shown
     std::vector<io::Pick> m_picks;
+    bool m_depthTicks = true;
 };
 
 }  // namespace caliper3d::scenegraph

@@ -64,6 +64,26 @@ WellSession::WellSession(DeskModel& model, scenegraph::DetailLoader::CameraProbe
       m_detail(std::make_unique<scenegraph::DetailLoader>(std::move(probe))) {
     m_progressTimer.setInterval(kProgressInterval_ms);
     connect(&m_progressTimer, &QTimer::timeout, this, &WellSession::publishProgress);
+    connect(&m_model, &DeskModel::currentChanged, this, [this] { tickCurrentWell(); });
+    connect(&m_model, &DeskModel::wellsChanged, this, [this] { tickCurrentWell(); });
+}
+
+void WellSession::tickCurrentWell() {
+    int withGeometry = 0;
+    for (const auto& well : m_wells) {
+        const int index = well ? modelIndex(*well) : -1;  // a cancelled well leaves a null
+        if (index >= 0 && m_model.well(index).geometry) ++withGeometry;
+    }
+    for (const auto& well : m_wells) {
+        const int index = well ? modelIndex(*well) : -1;
+        if (index < 0 || !well->view) continue;
+        const DeskWell& record = m_model.well(index);
+        if (!record.geometry) continue;
+        const bool ticks = withGeometry <= 1 || index == m_model.currentWell();
+        if (well->view->depthTicks() == ticks) continue;
+        well->view->setDepthTicks(ticks);
+        well->view->annotate(*record.geometry, record.options.radialExaggeration);
+    }
 }
 
 WellSession::~WellSession() {
@@ -204,6 +224,7 @@ int WellSession::addWell(const WellSource& source, const LoadOptions& options) {
                 record.name = QString::fromStdString(g->table().wellName);
             record.geometry = g;
         });
+        tickCurrentWell();
     };
     callbacks.warnings = [this, &w](const io::Diagnostics& diagnostics) {
         edit(w, [&diagnostics, &w](DeskWell& record) {

@@ -153,6 +153,9 @@ private:
     void wellDone();
     double loadFraction(const Well& well) const;
     void applyStyleAfterLoad();
+    // Depth ticks on the current well only when several wells have geometry (their labels
+    // would pile up), on the one well otherwise; re-annotates the wells whose ticks change.
+    void tickCurrentWell();
     bool restyleWells(double radialExaggeration, const reconstruction::ColourRequest& colour,
                       int onlyId);  // -1: every well
     std::vector<std::shared_ptr<const reconstruction::WallColouring>> changeColourings(

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <QSignalSpy>
 
+#include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/nodes/SoSeparator.h>
 #include <Inventor/nodes/SoSwitch.h>
 
@@ -106,6 +107,40 @@ TEST_F(WellSessionTest, RestylesAndHidesAWellThroughTheModel) {
     EXPECT_EQ(model.well(0).geometry, well.geometry);
     ASSERT_GE(status.count(), 1);
     EXPECT_NE(status.last().at(0).toString().indexOf("cannot colour by 'porosity'"), -1);
+}
+
+// The tick marks under a well's switch (its scene and annotations).
+int tickMarks(SoNode* wellRoot) {
+    SoSearchAction search;
+    search.setName("tick_marks");
+    search.setInterest(SoSearchAction::ALL);
+    search.setSearchingAll(TRUE);
+    search.apply(wellRoot);
+    return search.getPaths().getLength();
+}
+
+// With two wells, only the current one carries depth ticks (both wells' labels would pile up
+// otherwise); the ticks follow the current well; one well alone keeps its own.
+TEST_F(WellSessionTest, OnlyTheCurrentWellOfSeveralCarriesDepthTicks) {
+    app::DeskModel model;
+    app::WellSession session(model, nullptr);
+    session.openWell(path(test::syntheticLog("example", 60.0, 0.1)), eightAndAHalfInch());
+    ASSERT_TRUE(
+        test::waitUntil([&] { return model.wellCount() == 1 && model.well(0).analysis; }, 120000));
+    ASSERT_EQ(session.sceneRoot()->getNumChildren(), 1);
+    EXPECT_EQ(tickMarks(session.sceneRoot()->getChild(0)), 1);
+
+    session.addWell(path(test::syntheticLog("circle", 40.0, 0.1)), eightAndAHalfInch());
+    ASSERT_TRUE(
+        test::waitUntil([&] { return model.wellCount() == 2 && model.well(1).analysis; }, 120000));
+    ASSERT_EQ(session.sceneRoot()->getNumChildren(), 2);
+    ASSERT_EQ(model.currentWell(), 0);
+    EXPECT_EQ(tickMarks(session.sceneRoot()->getChild(0)), 1);
+    EXPECT_EQ(tickMarks(session.sceneRoot()->getChild(1)), 0);
+
+    model.setCurrent(1, 10.0);
+    EXPECT_EQ(tickMarks(session.sceneRoot()->getChild(0)), 0);
+    EXPECT_EQ(tickMarks(session.sceneRoot()->getChild(1)), 1);
 }
 
 TEST_F(WellSessionTest, CancelRemovesOnlyTheWellsStillLoading) {
