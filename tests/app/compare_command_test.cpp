@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -50,6 +51,18 @@ SyntheticWellSpec secondRun() {
     spec.features[0].dmax_mm = 255.9;
     spec.features.push_back({Kind::Washout, 50.0, 52.0, 265.9, 265.9, 0.0, 0.0});
     return spec;
+}
+
+// Two runs to splice: run 1 logs 0-60 m, run 2 40-100 m of its counter, which reads 0.3 m
+// deeper than run 1's.
+std::pair<SyntheticWellSpec, SyntheticWellSpec> overlappingRuns() {
+    SyntheticWellSpec upper = firstRun();
+    upper.length_m = 60.0;
+    SyntheticWellSpec lower = firstRun();
+    lower.top_m = 40.0;
+    lower.length_m = 60.0;
+    lower.depthOffset_m = 0.3;
+    return {upper, lower};
 }
 
 std::string writeRun(const std::filesystem::path& dir, const std::string& name,
@@ -314,12 +327,7 @@ TEST(SpliceCommandTest, TwoOverlappingRunsBecomeOneLogWithEveryFeatureAtItsDepth
     // Run 1 logs 0-60 m; run 2 40-100 m of its counter, which reads 0.3 m deeper (the hole at
     // 39.7-99.7 m), with a washout at 70-72 m of the hole. Joined in the overlap's middle.
     const auto dir = caliper3d::test::freshScratchFolder("splice_pair");
-    SyntheticWellSpec upper = firstRun();
-    upper.length_m = 60.0;
-    SyntheticWellSpec lower = firstRun();
-    lower.top_m = 40.0;
-    lower.length_m = 60.0;
-    lower.depthOffset_m = 0.3;
+    auto [upper, lower] = overlappingRuns();
     lower.features.push_back({Kind::Washout, 70.0, 72.0, 265.9, 265.9, 0.0, 0.0});
     const std::string run1 = writeRun(dir, "run1.las", upper);
     const std::string run2 = writeRun(dir, "run2.las", lower);
@@ -361,12 +369,7 @@ TEST(SpliceCommandTest, EachRunsCasingAndBitSizeReadBackOverItsOwnRows) {
     // the bit size in ~Parameter only (no BS curve). Joined at 49.85 m, read back: run 1's rows
     // cased to 10.01 m only, run 2's cased to 54.71 m, each row with its run's bit size.
     const auto dir = caliper3d::test::freshScratchFolder("splice_casing");
-    SyntheticWellSpec upper = firstRun();
-    upper.length_m = 60.0;
-    SyntheticWellSpec lower = firstRun();
-    lower.top_m = 40.0;
-    lower.length_m = 60.0;
-    lower.depthOffset_m = 0.3;
+    auto [upper, lower] = overlappingRuns();
     const auto writeWithHeader = [&](const std::string& name, const SyntheticWellSpec& spec,
                                      const std::vector<io::LasParameter>& parameters) {
         io::SectionTable t = makeSyntheticWell(spec);
