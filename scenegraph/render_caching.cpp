@@ -1,7 +1,5 @@
 #include "scenegraph/render_caching.h"
 
-#include <algorithm>
-#include <cctype>
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
@@ -13,6 +11,7 @@
 #include <Inventor/nodes/SoCallback.h>
 #include <Inventor/nodes/SoSeparator.h>
 
+#include "io/text.h"
 #include "scenegraph/offscreen_renderer.h"
 
 namespace caliper3d::scenegraph {
@@ -41,9 +40,7 @@ void noteRenderer(void*, SoAction* action) {
 }  // namespace
 
 bool isSoftwareRenderer(const std::string& glRenderer) {
-    std::string lower = glRenderer;
-    std::transform(lower.begin(), lower.end(), lower.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string lower = io::lower(glRenderer);
     for (const char* name : {"llvmpipe", "softpipe", "swrast", "software"})
         if (lower.find(name) != std::string::npos) return true;
     return false;
