@@ -128,8 +128,9 @@ bool describeWell(const WellSource& source, const LoadOptions& options,
     int needed = 0, arms = 0;
     std::vector<RowReading> readings;
     reconstruction::InvalidArmReadings invalid;
+    const io::ReadOptions read = reconstruction::readOptionsFor(source, options);
     io::LogInfo info = io::describeLog(
-        file, options.read,
+        file, read,
         [&](const io::SectionTable& rows) {
             arms = rows.armCount;
             needed = reconstruction::minValidArms(arms, geometry.minValidArmFraction);
@@ -144,7 +145,7 @@ bool describeWell(const WellSource& source, const LoadOptions& options,
         !source.surveyPath.empty());
     // Which north its azimuths are from, as the other verbs settle it.
     const reconstruction::NorthCorrection north =
-        reconstruction::resolveNorth(info.north, info.location, options.read);
+        reconstruction::resolveNorth(info.north, info.location, read);
     info.north.resolved = north.summary;
     for (const std::string& warning : north.warnings) info.diagnostics.warn(file, 0, warning);
     std::fputs(io::formatLogInfo(info).c_str(), stdout);

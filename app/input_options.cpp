@@ -56,6 +56,10 @@ std::vector<WellSource> wellSourcesFrom(const QCommandLineParser& parser,
     const auto count = static_cast<int>(files.size());
     std::vector<WellSource> out(files.size());
     for (std::size_t i = 0; i < files.size(); ++i) out[i].path = files[i];
+    if (parser.isSet("casing") && parser.isSet("casing-each"))
+        throw UsageError(
+            "--casing and --casing-each exclude each other: --casing gives one program for "
+            "every file, --casing-each one for each");
     LoadOptions unused;
     for (const WellOption& option : wellOptions()) {
         if (option.group != OptionGroup::PerWell || !parser.isSet(option.name)) continue;

@@ -301,6 +301,37 @@ void layoutRows(Rows& rows) {
     logicalFile.blank = "the first with caliper curves";
 }
 
+// A casing program as --casing and --casing-each take it: strings "BOTTOM,SIZE[,WEIGHT|ID]"
+// separated by ';', sorted by shoe depth.
+std::vector<io::CasingString> casingProgram(const std::string& t, const char* option) {
+    std::vector<io::CasingString> program;
+    std::size_t start = 0;
+    while (start <= t.size()) {
+        const std::size_t end = std::min(t.find(';', start), t.size());
+        const std::string one = trimmed(t.substr(start, end - start));
+        start = end + 1;
+        if (one.empty()) continue;
+        std::string error;
+        const std::optional<io::CasingString> c = io::parseCasingSpec(one, error);
+        if (!c) throw UsageError(std::string("--") + option + ": " + error);
+        program.push_back(*c);
+    }
+    std::sort(program.begin(), program.end(),
+              [](const io::CasingString& a, const io::CasingString& b) {
+                  return a.bottom_m < b.bottom_m;
+              });
+    return program;
+}
+
+// The text casingProgram reads back to `program`; nullopt for none.
+std::optional<std::string> casingProgramText(const std::vector<io::CasingString>& program) {
+    if (program.empty()) return std::nullopt;
+    std::string text;
+    for (const io::CasingString& c : program)
+        text += (text.empty() ? "" : ";") + io::casingSpecText(c);
+    return text;
+}
+
 // How the file's data are read: nulls, bit size, casing.
 void fileRows(Rows& rows) {
     rows.add(
@@ -349,30 +380,10 @@ void fileRows(Rows& rows) {
         "diameter (7in, 177.8mm), then weight (17lb/ft, 25.3kg/m) or inner diameter (6.538in); "
         "repeat it for each string.",
         [](const std::string& t, WellSource&, LoadOptions& o) {
-            std::vector<io::CasingString> program;
-            std::size_t start = 0;
-            while (start <= t.size()) {
-                const std::size_t end = std::min(t.find(';', start), t.size());
-                const std::string one = trimmed(t.substr(start, end - start));
-                start = end + 1;
-                if (one.empty()) continue;
-                std::string error;
-                const std::optional<io::CasingString> c = io::parseCasingSpec(one, error);
-                if (!c) throw UsageError("--casing: " + error);
-                program.push_back(*c);
-            }
-            std::sort(program.begin(), program.end(),
-                      [](const io::CasingString& a, const io::CasingString& b) {
-                          return a.bottom_m < b.bottom_m;
-                      });
-            o.read.casing = std::move(program);
+            o.read.casing = casingProgram(t, "casing");
         },
         [](const WellSource&, const LoadOptions& o) -> std::optional<std::string> {
-            if (o.read.casing.empty()) return std::nullopt;
-            std::string text;
-            for (const io::CasingString& c : o.read.casing)
-                text += (text.empty() ? "" : ";") + io::casingSpecText(c);
-            return text;
+            return casingProgramText(o.read.casing);
         });
     casing.repeatable = true;
     casing.effect = OptionEffect::Log;
@@ -664,6 +675,27 @@ void perWellRows(Rows& rows) {
     wellhead.column = "wellhead";
     wellhead.field = "Wellhead";
     wellhead.blank = "E,N,ELEV in metres, e.g. 512300,6801200,25.5 (none: from the header)";
+
+    WellOption& casingEach = rows.add(
+        "casing-each", "PROGRAM", G::PerWell,
+        "Each FILE's own casing program, once per FILE, in order: strings as --casing takes "
+        "them, ';' between, or '-' for the file's own header. Runs of one well logged weeks "
+        "apart each see only the casing set before them.",
+        [](const std::string& t, WellSource& w, LoadOptions&) {
+            if (trimmed(t) == "-") {
+                w.casing.reset();
+                return;
+            }
+            std::vector<io::CasingString> program = casingProgram(t, "casing-each");
+            if (program.empty())
+                throw UsageError("--casing-each: give BOTTOM,SIZE[,WEIGHT|ID] strings, or '-'");
+            w.casing = std::move(program);
+        },
+        [](const WellSource& w, const LoadOptions&) -> std::optional<std::string> {
+            if (!w.casing) return std::nullopt;
+            return casingProgramText(*w.casing);
+        });
+    casingEach.effect = OptionEffect::Log;
 }
 
 // Each row in the order `caliper3d VERB --help` lists them; the messages are the command

@@ -75,6 +75,12 @@ bool operator==(const LoadOptions& a, const LoadOptions& b) {
            a.readThreads == b.readThreads;
 }
 
+io::ReadOptions readOptionsFor(const WellSource& source, const LoadOptions& options) {
+    io::ReadOptions read = options.read;
+    if (source.casing) read.casing = *source.casing;
+    return read;
+}
+
 LoadedWell loadWell(const WellSource& source, const LoadOptions& options, const Wellhead& origin) {
     LoadedWell out;
     const GeometryOptions geometry = wellGeometryOptions(source, options, origin, &out.diagnostics);
@@ -82,7 +88,8 @@ LoadedWell loadWell(const WellSource& source, const LoadOptions& options, const 
     stream.cancel = options.cancel;  // checked per block: ReadCancelled
     stream.threads = options.readThreads;
     out.table = std::make_shared<const io::SectionTable>(loadWellTable(
-        source.path, options.read, !source.surveyPath.empty(), &out.diagnostics, stream));
+        source.path, readOptionsFor(source, options), !source.surveyPath.empty(), &out.diagnostics,
+        stream));
     out.geometry = std::make_shared<const WellGeometry>(out.table, geometry);
     if (options.geometryWarnings) warnGeometry(*out.geometry, out.diagnostics);
     return out;

@@ -26,10 +26,14 @@ struct WellSource {
     std::string surveyPath;  // empty: the path comes from the log's own DEVI/HAZI
     std::optional<Wellhead> wellhead;
     std::string picksPath;  // image-log picks shown beside the caliper (io::readPicks); "" none
+    // This log's casing program (--casing-each), replacing its header's and any program given
+    // for all wells; nullopt: those. Runs of one well logged weeks apart each see the casing
+    // set when they were logged.
+    std::optional<std::vector<io::CasingString>> casing;
 };
 inline bool operator==(const WellSource& a, const WellSource& b) {
     return a.path == b.path && a.surveyPath == b.surveyPath && a.wellhead == b.wellhead &&
-           a.picksPath == b.picksPath;
+           a.picksPath == b.picksPath && a.casing == b.casing;
 }
 inline bool operator!=(const WellSource& a, const WellSource& b) {
     return !(a == b);
@@ -89,6 +93,9 @@ LoadedWell loadWell(const WellSource& source, const LoadOptions& options,
 
 // Geometry options of a plain well (no survey, at the scene origin).
 GeometryOptions geometryOptions(const LoadOptions& options);
+// How `source` is read under `options`: its own casing program (WellSource::casing) in place
+// of the one given for all wells.
+io::ReadOptions readOptionsFor(const WellSource& source, const LoadOptions& options);
 // Geometry options of `source`: its survey read and checked first (its warnings to
 // `diagnostics`, may be null) and its wellhead placed relative to `origin`.
 GeometryOptions wellGeometryOptions(const WellSource& source, const LoadOptions& options,

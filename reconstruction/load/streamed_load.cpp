@@ -181,7 +181,8 @@ LoadedWell loadWellStreamed(const WellSource& source, const LoadOptions& options
                 handover.changed.notify_one();
             };
             io::SectionTable whole =
-                loadWellTable(source.path, options.read, surveyGiven, &readDiagnostics, stream);
+                loadWellTable(source.path, readOptionsFor(source, options), surveyGiven,
+                              &readDiagnostics, stream);
             const std::lock_guard<std::mutex> lock(handover.mutex);
             handover.whole = std::move(whole);
             handover.done = true;

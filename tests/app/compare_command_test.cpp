@@ -362,46 +362,22 @@ TEST(SpliceCommandTest, TwoOverlappingRunsBecomeOneLogWithEveryFeatureAtItsDepth
     }
 }
 
-TEST(SpliceCommandTest, EachRunsCasingAndBitSizeReadBackOverItsOwnRows) {
-    // Run 1: a 12 1/4 in hole below 13 3/8 in 68 lb/ft casing set to 10.01 m; run 2, its
-    // counter 0.3 m deeper: 8 1/2 in below 9 5/8 in 47 lb/ft casing set to 55.01 m of its
-    // counter (54.71 m of run 1's), in what run 1 logged as open hole. Both give the casing and
-    // the bit size in ~Parameter only (no BS curve). Joined at 49.85 m, read back: run 1's rows
-    // cased to 10.01 m only, run 2's cased to 54.71 m, each row with its run's bit size.
-    const auto dir = caliper3d::test::freshScratchFolder("splice_casing");
-    auto [upper, lower] = overlappingRuns();
-    const auto writeWithHeader = [&](const std::string& name, const SyntheticWellSpec& spec,
-                                     const std::vector<io::LasParameter>& parameters) {
-        io::SectionTable t = makeSyntheticWell(spec);
-        t.bitSize_mm.clear();
-        io::LasWriteOptions las;
-        las.parameters = parameters;
-        const std::string path = (dir / name).string();
-        io::writeLasFile(path, t, las);
-        return path;
-    };
-    const std::string run1 = writeWithHeader("run1.las", upper,
-                                             {{"BS", "IN", "12.25", "bit size"},
-                                              {"CSGL", "M", "10.01", "casing shoe"},
-                                              {"CSGS", "IN", "13.375", "casing size"},
-                                              {"CSGW", "LB/FT", "68", "casing weight"},
-                                              {"CSGT", "", "SURFACE", "casing type"}});
-    const std::string run2 = writeWithHeader("run2.las", lower,
-                                             {{"BS", "IN", "8.5", "bit size"},
-                                              {"CSGL", "M", "55.01", "casing shoe"},
-                                              {"CSGS", "IN", "9.625", "casing size"},
-                                              {"CSGW", "LB/FT", "47", "casing weight"}});
-    const auto out = dir / "spliced.las";
-    const CommandRun r = runCaliper3d("splice " + run1 + " " + run2 + " -o " + out.string());
-    ASSERT_EQ(r.status, 0) << r.output;
+namespace {
 
+// The spliced log of overlappingRuns() with run 1 in 12 1/4 in hole below 13 3/8 in 68 lb/ft
+// casing set to 10.01 m, run 2 in 8 1/2 in hole below 9 5/8 in 47 lb/ft casing set to 55.01 m
+// of its counter (54.71 m of run 1's), in what run 1 logged as open hole; joined at 49.85 m.
+// Read back: run 1's rows cased to 10.01 m only, run 2's cased to 54.71 m, each row with its
+// run's bit size.
+void expectEachRunsCasingOverItsOwnRows(const std::filesystem::path& spliced,
+                                        const std::string& surfaceType) {
     io::Diagnostics diagnostics;
-    const io::SectionTable t = io::readCaliperLog(out.string(), {}, &diagnostics);
+    const io::SectionTable t = io::readCaliperLog(spliced.string(), {}, &diagnostics);
     ASSERT_EQ(t.rowCount(), 1995u);
     ASSERT_EQ(t.casing.size(), 2u);
     const double id133 = (13.375 - 2 * 0.480) * 25.4, id958 = (9.625 - 2 * 0.472) * 25.4;
     EXPECT_NEAR(t.casing[0].innerDiameter_mm, id133, 1e-9);
-    EXPECT_EQ(t.casing[0].type, "SURFACE");
+    EXPECT_EQ(t.casing[0].type, surfaceType);
     EXPECT_NEAR(t.casing[1].innerDiameter_mm, id958, 1e-9);
     EXPECT_NEAR(t.casing[1].bottom_m, 54.71, 1e-9);
     const std::vector<double>& runs = t.extraCurves.back().values;
@@ -425,6 +401,74 @@ TEST(SpliceCommandTest, EachRunsCasingAndBitSizeReadBackOverItsOwnRows) {
         }
     }
     EXPECT_EQ(cased, 201u + 98u);
+}
+
+// overlappingRuns() with `parameters` in each run's ~Parameter section (no BS curve).
+std::pair<std::string, std::string> runsWithHeaders(
+    const std::filesystem::path& dir, const std::vector<io::LasParameter>& upperParameters,
+    const std::vector<io::LasParameter>& lowerParameters) {
+    auto [upper, lower] = overlappingRuns();
+    const auto writeWithHeader = [&](const std::string& name, const SyntheticWellSpec& spec,
+                                     const std::vector<io::LasParameter>& parameters) {
+        io::SectionTable t = makeSyntheticWell(spec);
+        t.bitSize_mm.clear();
+        io::LasWriteOptions las;
+        las.parameters = parameters;
+        const std::string path = (dir / name).string();
+        io::writeLasFile(path, t, las);
+        return path;
+    };
+    return {writeWithHeader("run1.las", upper, upperParameters),
+            writeWithHeader("run2.las", lower, lowerParameters)};
+}
+
+}  // namespace
+
+TEST(SpliceCommandTest, EachRunsCasingAndBitSizeReadBackOverItsOwnRows) {
+    // Both runs give their casing and bit size in ~Parameter only.
+    const auto dir = caliper3d::test::freshScratchFolder("splice_casing");
+    const auto [run1, run2] = runsWithHeaders(dir,
+                                              {{"BS", "IN", "12.25", "bit size"},
+                                               {"CSGL", "M", "10.01", "casing shoe"},
+                                               {"CSGS", "IN", "13.375", "casing size"},
+                                               {"CSGW", "LB/FT", "68", "casing weight"},
+                                               {"CSGT", "", "SURFACE", "casing type"}},
+                                              {{"BS", "IN", "8.5", "bit size"},
+                                               {"CSGL", "M", "55.01", "casing shoe"},
+                                               {"CSGS", "IN", "9.625", "casing size"},
+                                               {"CSGW", "LB/FT", "47", "casing weight"}});
+    const auto out = dir / "spliced.las";
+    const CommandRun r = runCaliper3d("splice " + run1 + " " + run2 + " -o " + out.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    expectEachRunsCasingOverItsOwnRows(out, "SURFACE");
+}
+
+TEST(SpliceCommandTest, CasingEachGivesEachRunItsOwnProgram) {
+    // The headers carry bit sizes only: each run's casing comes from --casing-each, in order.
+    // --casing, one program for every run, would case run 1's open hole with the 9 5/8 in
+    // string set only after it was logged.
+    const auto dir = caliper3d::test::freshScratchFolder("splice_casing_each");
+    const auto [run1, run2] = runsWithHeaders(dir, {{"BS", "IN", "12.25", "bit size"}},
+                                              {{"BS", "IN", "8.5", "bit size"}});
+    const auto out = dir / "spliced.las";
+    const CommandRun r = runCaliper3d(
+        "splice --casing-each '10.01,13.375in,68lb/ft' --casing-each '55.01,9.625in,47lb/ft' " +
+        run1 + " " + run2 + " -o " + out.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    expectEachRunsCasingOverItsOwnRows(out, "");
+
+    const CommandRun both = runCaliper3d("splice --casing 10.01,13.375in,68lb/ft --casing-each - "
+                                         "--casing-each - " +
+                                         run1 + " " + run2 + " -o " + out.string());
+    EXPECT_EQ(both.status, 2) << both.output;
+    EXPECT_NE(both.output.find("--casing and --casing-each exclude each other"),
+              std::string::npos)
+        << both.output;
+    const CommandRun once = runCaliper3d("splice --casing-each 10.01,13.375in " + run1 + " " +
+                                         run2 + " -o " + out.string());
+    EXPECT_EQ(once.status, 2) << once.output;
+    EXPECT_NE(once.output.find("give it once per file, in order"), std::string::npos)
+        << once.output;
 }
 
 TEST(SpliceCommandTest, RunsOfDifferentToolsOrWithoutOverlapAreRefused) {

@@ -50,6 +50,7 @@ const std::map<std::string, std::vector<std::string>>& samples() {
         {"compare-with", {"run1.las", "/data/first run.las"}},
         {"survey", {"surveys/a survey.csv", "/data/-odd.csv"}},
         {"wellhead", {"512300.25,6801200.5,25.5", "0,0,-3", "1e6,-2.5,0"}},
+        {"casing-each", {"88.3,7in,17lb/ft", "30,177.8mm,166.1mm;1200,9.625,47lb/ft"}},
     };
     return kSamples;
 }
