@@ -18,6 +18,11 @@ std::string fileName(const std::string& path) {
 
 }  // namespace
 
+ComparedRuns comparedRuns(const reconstruction::RunChange& change, const std::string& otherPath) {
+    return {otherPath, change.figures, change.md_m.size(),
+            change.drawnName + " minus " + change.otherName + ", equivalent diameter"};
+}
+
 bool coloursByChange(const LoadOptions& options) {
     return options.colour.quantity == reconstruction::kChangeQuantity;
 }

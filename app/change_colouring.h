@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "app/input_summary.h"
 #include "app/well_option_table.h"
 #include "reconstruction/analysis/run_change.h"
 #include "reconstruction/analysis/well_analysis.h"
@@ -34,6 +35,9 @@ private:
     reconstruction::WellAnalysis m_analysis;
     int m_threads = 1;
 };
+
+// What a --summary line says of a wall coloured by `change` against the run at `otherPath`.
+ComparedRuns comparedRuns(const reconstruction::RunChange& change, const std::string& otherPath);
 
 // True when `options` asks for the wall coloured by change.
 bool coloursByChange(const LoadOptions& options);

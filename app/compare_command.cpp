@@ -102,49 +102,9 @@ reconstruction::DepthMapping depthMapping(VerbParser& verb, const AnalysedRun& a
                                      {b.loaded.geometry.get(), &b.analysis}, request);
 }
 
-nlohmann::ordered_json comparisonJson(const reconstruction::RunComparison& r) {
-    const auto finite = [](double v) {
-        return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
-    };
-    nlohmann::ordered_json zones = nlohmann::ordered_json::array();
-    for (const reconstruction::ZoneChange& z : r.zones)
-        zones.push_back({{"change", std::string(reconstruction::zoneChangeName(z.kind))},
-                         {"class", std::string(reconstruction::className(z.cls))},
-                         {"top1_m", z.top1_m},
-                         {"bottom1_m", z.bottom1_m},
-                         {"top2_m", z.top2_m},
-                         {"bottom2_m", z.bottom2_m},
-                         {"max_d_dmax_mm", finite(z.maxDmaxChange_mm)}});
-    const auto largest = [&](const reconstruction::LargestChange& c) {
-        return nlohmann::ordered_json{{"change_mm", finite(c.change)}, {"md_m", finite(c.md1_m)}};
-    };
-    return {{"shift_m", r.mapping.shift_m},
-            {"shift_given", r.mapping.given},
-            {"match_curve", r.mapping.curve},
-            {"correlation", finite(r.mapping.match.correlation)},
-            {"stretch_mm_per_m", r.mapping.stretch * 1000.0},
-            {"overlap_m", {r.overlapTop1_m, r.overlapBottom1_m}},
-            {"sections", r.sections.size()},
-            {"compared", r.compared},
-            {"oriented", r.oriented},
-            {"outlines_skipped", r.outlinesSkipped},
-            {"bias_mm", {finite(r.bias1.offset_mm), finite(r.bias2.offset_mm)}},
-            {"repeatability_mm", r.repeatability95_mm},
-            {"significant", r.significant},
-            {"significant_m", r.significant_m},
-            {"class_changes", r.classChanges},
-            {"largest_d_deq", largest(r.deq)},
-            {"largest_d_dmin", largest(r.dmin)},
-            {"largest_d_dmax", largest(r.dmax)},
-            {"volumes_m3", {r.volume1_m3, r.volume2_m3}},
-            {"volume_length_m", r.volumeLength_m},
-            {"zones", zones},
-            {"agree", r.agree()}};
-}
-
 // Reads, analyses, matches and compares the two runs; writes the outputs and the summary.
-void compareWells(VerbParser& verb, const std::vector<WellSource>& wells, InputSummary& summary,
-                  nlohmann::ordered_json& details) {
+void compareWells(VerbParser& verb, const std::vector<WellSource>& wells,
+                  InputSummary& summary) {
     const QCommandLineParser& p = verb.parser();
     LoadOptions load = inputOptionsFrom(p);
     reconstruction::AnalysisOptions analysis;
@@ -172,9 +132,10 @@ void compareWells(VerbParser& verb, const std::vector<WellSource>& wells, InputS
             ? number(verb, "repeatability", true)
             : reconstruction::repeatabilityLimit_mm({run1.loaded.geometry.get(), &run1.analysis},
                                                     {run2.loaded.geometry.get(), &run2.analysis});
-    const reconstruction::RunComparison r =
+    auto comparison = std::make_shared<reconstruction::RunComparison>(
         reconstruction::compareRuns({run1.loaded.geometry.get(), &run1.analysis},
-                                    {run2.loaded.geometry.get(), &run2.analysis}, options);
+                                    {run2.loaded.geometry.get(), &run2.analysis}, options));
+    const reconstruction::RunComparison& r = *comparison;
 
     const std::string out = verb.value("output"), zones = verb.value("zones");
     if (out == "-")
@@ -199,7 +160,7 @@ void compareWells(VerbParser& verb, const std::vector<WellSource>& wells, InputS
         }
     summary.addWarnings(run1.loaded.diagnostics);
     summary.addWarnings(run2.loaded.diagnostics);
-    details = comparisonJson(r);
+    summary.compared = ComparedRuns{wells[1].path, comparison, r.sections.size(), ""};
 }
 
 }  // namespace
@@ -235,10 +196,9 @@ int runCompare(const QStringList& args) {
         InputSummary summary;
         summary.file = files[0];
         summary.verb = "compare";
-        nlohmann::ordered_json details;
         int status = kExitOk;
         try {
-            compareWells(verb, wells, summary, details);
+            compareWells(verb, wells, summary);
         } catch (const UsageError&) {
             throw;
         } catch (const std::exception& e) {
@@ -248,8 +208,7 @@ int runCompare(const QStringList& args) {
         }
         stampCost(summary, start);
         nlohmann::ordered_json line = toJson(summary);
-        line["file2"] = files[1];
-        if (!details.is_null()) line["comparison"] = details;
+        line["file2"] = files[1];  // also where the runs could not be compared
         summaries.write(line);
         return status;
     });

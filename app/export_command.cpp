@@ -113,12 +113,17 @@ int exportMesh(const std::vector<WellSource>& sources, const LoadOptions& option
             steps.step(++done);
             // Drawn as asked (--colour-by, --exaggerate); each well over its own colour range,
             // as it is freed before the next is read.
-            const reconstruction::WellGeometry styled = loaded.geometry->restyled(
-                options.radialExaggeration,
-                reference ? reconstruction::changeColouring(*loaded.geometry,
-                                                            reference->against(*loaded.geometry),
-                                                            options.colour.range)
-                          : reconstruction::makeWallColouring(*loaded.geometry, options.colour));
+            std::shared_ptr<const reconstruction::WallColouring> colouring;
+            if (reference) {
+                const reconstruction::RunChange change = reference->against(*loaded.geometry);
+                input.compared = comparedRuns(change, reference->path());
+                colouring = reconstruction::changeColouring(*loaded.geometry, change,
+                                                            options.colour.range);
+            } else {
+                colouring = reconstruction::makeWallColouring(*loaded.geometry, options.colour);
+            }
+            const reconstruction::WellGeometry styled =
+                loaded.geometry->restyled(options.radialExaggeration, colouring);
             writer.addWell(styled, std::filesystem::path(source.path).stem().string(), detail);
             steps.step(++done);
             ++wells;

@@ -17,6 +17,52 @@
 
 namespace caliper3d::app {
 
+namespace {
+
+// The figures of a comparison as `compare` writes them (docs/formats.md, "Summary lines").
+nlohmann::ordered_json comparisonJson(const reconstruction::RunComparison& r,
+                                      std::size_t sections) {
+    const auto finite = [](double v) {
+        return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
+    };
+    nlohmann::ordered_json zones = nlohmann::ordered_json::array();
+    for (const reconstruction::ZoneChange& z : r.zones)
+        zones.push_back({{"change", std::string(reconstruction::zoneChangeName(z.kind))},
+                         {"class", std::string(reconstruction::className(z.cls))},
+                         {"top1_m", z.top1_m},
+                         {"bottom1_m", z.bottom1_m},
+                         {"top2_m", z.top2_m},
+                         {"bottom2_m", z.bottom2_m},
+                         {"max_d_dmax_mm", finite(z.maxDmaxChange_mm)}});
+    const auto largest = [&](const reconstruction::LargestChange& c) {
+        return nlohmann::ordered_json{{"change_mm", finite(c.change)}, {"md_m", finite(c.md1_m)}};
+    };
+    return {{"shift_m", r.mapping.shift_m},
+            {"shift_given", r.mapping.given},
+            {"match_curve", r.mapping.curve},
+            {"correlation", finite(r.mapping.match.correlation)},
+            {"stretch_mm_per_m", r.mapping.stretch * 1000.0},
+            {"overlap_m", {r.overlapTop1_m, r.overlapBottom1_m}},
+            {"sections", sections},
+            {"compared", r.compared},
+            {"oriented", r.oriented},
+            {"outlines_skipped", r.outlinesSkipped},
+            {"bias_mm", {finite(r.bias1.offset_mm), finite(r.bias2.offset_mm)}},
+            {"repeatability_mm", r.repeatability95_mm},
+            {"significant", r.significant},
+            {"significant_m", r.significant_m},
+            {"class_changes", r.classChanges},
+            {"largest_d_deq", largest(r.deq)},
+            {"largest_d_dmin", largest(r.dmin)},
+            {"largest_d_dmax", largest(r.dmax)},
+            {"volumes_m3", {r.volume1_m3, r.volume2_m3}},
+            {"volume_length_m", r.volumeLength_m},
+            {"zones", zones},
+            {"agree", r.agree()}};
+}
+
+}  // namespace
+
 InputError inputErrorFrom(const std::exception& e, const std::string& input) {
     if (const auto* parse = dynamic_cast<const io::ParseError*>(&e))
         return {parse->file(), parse->line(), parse->message()};
@@ -120,6 +166,13 @@ nlohmann::ordered_json toJson(const InputSummary& s) {
                              {"shmax_azimuth_deg", angle(b.shmaxAzimuth_deg)},
                              {"wsm_quality", std::string(1, b.quality)}};
         line["unoriented_sections"] = s.unorientedSections;
+    }
+    if (s.compared && s.compared->comparison) {
+        line["file2"] = s.compared->file2;
+        nlohmann::ordered_json comparison =
+            comparisonJson(*s.compared->comparison, s.compared->sections);
+        if (!s.compared->wallColour.empty()) comparison["wall_colour"] = s.compared->wallColour;
+        line["comparison"] = std::move(comparison);
     }
     line["warnings"] = s.warningCount;
     line["warning_messages"] = s.warnings;

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <exception>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,6 +13,7 @@
 
 #include "io/diagnostics.h"
 #include "reconstruction/analysis/hole_volume.h"
+#include "reconstruction/analysis/run_comparison.h"
 #include "reconstruction/analysis/well_analysis.h"
 #include "reconstruction/analysis/zone_detection.h"
 
@@ -33,6 +35,17 @@ struct InputError {
 // any other error's text against `input`.
 InputError inputErrorFrom(const std::exception& e, const std::string& input);
 
+// Two runs of one well compared: by `compare`, or by `render` and `export` colouring the wall by
+// the change (docs/formats.md, "Summary lines").
+struct ComparedRuns {
+    std::string file2;  // the other run (run 2)
+    // The comparison's figures; its per-depth sections may have been left out.
+    std::shared_ptr<const reconstruction::RunComparison> comparison;
+    std::size_t sections = 0;  // depths of the overlap
+    // What the wall's colour shows ("A minus B, equivalent diameter"); empty: no wall drawn.
+    std::string wallColour;
+};
+
 // One line of a --summary file: what a verb made of one input (docs/formats.md, "Summary
 // lines"). Fields a verb does not measure stay unset and are left out of the line.
 struct InputSummary {
@@ -52,6 +65,7 @@ struct InputSummary {
     std::size_t unorientedSections = 0;
     std::vector<reconstruction::CasingCheck> casing;          // the calibration check per string
     std::vector<reconstruction::NoDataInterval> armsNotOpen;  // sections no_data: arms not open
+    std::optional<ComparedRuns> compared;
     std::size_t warningCount = 0;
     std::vector<std::string> warnings;  // the first kKeptWarnings, formatted as printed
     double seconds = 0.0;

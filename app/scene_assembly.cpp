@@ -89,6 +89,8 @@ AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOpt
         try {
             const ChangeReference reference(options);
             for (const auto& well : loaded) changes.push_back(reference.against(*well));
+            for (std::size_t w = 0; w < changes.size(); ++w)
+                out.inputs[loadedInput[w]].compared = comparedRuns(changes[w], reference.path());
         } catch (const UsageError&) {
             throw;
         } catch (const std::exception& e) {

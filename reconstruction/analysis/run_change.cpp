@@ -87,8 +87,7 @@ double repeatabilityLimit_mm(const ComparedRun& run1, const ComparedRun& run2) {
                     repeatabilityLimit_mm(run2.geometry->table().armCount));
 }
 
-RunChange runChangeOf(const RunComparison& comparison, std::string drawnName,
-                      std::string otherName) {
+RunChange runChangeOf(RunComparison comparison, std::string drawnName, std::string otherName) {
     RunChange out;
     out.drawnName = std::move(drawnName);
     out.otherName = std::move(otherName);
@@ -103,6 +102,8 @@ RunChange runChangeOf(const RunComparison& comparison, std::string drawnName,
         out.change_mm.push_back(static_cast<float>(change));
         if (std::isfinite(change)) ++out.compared;
     }
+    comparison.sections = {};
+    out.figures = std::make_shared<const RunComparison>(std::move(comparison));
     return out;
 }
 

@@ -40,14 +40,16 @@ struct RunChange {
     std::vector<double> md_m;      // the drawn run's depths that the other run also logged
     std::vector<float> change_mm;  // drawn minus other; NaN where not compared
     std::size_t compared = 0;      // depths with a change
+    // The comparison's figures (summary, zones, largest changes: run 2, the other, minus
+    // run 1, the drawn run), its per-depth sections left out.
+    std::shared_ptr<const RunComparison> figures;
 };
 // Matches and compares `other` against `drawn` (threads: compareRuns's chunks).
 RunChange measureRunChange(const ComparedRun& drawn, const ComparedRun& other,
                            std::string drawnName, std::string otherName,
                            const RunMatchRequest& match = {}, int threads = 1);
 // The same from a comparison already made with the drawn run as run 1.
-RunChange runChangeOf(const RunComparison& comparison, std::string drawnName,
-                      std::string otherName);
+RunChange runChangeOf(RunComparison comparison, std::string drawnName, std::string otherName);
 
 // The change at each of `depth_m` (a drawn geometry's rows: its whole log or an interval of
 // it): that of the compared depth within 1 mm of it; NaN where there is none (outside the

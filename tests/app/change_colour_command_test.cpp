@@ -3,10 +3,12 @@
 // exported with per-vertex colours and rendered.
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include <assimp/scene.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <QColor>
 #include <QImage>
 #include <assimp/Importer.hpp>
@@ -148,4 +150,40 @@ TEST(ChangeColourCommandTest, ChangeAndCompareWithComeTogether) {
     run = runCaliper3d("render " + r.run2 + " -o " + png + " --colour-by change --compare-with " +
                        elsewhere);
     EXPECT_EQ(run.status, 1) << run.output;
+}
+
+TEST(ChangeColourCommandTest, RenderAndExportSummariesCarryTheComparison) {
+    // The drawn run (run 2) against run 1 as `compare RUN2 RUN1` finds it: run 1's depth is
+    // run 2's less 0.35 m, and its washout 10 mm narrower (run 1 minus run 2: -10 mm) at run
+    // 2's 30.35-32.35 m. The wall's colour is the opposite: run 2 minus run 1.
+    const Runs r = runs("change_colour_summary");
+    const std::string change = " --colour-by change --compare-with " + r.run1 + " --summary ";
+    const auto renderJson = r.dir / "render.jsonl", exportJson = r.dir / "export.jsonl";
+    CommandRun run = runCaliper3d("render " + r.run2 + " -o " + (r.dir / "a.png").string() +
+                                  " --width 320 --height 240" + change + renderJson.string());
+    ASSERT_EQ(run.status, 0) << run.output;
+    run = runCaliper3d("export " + r.run2 + " -o " + (r.dir / "a.ply").string() + change +
+                       exportJson.string());
+    ASSERT_EQ(run.status, 0) << run.output;
+    for (const auto& [verb, json] : {std::pair(std::string("render"), renderJson),
+                                     std::pair(std::string("export"), exportJson)}) {
+        std::ifstream in(json);
+        std::string line;
+        ASSERT_TRUE(std::getline(in, line)) << verb;
+        const nlohmann::json summary = nlohmann::json::parse(line);
+        EXPECT_EQ(summary["verb"], verb);
+        EXPECT_EQ(summary["file"], r.run2);
+        EXPECT_EQ(summary["file2"], r.run1) << verb;
+        const nlohmann::json& c = summary["comparison"];
+        ASSERT_TRUE(c.is_object()) << line;
+        EXPECT_EQ(c["wall_colour"], "run2.las minus run1.las, equivalent diameter");
+        EXPECT_NEAR(c["shift_m"].get<double>(), -0.35, 0.01);
+        EXPECT_EQ(c["match_curve"], "GR");
+        EXPECT_NEAR(c["largest_d_deq"]["change_mm"].get<double>(), -10.0, 0.5) << line;
+        const double at = c["largest_d_deq"]["md_m"].get<double>();
+        EXPECT_GE(at, 30.3);
+        EXPECT_LE(at, 32.4);
+        EXPECT_EQ(c["agree"], false);
+        EXPECT_GT(c["sections"].get<std::size_t>(), 1100u);
+    }
 }
