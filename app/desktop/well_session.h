@@ -1,16 +1,20 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include <QElapsedTimer>
 #include <QObject>
 #include <QString>
 #include <QTimer>
 
+#include "app/desktop/background_job.h"
 #include "app/input_options.h"
+#include "reconstruction/analysis/depth_match.h"
 #include "scenegraph/detail_loader.h"
 #include "scenegraph/node_ref.h"
 
@@ -149,6 +153,8 @@ private:
     void edit(const Well& well, Edit change);
     void analyse(Well& well);
     void matchRuns(int modelIndex);  // the depth match of a run to its main run, when due
+    void runMatched(int id, int mainId, const std::optional<reconstruction::DepthMapping>& mapping,
+                    const std::string& error);
     bool allAnalysed() const;
     void wellDone();
     double loadFraction(const Well& well) const;
@@ -156,10 +162,21 @@ private:
     // Depth ticks on the current well only when several wells have geometry (their labels
     // would pile up), on the one well otherwise; re-annotates the wells whose ticks change.
     void tickCurrentWell();
+    // A well's new colours, made for its geometry of then.
+    struct ColouredWell {
+        int id = -1;
+        std::shared_ptr<const reconstruction::WellGeometry> geometry;
+        std::shared_ptr<const reconstruction::WallColouring> colouring;
+    };
+    // Restyles the chosen wells (-1: every well), then calls `applied`; colouring by change
+    // starts a worker and applies when it is in. False (and a status) when nothing is done.
     bool restyleWells(double radialExaggeration, const reconstruction::ColourRequest& colour,
-                      int onlyId);  // -1: every well
-    std::vector<std::shared_ptr<const reconstruction::WallColouring>> changeColourings(
-        const reconstruction::ColourRequest& colour, int onlyId);
+                      int onlyId, const std::function<void()>& applied);
+    bool startChangeColouring(double radialExaggeration,
+                              const reconstruction::ColourRequest& colour, int onlyId,
+                              const std::function<void()>& applied);
+    void applyColourings(double radialExaggeration, const reconstruction::ColourRequest& colour,
+                         const std::vector<ColouredWell>& coloured, const QElapsedTimer& clock);
 
     DeskModel& m_model;
     std::unique_ptr<RetiredLoads> m_retired;  // declared first: destroyed after the wells
@@ -175,6 +192,7 @@ private:
     QTimer m_progressTimer;  // publishProgress while wells load
     // What the legend shows (a copy: the colouring's per-row values stay with the geometry).
     std::optional<reconstruction::ColourLegend> m_legend;
+    std::unique_ptr<BackgroundJob> m_changeJob;  // the comparison a colouring by change waits for
 };
 
 }  // namespace caliper3d::app

@@ -175,9 +175,13 @@ TEST_F(WellRunsTest, TheWallIsColouredByTheChangeBetweenTheRuns) {
     EXPECT_NE(std::find(quantities.begin(), quantities.end(), "change"), quantities.end());
     reconstruction::ColourRequest change;
     change.quantity = "change";
+    // The runs are compared on a worker: the colours come in through the event loop.
+    QSignalSpy looks(&session, &app::WellSession::lookChanged);
     ASSERT_TRUE(session.restyle(1.0, change));
-    ASSERT_NE(session.legend(), nullptr);
-    EXPECT_EQ(session.legend()->title, "run1.las minus run2.las");
+    ASSERT_TRUE(test::waitUntil(
+        [&] { return session.legend() && session.legend()->title == "run1.las minus run2.las"; },
+        120000));
+    EXPECT_GE(looks.count(), 1);
     EXPECT_EQ(scenegraph::legendText(*session.legend()).labels[1], "0 (no change)");
     // Run 1's washout is 10 mm narrower than run 2's: the blue end; its gauge hole grey.
     const auto& colouring = model.well(0).geometry->options().colouring;
