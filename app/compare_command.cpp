@@ -103,8 +103,7 @@ reconstruction::DepthMapping depthMapping(VerbParser& verb, const AnalysedRun& a
 }
 
 // Reads, analyses, matches and compares the two runs; writes the outputs and the summary.
-void compareWells(VerbParser& verb, const std::vector<WellSource>& wells,
-                  InputSummary& summary) {
+void compareWells(VerbParser& verb, const std::vector<WellSource>& wells, InputSummary& summary) {
     const QCommandLineParser& p = verb.parser();
     LoadOptions load = inputOptionsFrom(p);
     reconstruction::AnalysisOptions analysis;

@@ -117,8 +117,8 @@ int exportMesh(const std::vector<WellSource>& sources, const LoadOptions& option
             if (reference) {
                 const reconstruction::RunChange change = reference->against(*loaded.geometry);
                 input.compared = comparedRuns(change, reference->path());
-                colouring = reconstruction::changeColouring(*loaded.geometry, change,
-                                                            options.colour.range);
+                colouring =
+                    reconstruction::changeColouring(*loaded.geometry, change, options.colour.range);
             } else {
                 colouring = reconstruction::makeWallColouring(*loaded.geometry, options.colour);
             }

@@ -51,7 +51,7 @@ struct WellSession::Well {
     std::unique_ptr<reconstruction::WellLoadPipeline> pipeline;
     std::unique_ptr<scenegraph::SegmentFeeder> feeder;
     std::unique_ptr<AnalysisJob> analysisJob;  // after the load, until the analysis is in
-    std::unique_ptr<BackgroundJob> matchJob;    // another run's depth match to its main run
+    std::unique_ptr<BackgroundJob> matchJob;   // another run's depth match to its main run
     // The report's section values, computed the first time a colouring needs them.
     std::shared_ptr<const reconstruction::SectionValues> values;
     bool done = false;
@@ -154,8 +154,9 @@ void WellSession::matchRuns(int index) {
         // Matched on a worker (about a second for two 4 km runs at 2.5 mm); the geometries and
         // analyses are immutable and shared, so they stay whatever the window does meanwhile.
         well->matchJob = std::make_unique<BackgroundJob>(
-            this, [this, id = b.id, mainId = a.id, ga = a.geometry, aa = a.analysis,
-                   gb = b.geometry, ab = b.analysis]() -> std::function<void()> {
+            this,
+            [this, id = b.id, mainId = a.id, ga = a.geometry, aa = a.analysis, gb = b.geometry,
+             ab = b.analysis]() -> std::function<void()> {
                 std::optional<reconstruction::DepthMapping> mapping;
                 std::string error;
                 try {

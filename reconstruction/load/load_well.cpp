@@ -87,9 +87,9 @@ LoadedWell loadWell(const WellSource& source, const LoadOptions& options, const 
     io::StreamOptions stream;
     stream.cancel = options.cancel;  // checked per block: ReadCancelled
     stream.threads = options.readThreads;
-    out.table = std::make_shared<const io::SectionTable>(loadWellTable(
-        source.path, readOptionsFor(source, options), !source.surveyPath.empty(), &out.diagnostics,
-        stream));
+    out.table = std::make_shared<const io::SectionTable>(
+        loadWellTable(source.path, readOptionsFor(source, options), !source.surveyPath.empty(),
+                      &out.diagnostics, stream));
     out.geometry = std::make_shared<const WellGeometry>(out.table, geometry);
     if (options.geometryWarnings) warnGeometry(*out.geometry, out.diagnostics);
     return out;

@@ -180,9 +180,8 @@ LoadedWell loadWellStreamed(const WellSource& source, const LoadOptions& options
                 }
                 handover.changed.notify_one();
             };
-            io::SectionTable whole =
-                loadWellTable(source.path, readOptionsFor(source, options), surveyGiven,
-                              &readDiagnostics, stream);
+            io::SectionTable whole = loadWellTable(source.path, readOptionsFor(source, options),
+                                                   surveyGiven, &readDiagnostics, stream);
             const std::lock_guard<std::mutex> lock(handover.mutex);
             handover.whole = std::move(whole);
             handover.done = true;

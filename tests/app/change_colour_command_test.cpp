@@ -8,10 +8,10 @@
 
 #include <assimp/scene.h>
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 #include <QColor>
 #include <QImage>
 #include <assimp/Importer.hpp>
+#include <nlohmann/json.hpp>
 
 #include "cli_run.h"
 #include "io/las_writer.h"

@@ -457,12 +457,12 @@ TEST(SpliceCommandTest, CasingEachGivesEachRunItsOwnProgram) {
     ASSERT_EQ(r.status, 0) << r.output;
     expectEachRunsCasingOverItsOwnRows(out, "");
 
-    const CommandRun both = runCaliper3d("splice --casing 10.01,13.375in,68lb/ft --casing-each - "
-                                         "--casing-each - " +
-                                         run1 + " " + run2 + " -o " + out.string());
+    const CommandRun both = runCaliper3d(
+        "splice --casing 10.01,13.375in,68lb/ft --casing-each - "
+        "--casing-each - " +
+        run1 + " " + run2 + " -o " + out.string());
     EXPECT_EQ(both.status, 2) << both.output;
-    EXPECT_NE(both.output.find("--casing and --casing-each exclude each other"),
-              std::string::npos)
+    EXPECT_NE(both.output.find("--casing and --casing-each exclude each other"), std::string::npos)
         << both.output;
     const CommandRun once = runCaliper3d("splice --casing-each 10.01,13.375in " + run1 + " " +
                                          run2 + " -o " + out.string());
