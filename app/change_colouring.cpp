@@ -20,7 +20,7 @@ std::string fileName(const std::string& path) {
 
 ComparedRuns comparedRuns(const reconstruction::RunChange& change, const std::string& otherPath) {
     return {otherPath, change.figures, change.md_m.size(),
-            change.drawnName + " minus " + change.otherName + ", equivalent diameter"};
+            change.drawnName + " minus " + change.otherName + ", wall movement in mm"};
 }
 
 bool coloursByChange(const LoadOptions& options) {
@@ -63,7 +63,7 @@ reconstruction::RunChange ChangeReference::against(
         fileName(m_path), {}, m_threads);
     const reconstruction::DepthMapping& m = change.mapping;
     std::printf(
-        "colour by change: %s minus %s (equivalent diameter), %s depth = %s depth %+.3f m "
+        "colour by change: %s minus %s (wall movement), %s depth = %s depth %+.3f m "
         "(%s, correlation %.3f), %zu of %zu depths compared\n",
         change.drawnName.c_str(), change.otherName.c_str(), change.otherName.c_str(),
         change.drawnName.c_str(), m.shift_m, m.curve.c_str(), m.match.correlation, change.compared,

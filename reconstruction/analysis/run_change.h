@@ -40,6 +40,10 @@ struct RunChange {
     std::vector<double> md_m;      // the drawn run's depths that the other run also logged
     std::vector<float> change_mm;  // drawn minus other; NaN where not compared
     std::size_t compared = 0;      // depths with a change
+    // Where both runs are oriented to north: the wall's movement at each direction, drawn minus
+    // other (mm, half a diameter's change), per md_m: bins clockwise from north
+    // (DirectionalValues: bin b centred at (b + 0.5) * 360 / bins). slot -1: not compared so.
+    DirectionalValues directions;
     // The comparison's figures (summary, zones, largest changes: run 2, the other, minus
     // run 1, the drawn run), its per-depth sections left out.
     std::shared_ptr<const RunComparison> figures;
@@ -51,16 +55,22 @@ RunChange measureRunChange(const ComparedRun& drawn, const ComparedRun& other,
 // The same from a comparison already made with the drawn run as run 1.
 RunChange runChangeOf(RunComparison comparison, std::string drawnName, std::string otherName);
 
+// The colour-map bins of the wall's movement: 36, 10 degrees each.
+inline constexpr int kChangeDirectionBins = 36;
+
 // The change at each of `depth_m` (a drawn geometry's rows: its whole log or an interval of
 // it): that of the compared depth within 1 mm of it; NaN where there is none (outside the
 // overlap) or it was not compared.
 std::vector<float> changeAtDepths(const RunChange& change, const std::vector<double>& depth_m);
 
-// The drawn wall coloured by `change` on the diverging map, grey (0) where the runs agree,
-// symmetric about 0 over +-(the 98th percentile of |change|, at least the repeatability
-// limit) unless `range` is given (it must hold 0). Sections without a change take
-// kNoValueColour, and the legend ("A minus B", mm) says why. Throws std::invalid_argument for
-// a range that does not hold 0.
+// The drawn wall coloured by `change` on the diverging map (docs/analysis.md, "Colour by
+// change"): how far the wall moved, drawn minus other, in mm. Where both runs are oriented to
+// north, at each azimuth (10-degree bins of RunChange::directions, about the section's
+// centre); elsewhere the mean, half the equivalent diameter's change, round the whole section.
+// Grey (0) where the runs agree, symmetric about 0 over +-(the 98th percentile of |movement|,
+// at least half the repeatability limit) unless `range` is given (it must hold 0). Sections
+// without a change take kNoValueColour, and the legend ("A minus B", mm) says why. Throws
+// std::invalid_argument for a range that does not hold 0.
 std::shared_ptr<const WallColouring> changeColouring(
     const WellGeometry& drawn, const RunChange& change,
     const std::optional<std::pair<double, double>>& range = std::nullopt);

@@ -245,12 +245,14 @@ void SectionComparer::compareOutlines(std::size_t i, std::size_t j0, std::size_t
     double growth = -1.0e300, least = 1.0e300;
     for (std::size_t k = 0; k < m_p1.size(); ++k) {
         const double g = (m_p2[k] - half2) - (m_p1[k] - half1);
+        m_p2[k] = g;  // the outline is used up: the growth, for the sink
         least = std::min(least, g);
         if (g > growth) {
             growth = g;
             best = k;
         }
     }
+    if (m_options.outlineSink) m_options.outlineSink(i, m_p2.data());
     c.oriented = true;
     c.maxGrowth_mm = growth;
     // A wall that moved alike all round (a gauge hole unchanged, a washout widened evenly) has

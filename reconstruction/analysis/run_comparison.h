@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -41,6 +42,11 @@ struct RunComparisonOptions {
     // (SectionChange::outlineSkipped: no wall growth is reported there, and the note says why). 0,
     // the default: every section of two oriented runs (docs/analysis.md, "Two runs of one well").
     double outlineGate = 0.0;
+    // Called for each section whose outlines are compared, with its run-1 row and the wall's
+    // growth (run 2 minus run 1, each run's bias removed) at each of azimuthBins bins, bin k at
+    // k * 360 / azimuthBins degrees clockwise from north (SectionProfiler). Called from the
+    // comparing threads, each row once.
+    std::function<void(std::size_t row1, const double* growth_mm)> outlineSink;
 };
 
 // The gate `caliper3d compare` uses: half the repeatability limit (1.5 mm for an imager).

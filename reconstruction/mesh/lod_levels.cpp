@@ -11,6 +11,7 @@
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
+#include <glm/trigonometric.hpp>
 #include <glm/vec2.hpp>
 
 #include "reconstruction/mesh/swing_door.h"
@@ -37,13 +38,26 @@ void appendRing(const WellGeometry& g, Mesh& mesh, std::size_t row,
     const std::size_t base = mesh.positions.size();
     thread_local std::vector<glm::dvec2> plane;
     drawnRing(radii, exaggeration, plane);
+    // A colouring per direction takes each point's angle from arm 1 about the ring's centre
+    // (the mean of its points: near enough the centroid to choose a bin of 10 degrees).
+    glm::dvec2 centre(0.0);
+    const bool byDirection = colouring && colouring->byDirection();
+    if (byDirection) {
+        for (const glm::dvec2& q : plane) centre += q;
+        centre /= static_cast<double>(std::max<std::size_t>(1, plane.size()));
+    }
     for (int j = 0; j < points; ++j) {
         const glm::dvec2 drawn = plane[static_cast<std::size_t>(j)] / 1000.0;
         const Ned p = c + drawn.x * f.arm1 + drawn.y * f.side;
         mesh.positions.emplace_back(toScene(p));
         const double r = radii[static_cast<std::size_t>(j)];
-        mesh.colours.push_back(colouring ? colouring->colour(row, r)
-                                         : departureColour(r, bitRadius));
+        if (byDirection) {
+            const glm::dvec2 d = plane[static_cast<std::size_t>(j)] - centre;
+            mesh.colours.push_back(colouring->colour(row, r, glm::degrees(std::atan2(d.y, d.x))));
+        } else {
+            mesh.colours.push_back(colouring ? colouring->colour(row, r)
+                                             : departureColour(r, bitRadius));
+        }
     }
     // Outward normals: in-plane tangent (clockwise) crossed with the hole axis.
     for (int j = 0; j < points; ++j) {

@@ -1,5 +1,6 @@
 #include "reconstruction/mesh/wall_colouring.h"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -46,10 +47,55 @@ WallColouring WallColouring::categories(std::vector<float> values, ColourLegend 
     return WallColouring(Source::Categorical, std::move(values), std::move(legend));
 }
 
+WallColouring WallColouring::perDirection(std::vector<float> rowValues,
+                                          DirectionalValues directional, ColourMapKind kind,
+                                          double lo, double hi, ColourLegend legend) {
+    legend.kind = kind;
+    legend.lo = lo;
+    legend.hi = hi;
+    WallColouring out(Source::Directional, std::move(rowValues), std::move(legend));
+    out.m_directional = std::move(directional);
+    return out;
+}
+
 WallColouring WallColouring::withLegend(ColourLegend legend) const {
     WallColouring out = *this;
     out.m_legend = std::move(legend);
     return out;
+}
+
+std::uint32_t WallColouring::continuousColour(double v) const {
+    if (!std::isfinite(v)) return kNoValueColour;
+    return m_legend.kind == ColourMapKind::Diverging
+               ? divergingColour(mapPosition(m_legend.kind, v, m_legend.lo, m_legend.hi))
+               : sequentialColour(mapPosition(m_legend.kind, v, m_legend.lo, m_legend.hi));
+}
+
+std::uint32_t WallColouring::colour(std::size_t row, double radius_mm,
+                                    double angleFromArm1_deg) const {
+    if (m_source != Source::Directional || row >= m_directional.slot.size())
+        return colour(row, radius_mm);
+    const std::int32_t slot = m_directional.slot[row];
+    if (slot < 0 || !std::isfinite(angleFromArm1_deg)) return colour(row, radius_mm);
+    const auto s = static_cast<std::size_t>(slot);
+    const int bins = m_directional.bins;
+    // Bin b is centred at (b + 0.5) * 360 / bins from the bins' zero; between two centres the
+    // value is interpolated, so the wall shows no steps of the bins' width.
+    double a = std::fmod(angleFromArm1_deg + m_directional.arm1Angle_deg[s], 360.0);
+    if (a < 0.0) a += 360.0;
+    const double position = a * bins / 360.0 - 0.5;  // in (-0.5, bins - 0.5)
+    const double below = std::floor(position);
+    const double t = position - below;
+    const std::int16_t* values = &m_directional.values[s * static_cast<std::size_t>(bins)];
+    const auto at = [&](double bin) {
+        const int b = (static_cast<int>(bin) + bins) % bins;
+        return values[static_cast<std::size_t>(b)];
+    };
+    const std::int16_t q0 = at(below), q1 = at(below + 1.0);
+    if (q0 == kNoDirectionalValue || q1 == kNoDirectionalValue) return kNoValueColour;
+    const double v =
+        (static_cast<double>(q0) + t * (static_cast<double>(q1) - q0)) * m_directional.step;
+    return continuousColour(v);
 }
 
 std::uint32_t WallColouring::colour(std::size_t row, double radius_mm) const {
@@ -58,10 +104,8 @@ std::uint32_t WallColouring::colour(std::size_t row, double radius_mm) const {
         case Source::Departure:
             return departureColour(radius_mm, v, m_legend.lo, m_legend.hi);
         case Source::Continuous:
-            if (!std::isfinite(v)) return kNoValueColour;
-            return m_legend.kind == ColourMapKind::Diverging
-                       ? divergingColour(mapPosition(m_legend.kind, v, m_legend.lo, m_legend.hi))
-                       : sequentialColour(mapPosition(m_legend.kind, v, m_legend.lo, m_legend.hi));
+        case Source::Directional:
+            return continuousColour(v);
         case Source::Categorical: {
             if (!(v >= 0.0) || static_cast<std::size_t>(v) >= m_categoryColours.size())
                 return kNoValueColour;

@@ -77,7 +77,7 @@ TEST(ChangeColourCommandTest, ExportColoursTheWidenedWashoutAndLeavesTheRestGrey
         runCaliper3d("export " + r.run2 + " -o " + ply +
                      " --detail full --colour-by change --compare-with " + r.run1);
     ASSERT_EQ(run.status, 0) << run.output;
-    EXPECT_NE(run.output.find("colour by change: run2.las minus run1.las (equivalent diameter), "
+    EXPECT_NE(run.output.find("colour by change: run2.las minus run1.las (wall movement), "
                               "run1.las depth = run2.las depth -0.350 m (GR, correlation 1.000)"),
               std::string::npos)
         << run.output;
@@ -176,7 +176,7 @@ TEST(ChangeColourCommandTest, RenderAndExportSummariesCarryTheComparison) {
         EXPECT_EQ(summary["file2"], r.run1) << verb;
         const nlohmann::json& c = summary["comparison"];
         ASSERT_TRUE(c.is_object()) << line;
-        EXPECT_EQ(c["wall_colour"], "run2.las minus run1.las, equivalent diameter");
+        EXPECT_EQ(c["wall_colour"], "run2.las minus run1.las, wall movement in mm");
         EXPECT_NEAR(c["shift_m"].get<double>(), -0.35, 0.01);
         EXPECT_EQ(c["match_curve"], "GR");
         EXPECT_NEAR(c["largest_d_deq"]["change_mm"].get<double>(), -10.0, 0.5) << line;

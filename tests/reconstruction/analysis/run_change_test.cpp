@@ -9,8 +9,12 @@
 #include <utility>
 
 #include <gtest/gtest.h>
+#include <glm/trigonometric.hpp>
+#include <glm/vec3.hpp>
 
+#include "reconstruction/analysis/section_angle_reference.h"
 #include "reconstruction/mesh/colour_map.h"
+#include "reconstruction/mesh/lod_levels.h"
 #include "reconstruction/synthetic/synthetic_well.h"
 #include "reconstruction/well_interval.h"
 #include "support/run_pair.h"
@@ -117,9 +121,9 @@ TEST(RunChangeTest, TheWallIsColouredOnTheDivergingMapSymmetricAboutNoChange) {
     const ColourLegend& legend = colouring->legend();
     EXPECT_EQ(legend.kind, ColourMapKind::Diverging);
     EXPECT_DOUBLE_EQ(legend.lo, -legend.hi);
-    // 40 of 3001 rows changed by ~10 mm: the 98th percentile of |change| is under the
-    // repeatability limit (24 arms: 3 mm), which the range keeps.
-    EXPECT_DOUBLE_EQ(legend.hi, 3.0);
+    // 40 of 3001 rows moved their wall by ~5 mm: the 98th percentile of |movement| is under
+    // half the repeatability limit (24 arms: 3 mm), which the range keeps.
+    EXPECT_DOUBLE_EQ(legend.hi, 1.5);
     EXPECT_EQ(legend.title, "run2.las minus run1.las");
     EXPECT_EQ(legend.unit, "mm");
     EXPECT_EQ(legend.centre, "no change");
@@ -127,17 +131,26 @@ TEST(RunChangeTest, TheWallIsColouredOnTheDivergingMapSymmetricAboutNoChange) {
     const std::size_t gauge = rowAt(g, 50.0);
     // The widened washout at the red end (beyond the range: clamped), the gauge hole grey.
     EXPECT_EQ(colouring->colour(washout, 137.95), divergingColour(1.0));
-    const float atGauge = changeAtDepths(p.change, {g.table().depth_m[gauge]}).front();
+    // Without a direction a point takes its section's mean movement, half the change of its
+    // equivalent diameter.
+    const float atGauge = changeAtDepths(p.change, {g.table().depth_m[gauge]}).front() / 2.0f;
     EXPECT_EQ(colouring->colour(gauge, 107.95),
-              divergingColour(mapPosition(ColourMapKind::Diverging, atGauge, -3.0, 3.0)));
-    EXPECT_NEAR(mapPosition(ColourMapKind::Diverging, atGauge, -3.0, 3.0), 0.5, 0.05);
+              divergingColour(mapPosition(ColourMapKind::Diverging, atGauge, -1.5, 1.5)));
+    EXPECT_NEAR(mapPosition(ColourMapKind::Diverging, atGauge, -1.5, 1.5), 0.5, 0.05);
+    for (double angle = 0.0; angle < 360.0; angle += 15.0) {
+        EXPECT_EQ(colouring->colour(washout, 137.95, angle), divergingColour(1.0)) << angle;
+        const std::uint32_t c = colouring->colour(gauge, 107.95, angle);
+        EXPECT_NEAR(red(c), red(divergingColour(0.5)), 12) << angle;
+        EXPECT_NEAR(blue(c), blue(divergingColour(0.5)), 12) << angle;
+    }
     // A range given is kept, and must hold no change.
     const auto given = changeColouring(g, p.change, std::make_pair(-20.0, 20.0));
     EXPECT_EQ(given->legend().range, "given");
-    EXPECT_EQ(given->colour(washout, 0.0),
-              divergingColour(mapPosition(
-                  ColourMapKind::Diverging,
-                  changeAtDepths(p.change, {g.table().depth_m[washout]}).front(), -20.0, 20.0)));
+    EXPECT_EQ(
+        given->colour(washout, 0.0),
+        divergingColour(mapPosition(
+            ColourMapKind::Diverging,
+            changeAtDepths(p.change, {g.table().depth_m[washout]}).front() / 2.0, -20.0, 20.0)));
     EXPECT_THROW(changeColouring(g, p.change, std::make_pair(2.0, 20.0)), std::invalid_argument);
 }
 
@@ -179,4 +192,72 @@ TEST(RunChangeTest, ChangesOfSeveralWellsShareOneSymmetricRange) {
     EXPECT_DOUBLE_EQ(shared[0]->legend().hi, shared[1]->legend().hi);
     EXPECT_DOUBLE_EQ(shared[0]->legend().lo, -shared[0]->legend().hi);
     EXPECT_NE(shared[0]->legend().range.find("over all 2 wells"), std::string::npos);
+}
+
+TEST(RunChangeTest, ABreakoutThatGrewIsColouredAtItsAzimuthAndGreyAcrossIt) {
+    // Run 1: a breakout 245.9 x 217.9 mm at 135 degrees over 40-45 m; run 2 (drawn), its
+    // counter 0.35 m deeper and its tool 90 degrees round, the breakout 10 mm longer: the wall
+    // moved 5 mm out at 135 and 315 degrees, not at all at 45 and 225.
+    SyntheticWellSpec first = otherRun();
+    first.features = {{Kind::Breakout, 40.0, 45.0, 245.9, 217.9, 135.0, 0.0}};
+    SyntheticWellSpec second = drawnRun();
+    second.features = first.features;
+    second.features[0].dmax_mm += 10.0;
+    const ::Run other = analyse(first), drawn = analyse(second);
+    const RunChange change =
+        measureRunChange(drawn.compared(), other.compared(), "run2.las", "run1.las");
+    const auto colouring = changeColouring(*drawn.geometry, change);
+    ASSERT_TRUE(colouring->byDirection());
+    EXPECT_EQ(colouring->legend().note, "wall movement at each azimuth, shift -0.350 m");
+    const WellGeometry& g = *drawn.geometry;
+    std::size_t checked = 0;
+    for (double md = 41.0; md < 44.5; md += 0.25) {
+        const std::size_t row = rowAt(g, md);
+        // A point's angle from arm 1 for an azimuth (a vertical hole: the section's north).
+        const double arm1 = arm1Angle_deg(g.frame(row), AngleReference::North);
+        ASSERT_TRUE(std::isfinite(arm1));
+        for (const double tip : {135.0, 315.0}) {
+            const std::uint32_t c = colouring->colour(row, 130.0, tip - arm1);
+            EXPECT_EQ(c, divergingColour(1.0)) << md << " at " << tip;  // 5 mm: beyond 1.5
+        }
+        for (const double flank : {45.0, 225.0}) {
+            const std::uint32_t c = colouring->colour(row, 110.0, flank - arm1);
+            EXPECT_NEAR(red(c), red(divergingColour(0.5)), 25) << md << " at " << flank;
+            EXPECT_NEAR(blue(c), blue(divergingColour(0.5)), 25) << md << " at " << flank;
+        }
+        ++checked;
+    }
+    EXPECT_EQ(checked, 14u);
+
+    // The wall as drawn: each point of a ring coloured by its own azimuth from the ring's
+    // centre (the scene's x east, z south).
+    const WellGeometry coloured = g.restyled(1.0, colouring);
+    std::vector<std::size_t> rows;
+    for (double md = 41.0; md < 44.5; md += 0.5) rows.push_back(rowAt(g, md));
+    constexpr int kPoints = 48;  // the full spline: every ring alike
+    const Mesh mesh = buildRingMesh(coloured, rows, kPoints);
+    ASSERT_EQ(mesh.positions.size(), rows.size() * kPoints);
+    std::size_t tips = 0, flanks = 0;
+    for (std::size_t ring = 0; ring < rows.size(); ++ring) {
+        glm::dvec3 centre(0.0);
+        for (int j = 0; j < kPoints; ++j) centre += glm::dvec3(mesh.positions[ring * kPoints + j]);
+        centre /= static_cast<double>(kPoints);
+        for (int j = 0; j < kPoints; ++j) {
+            const glm::dvec3 d = glm::dvec3(mesh.positions[ring * kPoints + j]) - centre;
+            const double azimuth = std::fmod(glm::degrees(std::atan2(d.x, -d.z)) + 360.0, 360.0);
+            const auto near = [&](double a) {
+                return std::abs(std::remainder(azimuth - a, 360.0)) < 12.0;
+            };
+            const std::uint32_t c = mesh.colours[ring * kPoints + j];
+            if (near(135.0) || near(315.0)) {
+                EXPECT_EQ(c, divergingColour(1.0)) << azimuth;
+                ++tips;
+            } else if (near(45.0) || near(225.0)) {
+                EXPECT_NEAR(red(c), red(divergingColour(0.5)), 25) << azimuth;
+                ++flanks;
+            }
+        }
+    }
+    EXPECT_GT(tips, 30u);
+    EXPECT_GT(flanks, 30u);
 }
