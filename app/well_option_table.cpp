@@ -573,9 +573,10 @@ void colourRows(Rows& rows) {
         "colour-by", "NAME", G::Colour,
         "Colour the wall by: departure (radius - bit radius, the default; diverging map, "
         "grey at bit size), diameter (equivalent), ellipticity, class (the report's classes), "
-        "dls (dogleg severity), change (the equivalent diameter minus that of the run "
-        "--compare-with names, depth-matched as compare does; diverging map, grey where "
-        "they agree), or any other curve of the log by its mnemonic (e.g. GR).",
+        "dls (dogleg severity), change (how far the wall moved against the run "
+        "--compare-with names, at each azimuth where both runs are oriented, depth-matched as "
+        "compare does; diverging map, grey where they agree), or any other curve of the log "
+        "by its mnemonic (e.g. GR).",
         [](const std::string& t, WellSource&, LoadOptions& o) {
             o.colour.quantity = trimmed(t);
             if (o.colour.quantity.empty()) throw UsageError("--colour-by: expected a name");

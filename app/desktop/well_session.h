@@ -156,6 +156,7 @@ private:
     void runMatched(int id, int mainId, const std::optional<reconstruction::DepthMapping>& mapping,
                     const std::string& error);
     bool allAnalysed() const;
+    static void giveBackFreedMemory();  // once every well is loaded and analysed
     void wellDone();
     double loadFraction(const Well& well) const;
     void applyStyleAfterLoad();
