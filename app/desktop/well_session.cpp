@@ -667,6 +667,8 @@ bool WellSession::startChangeColouring(double radialExaggeration,
             try {
                 std::vector<reconstruction::RunChange> changes;
                 std::vector<std::shared_ptr<const reconstruction::WellGeometry>> geometries;
+                changes.reserve(pairs.size());
+                geometries.reserve(pairs.size());
                 for (const RunPair& p : pairs) {
                     changes.push_back(reconstruction::measureRunChange(
                         {p.geometry.get(), p.analysis.get()},
@@ -675,9 +677,11 @@ bool WellSession::startChangeColouring(double radialExaggeration,
                     geometries.push_back(p.geometry);
                 }
                 std::vector<const reconstruction::RunChange*> each;
+                each.reserve(changes.size());
                 for (const reconstruction::RunChange& change : changes) each.push_back(&change);
                 const auto colourings =
                     reconstruction::changeColourings(geometries, each, colour.range);
+                coloured.reserve(pairs.size());
                 for (std::size_t w = 0; w < pairs.size(); ++w)
                     coloured.push_back({pairs[w].id, pairs[w].geometry, colourings[w]});
             } catch (const std::exception& e) {
