@@ -688,6 +688,7 @@ void perWellRows(Rows& rows) {
                 return;
             }
             std::vector<io::CasingString> program = casingProgram(t, "casing-each");
+            for (io::CasingString& c : program) c.source = "--casing-each";
             if (program.empty())
                 throw UsageError("--casing-each: give BOTTOM,SIZE[,WEIGHT|ID] strings, or '-'");
             w.casing = std::move(program);
