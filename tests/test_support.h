@@ -1,7 +1,9 @@
 #pragma once
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -14,6 +16,12 @@ namespace caliper3d::test {
 inline std::filesystem::path sharedData() {
     if (const char* env = std::getenv("CALIPER3D_SHARED_DATA")) return env;
     return CALIPER3D_SHARED_DATA;
+}
+
+// How far a measurement the analysis stores in single precision (SectionMeasure) may lie from
+// the double it was computed as: half a float's spacing at that size, and a little room.
+inline double storedInFloat(double expected) {
+    return std::abs(expected) * std::numeric_limits<float>::epsilon() + 1e-9;
 }
 
 // A scratch folder for files a test writes.

@@ -6,10 +6,10 @@
 
 namespace caliper3d::app {
 
-// One value a row, read where it lies: a vector of values, or one field of an array of
-// records (the analysis's per-section store, the well's path), so a dock draws a 1.6-million-row
-// curve without a copy of it (docs/architecture.md, "Memory per well"). Whatever it reads must
-// outlive it.
+// One value a row, read where it lies: a vector of values, or one double or float field of an
+// array of records (the analysis's per-section store, the well's path), so a dock draws
+// a 1.6-million-row curve without a copy of it (docs/architecture.md, "Memory per well"). Whatever
+// it reads must outlive it.
 class RowCurve {
 public:
     RowCurve() = default;
@@ -21,15 +21,26 @@ public:
         : m_first(reinterpret_cast<const unsigned char*>(first)),
           m_stride(strideBytes),
           m_size(first ? size : 0) {}
+    // The same, of single-precision values.
+    RowCurve(const float* first, std::size_t strideBytes, std::size_t size)
+        : m_first(reinterpret_cast<const unsigned char*>(first)),
+          m_stride(strideBytes),
+          m_size(first ? size : 0),
+          m_single(true) {}
     // The field `member` of `size` records from `records` on.
-    template <class Record>
-    static RowCurve field(const Record* records, double Record::*member, std::size_t size) {
+    template <class Record, class Value>
+    static RowCurve field(const Record* records, Value Record::*member, std::size_t size) {
         return size == 0 ? RowCurve() : RowCurve(&(records->*member), sizeof(Record), size);
     }
 
     std::size_t size() const { return m_size; }
     bool empty() const { return m_size == 0; }
     double operator[](std::size_t row) const {
+        if (m_single) {
+            float v;
+            std::memcpy(&v, m_first + row * m_stride, sizeof v);
+            return v;
+        }
         double v;
         std::memcpy(&v, m_first + row * m_stride, sizeof v);
         return v;
@@ -41,6 +52,7 @@ private:
     const unsigned char* m_first = nullptr;
     std::size_t m_stride = sizeof(double);
     std::size_t m_size = 0;
+    bool m_single = false;
 };
 
 }  // namespace caliper3d::app

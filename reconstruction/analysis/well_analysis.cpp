@@ -215,7 +215,7 @@ public:
         const BreakoutEvidence evidence = breakoutEvidenceFor(m_t.armCount);
         applyBreakoutZoneRules(
             m_classes, [&](std::size_t i) { return a.sections.md_m(i); },
-            [&](std::size_t i) {
+            [&](std::size_t i) -> double {
                 if (evidence == BreakoutEvidence::AxisFixedInEarth)
                     return a.sections.measure(i).majorAzimuth_deg;
                 const double p1az = valueAt(m_t.p1az_deg, i);

@@ -8,6 +8,7 @@
 
 #include "desk_test_well.h"
 #include "reconstruction/analysis/report_writer.h"
+#include "test_support.h"
 
 using namespace caliper3d;
 
@@ -74,7 +75,7 @@ TEST_F(SectionInspectorDockTest, ShowsTheReportsNumbersForTheCurrentRowAndFollow
     EXPECT_EQ(dock.value("class"), "breakout");
     EXPECT_NEAR(dock.value("dmax_mm").toDouble(), 245.9, 0.5);
     EXPECT_NEAR(dock.outline().ellipse.majorAngle_deg,
-                analysis.sections[breakout + 2].majorAzimuth_deg, 1e-6);
+                analysis.sections[breakout + 2].majorAzimuth_deg, test::storedInFloat(180.0));
 }
 
 TEST_F(SectionInspectorDockTest, ChartHasEachSeriesWithItsPoints) {

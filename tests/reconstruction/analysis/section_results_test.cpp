@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support.h"
+
 using namespace caliper3d;
 using namespace caliper3d::reconstruction;
 
@@ -56,10 +58,12 @@ TEST(SectionResultsTest, EachRowIsItsPathPointAndItsMeasure) {
     EXPECT_EQ(r.dls_degPer30m, 30.0);
     EXPECT_EQ(r.bit_mm, 215.9);
     EXPECT_EQ(r.area_mm2, 36000.0);
-    EXPECT_EQ(r.equivalentDiameter_mm, 214.1);
+    // The measurements come back as stored, in single precision.
+    EXPECT_EQ(r.equivalentDiameter_mm, static_cast<float>(214.1));
     EXPECT_EQ(r.dmin_mm, 201.0);
     EXPECT_EQ(r.dmax_mm, 228.0);
-    EXPECT_EQ(r.ellipticity, 228.0 / 201.0);
+    EXPECT_EQ(r.ellipticity, static_cast<float>(228.0 / 201.0));
+    EXPECT_NEAR(r.ellipticity, 228.0 / 201.0, test::storedInFloat(1.0));
     EXPECT_EQ(r.majorAzimuth_deg, 135.0);
     EXPECT_EQ(r.majorFromHighSide_deg, 105.0);
     EXPECT_EQ(r.centreOffset_mm, 3.5);

@@ -14,6 +14,7 @@
 #include "reconstruction/section/section_analysis.h"
 #include "reconstruction/synthetic/synthetic_well.h"
 #include "support/reconstruction_support.h"
+#include "test_support.h"
 
 using namespace caliper3d;
 using namespace caliper3d::reconstruction;
@@ -49,7 +50,7 @@ TEST(WellAnalysisTest, CircleOfBitSizeIsInGaugeEverywhere) {
     const Analysed a = analyse("circle");
     EXPECT_EQ(count(a.analysis, BoreholeClass::InGauge), a.analysis.sections.size());
     for (const SectionResult& r : a.analysis.sections) {
-        EXPECT_NEAR(r.dmax_mm, 215.9, 1e-6);
+        EXPECT_NEAR(r.dmax_mm, 215.9, test::storedInFloat(215.9));
         EXPECT_NEAR(r.equivalentDiameter_mm, 215.9, 0.4);  // 48-gon inscribed in the circle
     }
     EXPECT_TRUE(a.analysis.zones.empty());
@@ -134,7 +135,7 @@ TEST(WellAnalysisTest, StuckArmIsInterpolatedCountedAndLeavesNoSpike) {
     EXPECT_EQ(s.analysis.repairedSections, 401u);  // 40.00-60.00 m at 0.05 m
     EXPECT_EQ(s.analysis.repairedArms, 401u);
     for (const SectionResult& r : s.analysis.sections) {
-        EXPECT_NEAR(r.dmin_mm, 215.9, 1e-6);
+        EXPECT_NEAR(r.dmin_mm, 215.9, test::storedInFloat(215.9));
         EXPECT_EQ(r.cls, BoreholeClass::InGauge);
     }
     // An arm beyond the tool's reach is missing too.
@@ -213,6 +214,11 @@ bool same(double a, double b) {
     return std::memcmp(&a, &b, sizeof a) == 0;
 }
 
+// `computed` as the analysis stores it (SectionMeasure: single precision).
+double stored(double computed) {
+    return static_cast<float>(computed);
+}
+
 }  // namespace
 
 TEST(WellAnalysisTest, AnyNumberOfThreadsGivesTheSameResultsBitForBit) {
@@ -284,9 +290,9 @@ TEST(WellAnalysisTest, AnyNumberOfThreadsGivesTheSameResultsBitForBit) {
 }
 
 TEST(WellAnalysisTest, ResultsAreTheOneSectionFunctionsResults) {
-    // Shape values bit for bit; world angles (dot products on the frame rather
-    // than angle round trips) to 1e-9 deg; classes, zones, volume and the P1AZ
-    // check exactly as the public functions give them from those values.
+    // Shape values bit for bit, as stored (single precision); world angles (dot products on
+    // the frame rather than angle round trips) to a float's step at 180 deg; classes, zones, volume
+    // and the P1AZ check exactly as the public functions give them from those values.
     const auto table = featureWell();
     const WellGeometry g(table, GeometryOptions{});
     AnalysisOptions options;
@@ -306,11 +312,11 @@ TEST(WellAnalysisTest, ResultsAreTheOneSectionFunctionsResults) {
         const SectionResult& r = a.sections[i];
         EXPECT_EQ(r.repairedArms, g.repairRadii(i, pads.data()));
         const SectionShape s = analyzer.analyse(pads.data(), sampled.data());
-        differ += !same(r.area_mm2, s.area_mm2) ||
-                  !same(r.equivalentDiameter_mm, s.equivalentDiameter_mm) ||
-                  !same(r.dmin_mm, s.dmin_mm) || !same(r.dmax_mm, s.dmax_mm) ||
-                  !same(r.ellipticity, s.ellipticity) ||
-                  !same(r.centreOffset_mm, s.centreOffset_mm);
+        differ += !same(r.area_mm2, stored(s.area_mm2)) ||
+                  !same(r.equivalentDiameter_mm, stored(s.equivalentDiameter_mm)) ||
+                  !same(r.dmin_mm, stored(s.dmin_mm)) || !same(r.dmax_mm, stored(s.dmax_mm)) ||
+                  !same(r.ellipticity, stored(s.ellipticity)) ||
+                  !same(r.centreOffset_mm, stored(s.centreOffset_mm));
         const SectionFrame& f = g.frame(i);
         const PathPoint& p = g.path()[i];
         // Round: no major axis; centred (to a hundredth of a millimetre): no offset direction.
@@ -325,12 +331,12 @@ TEST(WellAnalysisTest, ResultsAreTheOneSectionFunctionsResults) {
             EXPECT_TRUE(std::isnan(r.majorFromHighSide_deg)) << i;
         } else {
             EXPECT_LT(axisDistance(r.majorAzimuth_deg, inPlaneAzimuth_deg(f, s.majorAngle_deg)),
-                      1e-9)
+                      test::storedInFloat(180.0))
                 << i;
             EXPECT_LT(
                 axisDistance(r.majorFromHighSide_deg,
                              angleFromHighSide_deg(f, p.inc_deg, p.azi_deg, s.majorAngle_deg)),
-                1e-9)
+                test::storedInFloat(180.0))
                 << i;
             EXPECT_GE(r.majorFromHighSide_deg, 0.0);
             EXPECT_LT(r.majorFromHighSide_deg, 180.0);
@@ -339,7 +345,7 @@ TEST(WellAnalysisTest, ResultsAreTheOneSectionFunctionsResults) {
             const double expected =
                 inPlaneAzimuth_deg(f, glm::degrees(std::atan2(s.centroidV_mm, s.centroidU_mm)));
             const double d = std::abs(r.centreOffsetAzimuth_deg - expected);
-            EXPECT_LT(std::min(d, 360.0 - d), 1e-9) << i;
+            EXPECT_LT(std::min(d, 360.0 - d), test::storedInFloat(360.0)) << i;
         } else {
             EXPECT_TRUE(std::isnan(r.centreOffsetAzimuth_deg)) << i;
         }
