@@ -9,6 +9,8 @@
 #include <QFormLayout>
 #include <QLabel>
 #include <QResizeEvent>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QStringList>
 #include <QVBoxLayout>
 #include <QtCharts/QChartView>
@@ -102,9 +104,19 @@ SectionInspectorDock::SectionInspectorDock(DeskModel* model, QWidget* parent)
     key->setWordWrap(true);
     plotLayout->addWidget(key);
     m_layout->addWidget(plot, 1);
-    auto* panel = new QWidget(body);
+    // The numbers ask for their whole height (the plot gives way first, its chart down to 160
+    // px), and scroll when the dock is shorter than even that (the window's right column
+    // shares its height with the breakouts): a squeezed form lays its rows over one another,
+    // the heading's wrapped lines over the first numbers.
+    m_numbers = new QScrollArea(body);
+    m_numbers->setFrameShape(QFrame::NoFrame);
+    m_numbers->setWidgetResizable(true);
+    m_numbers->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_numbers->setSizePolicy(QSizePolicy::Minimum, QSizePolicy::Minimum);
+    auto* panel = new QWidget;
     buildNumbers(panel);
-    m_layout->addWidget(panel, 0);
+    m_numbers->setWidget(panel);
+    m_layout->addWidget(m_numbers, 0);
     setWidget(body);
     connect(m_model, &DeskModel::currentChanged, this, &SectionInspectorDock::refresh);
     connect(m_model, &DeskModel::wellChanged, this, &SectionInspectorDock::refresh);
@@ -157,13 +169,16 @@ void SectionInspectorDock::buildChart() {
     addSeries(pads, "pads", QColor(20, 20, 20), 1.0);
     m_view = new QChartView(m_chart);
     m_view->setRenderHint(QPainter::Antialiasing);
-    m_view->setMinimumSize(260, 260);
+    // Short docks shrink the plot, not the numbers: a form given less than its height lays its
+    // rows over one another (the window's right column shares its height with the breakouts).
+    m_view->setMinimumSize(260, 160);
 }
 
 void SectionInspectorDock::buildNumbers(QWidget* panel) {
     auto* form = new QFormLayout(panel);
     form->setContentsMargins(4, 0, 4, 4);
     m_heading = new QLabel(panel);
+    m_heading->setObjectName("heading");
     m_heading->setWordWrap(true);
     form->addRow(m_heading);
     for (const Field& f : kFields) {
@@ -204,6 +219,7 @@ void SectionInspectorDock::refresh() {
     }
     showOutline();
     showNumbers();
+    fitNumbersWidth();
 }
 
 // Another run of the current well (the main run, or the main run's first other run) at the
@@ -361,6 +377,12 @@ void SectionInspectorDock::showNumbers() {
                            : (azimuthUnknown && axisAngle && elongatedAxis ? "unknown" : "none");
         it->second->setText(shown);
     }
+}
+
+// As wide as the numbers are, with room for the scroll bar: the dock keeps them whole.
+void SectionInspectorDock::fitNumbersWidth() {
+    m_numbers->setMinimumWidth(m_numbers->widget()->sizeHint().width() +
+                               m_numbers->verticalScrollBar()->sizeHint().width());
 }
 
 void SectionInspectorDock::resizeEvent(QResizeEvent* event) {

@@ -11,6 +11,7 @@
 class QBoxLayout;
 class QFormLayout;
 class QLabel;
+class QScrollArea;
 
 QT_CHARTS_BEGIN_NAMESPACE
 class QChartView;
@@ -59,6 +60,7 @@ protected:
 
 private:
     void fitHeading();
+    void fitNumbersWidth();
     void buildChart();
     void buildNumbers(QWidget* panel);
     void showOutline();
@@ -73,6 +75,7 @@ private:
     DeskModel* m_model;
     QBoxLayout* m_layout = nullptr;
     QtCharts::QChartView* m_view = nullptr;
+    QScrollArea* m_numbers = nullptr;  // the heading and the numbers' form
     QtCharts::QPolarChart* m_chart = nullptr;
     QtCharts::QValueAxis* m_angle = nullptr;
     QtCharts::QValueAxis* m_radius = nullptr;

@@ -3,6 +3,10 @@
 #include <cmath>
 
 #include <gtest/gtest.h>
+#include <QApplication>
+#include <QDockWidget>
+#include <QLabel>
+#include <QMainWindow>
 #include <QtCharts/QPolarChart>
 #include <QtCharts/QXYSeries>
 
@@ -76,6 +80,43 @@ TEST_F(SectionInspectorDockTest, ShowsTheReportsNumbersForTheCurrentRowAndFollow
     EXPECT_NEAR(dock.value("dmax_mm").toDouble(), 245.9, 0.5);
     EXPECT_NEAR(dock.outline().ellipse.majorAngle_deg,
                 analysis.sections[breakout + 2].majorAzimuth_deg, test::storedInFloat(180.0));
+}
+
+TEST_F(SectionInspectorDockTest, HeadingNeverRunsOverTheNumbersWhenTheDockIsShort) {
+    // As the window lays it out: in the right column above another dock, so the column's
+    // height is shared and the inspector gets less than its plot and numbers ask for. The
+    // north line as a LAS file's curve descriptions make it: four lines at this width.
+    io::SectionTable table =
+        reconstruction::makeSyntheticWell(reconstruction::syntheticProfile("example", 30.0, 0.1));
+    table.north =
+        "P1AZ (pad-1 azimuth) from true north, its description 'pad 1 azimuth from true north'; "
+        "HAZI (hole azimuth) from true north, its description 'hole azimuth from true north'";
+    app::DeskModel model;
+    model.addWell(test::deskWellOf(std::move(table), "CALIPER3D"));
+    QMainWindow window;
+    window.setCentralWidget(new QWidget);
+    auto* dock = new app::SectionInspectorDock(&model, &window);
+    window.addDockWidget(Qt::RightDockWidgetArea, dock);
+    auto* below = new QDockWidget("below", &window);
+    auto* filler = new QWidget;
+    filler->setMinimumSize(200, 260);
+    below->setWidget(filler);
+    window.addDockWidget(Qt::RightDockWidgetArea, below);
+    window.show();
+    const auto* heading = dock->findChild<QLabel*>("heading");
+    const auto* md = dock->findChild<QLabel*>("value_md_m");
+    ASSERT_TRUE(heading && md);
+    for (const QSize size : {QSize(1400, 1000), QSize(1100, 800), QSize(900, 700)}) {
+        window.resize(size);
+        for (int i = 0; i < 5; ++i) QApplication::processEvents();
+        ASSERT_TRUE(heading->isVisible() && md->isVisible());
+        const QRect h(heading->mapTo(&window, QPoint(0, 0)), heading->size());
+        const QRect m(md->mapTo(&window, QPoint(0, 0)), md->size());
+        EXPECT_GE(heading->height(), heading->heightForWidth(heading->width()))
+            << size.width() << " x " << size.height();
+        EXPECT_LE(h.bottom(), m.top()) << "the heading runs over the first number in a window of "
+                                       << size.width() << " x " << size.height();
+    }
 }
 
 TEST_F(SectionInspectorDockTest, ChartHasEachSeriesWithItsPoints) {
