@@ -18,15 +18,10 @@ public:
         : RowCurve(values.data(), sizeof(double), values.size()) {}
     // `size` values, the first at `first`, each the next `strideBytes` bytes further on.
     RowCurve(const double* first, std::size_t strideBytes, std::size_t size)
-        : m_first(reinterpret_cast<const unsigned char*>(first)),
-          m_stride(strideBytes),
-          m_size(first ? size : 0) {}
+        : RowCurve(first, strideBytes, size, false) {}
     // The same, of single-precision values.
     RowCurve(const float* first, std::size_t strideBytes, std::size_t size)
-        : m_first(reinterpret_cast<const unsigned char*>(first)),
-          m_stride(strideBytes),
-          m_size(first ? size : 0),
-          m_single(true) {}
+        : RowCurve(first, strideBytes, size, true) {}
     // The field `member` of `size` records from `records` on.
     template <class Record, class Value>
     static RowCurve field(const Record* records, Value Record::*member, std::size_t size) {
@@ -49,6 +44,12 @@ public:
     double back() const { return (*this)[m_size - 1]; }
 
 private:
+    RowCurve(const void* first, std::size_t strideBytes, std::size_t size, bool single)
+        : m_first(static_cast<const unsigned char*>(first)),
+          m_stride(strideBytes),
+          m_size(first ? size : 0),
+          m_single(single) {}
+
     const unsigned char* m_first = nullptr;
     std::size_t m_stride = sizeof(double);
     std::size_t m_size = 0;
