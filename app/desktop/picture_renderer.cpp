@@ -1,5 +1,7 @@
 #include "app/desktop/picture_renderer.h"
 
+#include <limits>
+
 #include "app/desktop/desk_model.h"
 #include "app/desktop/well_session.h"
 
@@ -21,11 +23,14 @@ scenegraph::Picture drawWindowPicture(const WellSession& session, const SoCamera
                                       int height) {
     std::vector<std::shared_ptr<const reconstruction::WellGeometry>> shown;
     const DeskModel& model = session.model();
+    scenegraph::PictureRequest request = windowPictureRequest(session, camera, width, height);
+    request.tickedWell = std::numeric_limits<std::size_t>::max();  // the current one, if shown
     for (int i = 0; i < model.wellCount(); ++i)
-        if (model.well(i).geometry && model.well(i).visible)
+        if (model.well(i).geometry && model.well(i).visible) {
+            if (i == model.currentWell()) request.tickedWell = shown.size();
             shown.push_back(model.well(i).geometry);
-    return scenegraph::drawPicture(scenegraph::pictureWells(shown),
-                                   windowPictureRequest(session, camera, width, height));
+        }
+    return scenegraph::drawPicture(scenegraph::pictureWells(shown), request);
 }
 
 }  // namespace caliper3d::app

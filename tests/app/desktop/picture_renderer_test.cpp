@@ -9,6 +9,8 @@
 #include <QGLWidget>
 
 #include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
+#include <Inventor/SbViewportRegion.h>
+#include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/nodes/SoPerspectiveCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
 
@@ -17,6 +19,7 @@
 #include "app/desktop/main_window.h"
 #include "app/desktop/well_session.h"
 #include "desk_test_support.h"
+#include "scenegraph/camera_setup.h"
 #include "scenegraph/node_ref.h"
 #include "scenegraph/picture/png_file.h"
 #include "scenegraph/render_stats.h"
@@ -130,4 +133,44 @@ TEST(PictureRendererTest, ALargerPictureRefinesTheWallForItsOwnSize) {
         GTEST_SKIP() << "no offscreen context: " << e.what();
     }
     EXPECT_GT(large, small) << "the detail follows the picture's size, not the viewer's";
+}
+
+// Of several wells, the picture ticks the depths of the current one, as the window does.
+TEST(PictureRendererTest, APictureOfSeveralWellsTicksTheCurrentOne) {
+    CALIPER3D_REQUIRE_GUI();
+    app::DeskModel model;
+    app::WellSession session(model, nullptr);
+    app::LoadOptions options;
+    options.read.bitSize_mm = 215.9;
+    session.openWell(QString::fromStdString(test::syntheticLog("example", 60.0, 0.1).string()),
+                     options);
+    session.addWell(QString::fromStdString(test::syntheticLog("circle", 40.0, 0.1).string()),
+                    options);
+    ASSERT_TRUE(test::waitUntil(
+        [&] { return model.wellCount() == 2 && !session.loading() && model.well(1).geometry; },
+        120000));
+    model.setCurrent(1, 10.0);
+    scenegraph::NodeRef<SoPerspectiveCamera> camera(new SoPerspectiveCamera);
+    scenegraph::frameAll(camera.get(), session.sceneRoot(), SbViewportRegion(480, 360));
+    scenegraph::Picture picture;
+    try {
+        picture = app::drawWindowPicture(session, *camera.get(), 480, 360);
+    } catch (const std::exception& e) {
+        GTEST_SKIP() << "no offscreen context: " << e.what();
+    }
+    // Each well's annotations, in the wells' order; the ticks under the second's only.
+    SoSearchAction annotations;
+    annotations.setName("annotations");
+    annotations.setInterest(SoSearchAction::ALL);
+    annotations.setSearchingAll(TRUE);
+    annotations.apply(picture.root.get());
+    ASSERT_EQ(annotations.getPaths().getLength(), 2);
+    for (int i = 0; i < 2; ++i) {
+        SoSearchAction ticks;
+        ticks.setName("tick_marks");
+        ticks.setInterest(SoSearchAction::ALL);
+        ticks.setSearchingAll(TRUE);
+        ticks.apply(annotations.getPaths()[i]->getTail());
+        EXPECT_EQ(ticks.getPaths().getLength(), i == 1 ? 1 : 0) << "well " << i;
+    }
 }
