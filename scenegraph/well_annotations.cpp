@@ -324,6 +324,22 @@ void placeWellLabels(std::vector<WellLabels>& wells, const std::vector<Annotatio
     }
 }
 
+PlacedAnnotations placeAnnotations(const std::vector<AnnotatedWell>& wells, const SoCamera& camera,
+                                   int width, int height, double bottom_m, bool tickMarks,
+                                   const std::vector<ScreenBox>& obstacles) {
+    PlacedAnnotations placed;
+    for (const AnnotatedWell& well : wells) {
+        AnnotationView view = pictureAnnotationView(camera, width, height, well.top_m, bottom_m);
+        view.radialExaggeration = well.radialExaggeration;
+        view.tickMarks = tickMarks;
+        view.depthTicks = well.depthTicks;
+        placed.labels.push_back(wellLabels(*well.geometry, view));
+        placed.views.push_back(std::move(view));
+    }
+    placeWellLabels(placed.labels, placed.views, obstacles);
+    return placed;
+}
+
 std::vector<DepthTick> depthTicks(const reconstruction::WellGeometry& geometry,
                                   const AnnotationView& view) {
     std::vector<WellLabels> labels{wellLabels(geometry, view)};
@@ -411,13 +427,18 @@ SoSeparator* makeWellAnnotations(const reconstruction::WellGeometry& geometry,
 
 SoSeparator* makeWholeWellAnnotations(const reconstruction::WellGeometry& geometry,
                                       double radialExaggeration, bool depthTicks) {
-    auto* group = new SoSeparator;
-    group->setName("well_annotations");
-    if (SoSeparator* above = makeUnloggedPath(geometry)) group->addChild(above);
     AnnotationView view;
     view.radialExaggeration = radialExaggeration;
     view.depthTicks = depthTicks;
-    group->addChild(makeWellAnnotations(geometry, view));
+    return makeWholeWellAnnotations(geometry, view, wellLabels(geometry, view));
+}
+
+SoSeparator* makeWholeWellAnnotations(const reconstruction::WellGeometry& geometry,
+                                      const AnnotationView& view, const WellLabels& labels) {
+    auto* group = new SoSeparator;
+    group->setName("well_annotations");
+    if (SoSeparator* above = makeUnloggedPath(geometry)) group->addChild(above);
+    group->addChild(makeWellAnnotations(geometry, view, labels));
     return group;
 }
 

@@ -97,6 +97,28 @@ WellLabels wellLabels(const reconstruction::WellGeometry& geometry, const Annota
 void placeWellLabels(std::vector<WellLabels>& wells, const std::vector<AnnotationView>& views,
                      const std::vector<ScreenBox>& obstacles = {});
 
+// One well of a view whose labels are placed together (placeAnnotations): its geometry as
+// drawn, the measured depth its annotations start from (0: its wellhead), and whether it
+// carries depth ticks.
+struct AnnotatedWell {
+    const reconstruction::WellGeometry* geometry = nullptr;
+    double top_m = 0.0;
+    double radialExaggeration = 1.0;
+    bool depthTicks = true;
+};
+
+// Each well's annotation view and labels as `camera` sees them in a view of `width` x
+// `height` pixels, down to `bottom_m`, with tick marks or not (not down the hole): every
+// label of every well placed at once (placeWellLabels), clear of the others and of
+// `obstacles`. What a picture and the window, once its camera rests, draw.
+struct PlacedAnnotations {
+    std::vector<AnnotationView> views;
+    std::vector<WellLabels> labels;
+};
+PlacedAnnotations placeAnnotations(const std::vector<AnnotatedWell>& wells, const SoCamera& camera,
+                                   int width, int height, double bottom_m, bool tickMarks,
+                                   const std::vector<ScreenBox>& obstacles);
+
 // The ticks of `geometry` every spacing (AnnotationView::tickSpacing_m) over the annotated
 // depths, MD 0 (the wellhead, which carries the well's name) left out; with view.toPixels,
 // placed with the well's name as placeWellLabels places one well's.
@@ -127,6 +149,11 @@ SoSeparator* makeWellAnnotations(const reconstruction::WellGeometry& geometry,
 // wells ticks the current one).
 SoSeparator* makeWholeWellAnnotations(const reconstruction::WellGeometry& geometry,
                                       double radialExaggeration, bool depthTicks = true);
+
+// The same for `view` with its labels as placed (placeAnnotations): what a window adds
+// once its camera rests.
+SoSeparator* makeWholeWellAnnotations(const reconstruction::WellGeometry& geometry,
+                                      const AnnotationView& view, const WellLabels& labels);
 
 // The path above the logged interval (reconstruction::unloggedPathLine), dashed and
 // thinner than the logged path; null when the log starts at the wellhead.

@@ -35,7 +35,18 @@ bool WellView::visible() const {
 
 void WellView::annotate(const reconstruction::WellGeometry& geometry, double radialExaggeration) {
     assertMainThread("WellView");
-    SoSeparator* annotations = makeWholeWellAnnotations(geometry, radialExaggeration, m_depthTicks);
+    show(makeWholeWellAnnotations(geometry, radialExaggeration, m_depthTicks), geometry,
+         radialExaggeration);
+}
+
+void WellView::annotate(const reconstruction::WellGeometry& geometry, const AnnotationView& view,
+                        const WellLabels& labels) {
+    assertMainThread("WellView");
+    show(makeWholeWellAnnotations(geometry, view, labels), geometry, view.radialExaggeration);
+}
+
+void WellView::show(SoSeparator* annotations, const reconstruction::WellGeometry& geometry,
+                    double radialExaggeration) {
     if (!m_picks.empty())
         annotations->addChild(makePickMarkers(geometry, m_picks, radialExaggeration));
     if (m_annotations)

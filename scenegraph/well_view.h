@@ -18,6 +18,8 @@ class WellGeometry;
 namespace caliper3d::scenegraph {
 
 class WellScene;
+struct AnnotationView;
+struct WellLabels;
 
 // The nodes one shown well owns (FreeCAD's view provider): a switch that shows or hides it,
 // its WellScene, and its annotations (depth ticks, labels, name, the path above the log).
@@ -48,13 +50,21 @@ public:
     // several wells ticks the current one only).
     void setDepthTicks(bool ticks) { m_depthTicks = ticks; }
     bool depthTicks() const { return m_depthTicks; }
-    // Adds (or replaces) the annotations for `geometry` as drawn at `radialExaggeration`.
+    // Adds (or replaces) the annotations for `geometry` as drawn at `radialExaggeration`,
+    // every label where it first goes.
     void annotate(const reconstruction::WellGeometry& geometry, double radialExaggeration);
+    // The same seen as `view` says, with its labels as placed (placeAnnotations).
+    void annotate(const reconstruction::WellGeometry& geometry, const AnnotationView& view,
+                  const WellLabels& labels);
     // A new scene in place of the one shown, every segment's coarse levels built here (a
     // restyled geometry), and its annotations.
     void rebuild(const reconstruction::WellGeometry& geometry, double radialExaggeration);
 
 private:
+    // Shows `annotations` (the well's, made for `radialExaggeration`) with the picks.
+    void show(SoSeparator* annotations, const reconstruction::WellGeometry& geometry,
+              double radialExaggeration);
+
     SoGroup* m_parent = nullptr;
     NodeRef<SoSwitch> m_shown;
     std::unique_ptr<WellScene> m_scene;

@@ -91,6 +91,38 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(m_session, &WellSession::firstSegmentsShown, m_navigator, &WellNavigator::viewAll);
     connect(m_session, &WellSession::allWellsLoaded, m_navigator,
             [this] { m_navigator->frameLogs(m_session->wellScenes()); });
+    m_labelTimer.setInterval(kLabelPoll_ms);
+    connect(&m_labelTimer, &QTimer::timeout, this, &MainWindow::placeLabelsWhenStill);
+    m_labelTimer.start();
+}
+
+void MainWindow::placeLabelsWhenStill() {
+    const SoCamera* camera = m_viewer->getCamera();
+    if (!camera || m_session->wellCount() == 0) return;
+    const SbVec2s size = m_viewer->getViewportRegion().getViewportSizePixels();
+    const SbVec3f eye = camera->position.getValue();
+    const SbVec4f turn = camera->orientation.getValue().getValue();
+    const auto* perspective = dynamic_cast<const SoPerspectiveCamera*>(camera);
+    const LabelKey key{eye[0],
+                       eye[1],
+                       eye[2],
+                       turn[0],
+                       turn[1],
+                       turn[2],
+                       turn[3],
+                       perspective ? perspective->heightAngle.getValue() : -1.0,
+                       static_cast<double>(size[0]),
+                       static_cast<double>(size[1]),
+                       static_cast<double>(m_session->annotationGeneration()),
+                       m_navigator->inside() ? 1.0 : 0.0};
+    const bool resting = key == m_labelsSeen;
+    m_labelsSeen = key;
+    if (!resting || key == m_labelsPlaced) return;  // moving, or placed for this already
+    std::vector<scenegraph::ScreenBox> obstacles = m_overlay->occupied(size[1]);
+    if (const reconstruction::ColourLegend* legend = m_session->legend())
+        obstacles.push_back(scenegraph::legendPanel_px(*legend, size[0], size[1]));
+    m_session->placeLabels(*camera, size[0], size[1], !m_navigator->inside(), obstacles);
+    m_labelsPlaced = key;
 }
 
 MainWindow::~MainWindow() {

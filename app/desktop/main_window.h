@@ -1,9 +1,11 @@
 #pragma once
 
+#include <array>
 #include <memory>
 
 #include <QMainWindow>
 #include <QSize>
+#include <QTimer>
 
 class QLabel;
 class QPushButton;
@@ -66,8 +68,13 @@ private:
     void updateWarningsButton();
     void updateTitle();
     void updateLook();
+    // Places the wells' labels for the camera once it has rested a tick of m_labelTimer
+    // (polled: the viewer moves the camera on its own as it spins, a resize changes what it
+    // sees, and the session re-annotates wells as they load).
+    void placeLabelsWhenStill();
     static QSize defaultSize();
     static constexpr QSize kMinimumViewSize{480, 360};
+    static constexpr int kLabelPoll_ms = 150;       // the camera rests when unchanged this long
     static constexpr float kLabelRoom_px = 90.0f;   // a depth label right of a well
     static constexpr float kNameOffset_px = 25.0f;  // a well's name from its path
     static constexpr float kBold = 1.08f;           // DejaVu Sans Bold's width over Book's
@@ -78,6 +85,12 @@ private:
     std::unique_ptr<scenegraph::ViewOverlay> m_overlay;  // north arrow, radial exaggeration
     WellSession* m_session = nullptr;
     WellNavigator* m_navigator = nullptr;
+    QTimer m_labelTimer;
+    // The camera, the view's size, the session's annotations and the inside look as last
+    // seen, and as the labels were placed for.
+    using LabelKey = std::array<double, 12>;
+    LabelKey m_labelsSeen{};
+    LabelKey m_labelsPlaced{};
     FileMenu* m_files = nullptr;
     ViewMenu* m_views = nullptr;
     WarningsDock* m_warningsDock = nullptr;

@@ -27,6 +27,7 @@
 #include "scenegraph/picture_scale.h"
 #include "scenegraph/section_pick.h"
 #include "scenegraph/segment_feeder.h"
+#include "scenegraph/well_annotations.h"
 #include "scenegraph/well_scene.h"
 #include "scenegraph/well_view.h"
 
@@ -88,8 +89,35 @@ void WellSession::tickCurrentWell() {
         const bool ticks = withGeometry <= 1 || index == m_model.currentWell();
         if (well->view->depthTicks() == ticks) continue;
         well->view->setDepthTicks(ticks);
-        well->view->annotate(*record.geometry, record.options.radialExaggeration);
+        annotate(*well, *record.geometry, record.options.radialExaggeration);
     }
+}
+
+void WellSession::annotate(Well& well, const reconstruction::WellGeometry& geometry,
+                           double radialExaggeration) {
+    well.view->annotate(geometry, radialExaggeration);
+    ++m_annotationGeneration;
+}
+
+void WellSession::placeLabels(const SoCamera& camera, int width, int height, bool tickMarks,
+                              const std::vector<scenegraph::ScreenBox>& obstacles) {
+    std::vector<Well*> shown;
+    std::vector<scenegraph::AnnotatedWell> annotated;
+    for (const auto& well : m_wells) {
+        const int index = well ? modelIndex(*well) : -1;  // a cancelled well leaves a null
+        if (index < 0 || !well->view) continue;
+        const DeskWell& record = m_model.well(index);
+        if (!record.geometry || !record.visible) continue;
+        shown.push_back(well.get());
+        annotated.push_back({record.geometry.get(), 0.0, record.options.radialExaggeration,
+                             well->view->depthTicks()});
+    }
+    if (shown.empty() || width <= 0 || height <= 0) return;
+    const scenegraph::PlacedAnnotations placed =
+        scenegraph::placeAnnotations(annotated, camera, width, height,
+                                     std::numeric_limits<double>::infinity(), tickMarks, obstacles);
+    for (std::size_t i = 0; i < shown.size(); ++i)
+        shown[i]->view->annotate(*annotated[i].geometry, placed.views[i], placed.labels[i]);
 }
 
 WellSession::~WellSession() {
@@ -260,7 +288,7 @@ int WellSession::addWell(const WellSource& source, const LoadOptions& options) {
             });
             w.view->setPicks(std::move(picks.picks));
         }
-        w.view->annotate(*g, m_model.well(modelIndex(w)).options.radialExaggeration);
+        annotate(w, *g, m_model.well(modelIndex(w)).options.radialExaggeration);
         m_detail->addWell(w.view->scene(), g);
         edit(w, [&g](DeskWell& record) {
             if (!g->table().wellName.empty())
@@ -494,6 +522,7 @@ void WellSession::setWellVisible(int well, bool visible) {
     if (!w) return;
     w->view->setVisible(visible);
     m_model.setVisible(well, visible);
+    ++m_annotationGeneration;  // the labels of the wells shown are placed again
 }
 
 std::optional<WellPick> WellSession::pick(SoNode* root, const SbViewportRegion& viewport,
@@ -601,6 +630,7 @@ void WellSession::applyColourings(double radialExaggeration,
         const auto restyled = std::make_shared<const reconstruction::WellGeometry>(
             record.geometry->restyled(radialExaggeration, it->colouring));
         well->view->rebuild(*restyled, radialExaggeration);
+        ++m_annotationGeneration;
         m_detail->addWell(well->view->scene(), restyled);
         edit(*well, [&](DeskWell& r) {
             r.geometry = restyled;

@@ -16,10 +16,12 @@
 #include "app/input_options.h"
 #include "reconstruction/analysis/depth_match.h"
 #include "scenegraph/detail_loader.h"
+#include "scenegraph/label_placement.h"
 #include "scenegraph/node_ref.h"
 
 class SbVec2s;
 class SbViewportRegion;
+class SoCamera;
 class SoNode;
 class SoSeparator;
 
@@ -125,6 +127,16 @@ public:
     // Cancelled loads whose workers have not stopped yet (they stop within a block).
     int retiredLoadsRunning() const;
 
+    // Every visible well's name and the ticked well's depth labels placed for `camera`, seen in
+    // a view of `width` x `height` pixels, with tick marks unless `tickMarks` is false (down the
+    // hole): no label over another nor over `obstacles` (the caption, the legend). The window
+    // calls it once its camera rests; a well loaded, ticked, shown or restyled after it has its
+    // labels where they first go until the next call (annotationGeneration).
+    void placeLabels(const SoCamera& camera, int width, int height, bool tickMarks,
+                     const std::vector<scenegraph::ScreenBox>& obstacles);
+    // Counts the times a well's labels went back to where they first go.
+    unsigned annotationGeneration() const { return m_annotationGeneration; }
+
     // The wall at `pixel` of a view of `root` (Coin's pixels, origin bottom left) among the
     // visible, analysed wells; nothing when none is hit.
     std::optional<WellPick> pick(SoNode* root, const SbViewportRegion& viewport,
@@ -163,6 +175,9 @@ private:
     // Depth ticks on the current well only when several wells have geometry (their labels
     // would pile up), on the one well otherwise; re-annotates the wells whose ticks change.
     void tickCurrentWell();
+    // The well's annotations for `geometry` at `radialExaggeration`, labels where they first go.
+    void annotate(Well& well, const reconstruction::WellGeometry& geometry,
+                  double radialExaggeration);
     // A well's new colours, made for its geometry of then.
     struct ColouredWell {
         int id = -1;
@@ -189,6 +204,7 @@ private:
     reconstruction::Wellhead m_origin;  // the first well's wellhead
     bool m_framed = false;              // firstSegmentsShown sent for this opening
     bool m_exaggerationKept = false;
+    unsigned m_annotationGeneration = 0;
     QString m_loadedText;    // the last load's status line, its exaggeration a %1
     QTimer m_progressTimer;  // publishProgress while wells load
     // What the legend shows (a copy: the colouring's per-row values stay with the geometry).

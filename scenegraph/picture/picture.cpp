@@ -82,26 +82,22 @@ Picture drawPicture(const std::vector<PictureWell>& wells, const PictureRequest&
     // several wells only the current one is ticked; every label of every well is placed at
     // once, clear of the others, the overlay and the legend.
     if (const SoCamera* camera = findCamera(root)) {
-        std::vector<AnnotationView> views;
-        std::vector<WellLabels> labels;
+        std::vector<AnnotatedWell> annotated;
         for (std::size_t i = 0; i < wells.size(); ++i) {
             const std::vector<double>& depth = wells[i].geometry->table().depth_m;
             const double top = framedFromView && !map && !depth.empty()
                                    ? std::max(request.top_m, depth.front())
                                    : request.top_m;
-            AnnotationView view =
-                pictureAnnotationView(*camera, width, height, top, request.bottom_m);
-            view.radialExaggeration = request.radialExaggeration;
-            view.tickMarks = request.tickMarks;
-            view.depthTicks = wells.size() == 1 || i == request.tickedWell;
-            labels.push_back(wellLabels(*wells[i].geometry, view));
-            views.push_back(std::move(view));
+            annotated.push_back({wells[i].geometry.get(), top, request.radialExaggeration,
+                                 wells.size() == 1 || i == request.tickedWell});
         }
         std::vector<ScreenBox> obstacles = out.overlay->occupied(height);
         if (request.legend) obstacles.push_back(legendPanel_px(*request.legend, width, height));
-        placeWellLabels(labels, views, obstacles);
+        const PlacedAnnotations placed = placeAnnotations(
+            annotated, *camera, width, height, request.bottom_m, request.tickMarks, obstacles);
         for (std::size_t i = 0; i < wells.size(); ++i)
-            root->addChild(makeWellAnnotations(*wells[i].geometry, views[i], labels[i]));
+            root->addChild(
+                makeWellAnnotations(*wells[i].geometry, placed.views[i], placed.labels[i]));
     }
     root->addChild(out.overlay->root());
     out.refinedSegments = refineForCamera(wells, root, height, request.pixelTolerance);

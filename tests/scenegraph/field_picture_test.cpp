@@ -17,8 +17,6 @@
 #include <Inventor/nodes/SoCamera.h>
 #include <Inventor/nodes/SoCoordinate3.h>
 #include <Inventor/nodes/SoSeparator.h>
-#include <Inventor/nodes/SoText2.h>
-#include <Inventor/nodes/SoTranslation.h>
 
 #include "coin_fixture.h"
 #include "reconstruction/section/section_frame.h"
@@ -36,6 +34,7 @@
 #include "scenegraph/view_overlay.h"
 #include "scenegraph/well_annotations.h"
 #include "scenegraph/well_scene.h"
+#include "support/drawn_labels.h"
 
 namespace caliper3d::scenegraph {
 namespace {
@@ -66,47 +65,8 @@ Geometries syntheticField(std::size_t wells, double length_m, double step_m) {
     return field;
 }
 
-// A label as drawn: its text, whether it names a well, and the pixels it covers.
-struct DrawnLabel {
-    std::string text;
-    bool name = false;
-    ScreenBox box;
-};
-
-// The labels under `root`, read from the nodes drawn (each a separator named "well_name" or
-// "depth_label": an SoTranslation to the left end of its baseline first, its SoText2 last)
-// and placed in the picture through `camera`'s own view volume.
-std::vector<DrawnLabel> drawnLabels(SoNode* root, const SoCamera& camera, int width, int height) {
-    const SbViewVolume volume =
-        const_cast<SoCamera&>(camera).getViewVolume(float(width) / float(height));
-    std::vector<DrawnLabel> labels;
-    for (const char* kind : {"well_name", "depth_label"}) {
-        SoSearchAction search;
-        search.setName(kind);
-        search.setInterest(SoSearchAction::ALL);
-        search.setSearchingAll(TRUE);
-        search.apply(root);
-        const SoPathList& paths = search.getPaths();
-        for (int i = 0; i < paths.getLength(); ++i) {
-            auto* group = static_cast<SoSeparator*>(paths[i]->getTail());
-            auto* move = dynamic_cast<SoTranslation*>(group->getChild(0));
-            auto* text = dynamic_cast<SoText2*>(group->getChild(group->getNumChildren() - 1));
-            if (!move || !text) {
-                ADD_FAILURE() << kind << " " << i << " is not a translated text";
-                continue;
-            }
-            SbVec3f screen;
-            volume.projectToScreen(move->translation.getValue(), screen);
-            const glm::vec2 baseline(screen[0] * float(width), (1.0f - screen[1]) * float(height));
-            DrawnLabel label;
-            label.text = text->string[0].getString();
-            label.name = std::string(kind) == "well_name";
-            label.box = labelBox(baseline, label.text, label.name ? kNameSize_px : kLabelSize_px);
-            labels.push_back(label);
-        }
-    }
-    return labels;
-}
+using test::DrawnLabel;
+using test::drawnLabels;
 
 // Where each well's wellhead (MD 0) lands in the picture, through `camera`'s own view volume.
 std::vector<glm::vec2> projectedWellheads(const Geometries& field, const SoCamera& camera,

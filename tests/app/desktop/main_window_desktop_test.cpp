@@ -29,10 +29,12 @@
 #include "app/desktop/well_navigator.h"
 #include "app/desktop/wells_dock.h"
 #include "desktop_test_support.h"
+#include "io/las_writer.h"
 #include "reconstruction/analysis/report_writer.h"
 #include "scenegraph/camera_setup.h"
 #include "scenegraph/label_style.h"
 #include "scenegraph/section_pick.h"
+#include "support/drawn_labels.h"
 
 using namespace caliper3d;
 QT_CHARTS_USE_NAMESPACE
@@ -269,4 +271,94 @@ TEST_F(DesktopWindowTest, TheWellsAndWarningsDocksDrawTheWellAndHideIt) {
     ASSERT_NE(warnings, nullptr);
     EXPECT_EQ(warnings->text(), "No warnings.");
     EXPECT_GT(test::drawnPixels(warnings->grab().toImage()), 100u);
+}
+
+// The wells of a pad, their wellheads 3 m apart, seen whole: their names would all sit on
+// the same few pixels. Once the camera rests, every name and depth label drawn keeps clear of
+// the others, inside the view; when the camera turns, they are placed again for it.
+TEST_F(DesktopWindowTest, ThePadsWellNamesArePlacedApartForTheCameraOnceItRests) {
+    app::MainWindow window;
+    window.resize(1280, 960);
+    window.show();
+    app::LoadOptions options;
+    options.read.bitSize_mm = 215.9;
+    const std::vector<std::string> profiles{"example", "circle", "ellipse", "washout"};
+    for (std::size_t i = 0; i < profiles.size(); ++i) {
+        // Named in the header, as a field's logs are (file names are longer than a view).
+        const io::SectionTable table = reconstruction::makeSyntheticWell(
+            reconstruction::syntheticProfile(profiles[i], 100.0, 0.05));
+        io::LasWriteOptions las;
+        las.wellName = "PAD-" + std::to_string(i + 1);
+        reconstruction::WellSource source;
+        source.path = test::scratch("desktop_pad_" + profiles[i] + ".las").string();
+        io::writeLasFile(source.path, table, las);
+        reconstruction::Wellhead head;
+        head.easting_m = 3.0 * double(i);
+        source.wellhead = head;
+        if (i == 0)
+            window.session().openWell(source, options);
+        else
+            window.session().addWell(source, options);
+    }
+    ASSERT_TRUE(test::waitUntil(
+        [&] {
+            if (window.model().wellCount() != int(profiles.size()) || window.session().loading())
+                return false;
+            for (int i = 0; i < window.model().wellCount(); ++i)
+                if (!window.model().well(i).analysis) return false;
+            return true;
+        },
+        120000))
+        << "the wells did not load and analyse";
+
+    SoCamera* camera = window.viewer()->getCamera();
+    ASSERT_NE(camera, nullptr);
+    const auto labelsNow = [&] {
+        window.viewer()->render();  // the viewer's clipping planes for this camera
+        const SbVec2s size = window.viewer()->getViewportRegion().getViewportSizePixels();
+        return test::drawnLabels(window.session().sceneRoot(), *camera, size[0], size[1]);
+    };
+    const auto apart = [&](const std::vector<test::DrawnLabel>& labels) {
+        const SbVec2s size = window.viewer()->getViewportRegion().getViewportSizePixels();
+        const scenegraph::ScreenBox frame{0.0f, 0.0f, float(size[0]), float(size[1])};
+        int names = 0;
+        for (std::size_t i = 0; i < labels.size(); ++i) {
+            names += labels[i].name ? 1 : 0;
+            if (!scenegraph::contains(frame, labels[i].box)) return false;
+            for (std::size_t j = 0; j < i; ++j)
+                if (scenegraph::overlaps(labels[i].box, labels[j].box)) return false;
+        }
+        return names >= 2;
+    };
+    std::vector<test::DrawnLabel> labels;
+    EXPECT_TRUE(test::waitUntil(
+        [&] {
+            labels = labelsNow();
+            return apart(labels);
+        },
+        10000))
+        << "the names still meet at the wellheads";
+    int names = 0;
+    for (const test::DrawnLabel& label : labels) names += label.name ? 1 : 0;
+    EXPECT_GE(names, 2);
+
+    // Seen from the east: placed again for this camera (they move from where the labels
+    // placed for the last one are seen from here).
+    window.navigator().viewFrom(scenegraph::ViewDirection::East);
+    const std::vector<test::DrawnLabel> stale = labelsNow();
+    const auto moved = [&stale](const std::vector<test::DrawnLabel>& now) {
+        if (now.size() != stale.size()) return true;
+        for (std::size_t i = 0; i < now.size(); ++i)
+            if (now[i].text != stale[i].text || std::abs(now[i].box.x0 - stale[i].box.x0) > 1.0f ||
+                std::abs(now[i].box.y0 - stale[i].box.y0) > 1.0f)
+                return true;
+        return false;
+    };
+    EXPECT_TRUE(test::waitUntil(
+        [&] {
+            labels = labelsNow();
+            return moved(labels) && apart(labels);
+        },
+        10000))
+        << "the labels were not placed again for the turned camera";
 }

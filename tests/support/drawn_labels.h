@@ -1,0 +1,72 @@
+#pragma once
+
+// The labels a scene draws, read back from its nodes: what the field picture and the window
+// tests check for overlaps. Header only: it needs Coin, which test_support does not link.
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <glm/vec2.hpp>
+
+#include <Inventor/SbViewVolume.h>
+#include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/nodes/SoCamera.h>
+#include <Inventor/nodes/SoSeparator.h>
+#include <Inventor/nodes/SoText2.h>
+#include <Inventor/nodes/SoTranslation.h>
+
+#include "scenegraph/label_placement.h"
+#include "scenegraph/label_style.h"
+
+namespace caliper3d::test {
+
+// A label as drawn: its text, whether it names a well, and the pixels it covers.
+struct DrawnLabel {
+    std::string text;
+    bool name = false;
+    scenegraph::ScreenBox box;
+};
+
+// The labels under `root`, read from the nodes drawn (each a separator named "well_name" or
+// "depth_label": an SoTranslation to the left end of its baseline first, its SoText2 last)
+// and placed in a view of `width` x `height` pixels through `camera`'s own view volume, as
+// Coin maps it to the view. Hidden labels count too: callers search what is shown.
+inline std::vector<DrawnLabel> drawnLabels(SoNode* root, const SoCamera& camera, int width,
+                                           int height) {
+    const float aspect = float(width) / float(height);
+    SbViewVolume volume = const_cast<SoCamera&>(camera).getViewVolume(aspect);
+    // As Coin draws it (SoCamera's ADJUST_CAMERA mapping): a tall view widens the volume to
+    // keep its width.
+    if (aspect < 1.0f) volume.scale(1.0f / aspect);
+    std::vector<DrawnLabel> labels;
+    for (const char* kind : {"well_name", "depth_label"}) {
+        SoSearchAction search;
+        search.setName(kind);
+        search.setInterest(SoSearchAction::ALL);
+        search.setSearchingAll(TRUE);
+        search.apply(root);
+        const SoPathList& paths = search.getPaths();
+        for (int i = 0; i < paths.getLength(); ++i) {
+            auto* group = static_cast<SoSeparator*>(paths[i]->getTail());
+            auto* move = dynamic_cast<SoTranslation*>(group->getChild(0));
+            auto* text = dynamic_cast<SoText2*>(group->getChild(group->getNumChildren() - 1));
+            if (!move || !text) {
+                ADD_FAILURE() << kind << " " << i << " is not a translated text";
+                continue;
+            }
+            SbVec3f screen;
+            volume.projectToScreen(move->translation.getValue(), screen);
+            const glm::vec2 baseline(screen[0] * float(width), (1.0f - screen[1]) * float(height));
+            DrawnLabel label;
+            label.text = text->string[0].getString();
+            label.name = std::string(kind) == "well_name";
+            label.box = scenegraph::labelBox(
+                baseline, label.text,
+                label.name ? scenegraph::kNameSize_px : scenegraph::kLabelSize_px);
+            labels.push_back(label);
+        }
+    }
+    return labels;
+}
+
+}  // namespace caliper3d::test
