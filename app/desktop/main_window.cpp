@@ -119,8 +119,8 @@ void MainWindow::placeLabelsWhenStill() {
     m_labelsSeen = key;
     if (!resting || key == m_labelsPlaced) return;  // moving, or placed for this already
     std::vector<scenegraph::ScreenBox> obstacles = m_overlay->occupied(size[1]);
-    if (const reconstruction::ColourLegend* legend = m_session->legend())
-        obstacles.push_back(scenegraph::legendPanel_px(*legend, size[0], size[1]));
+    if (const std::optional<scenegraph::ScreenBox> legend = m_viewer->legendPanel())
+        obstacles.push_back(*legend);
     m_session->placeLabels(*camera, size[0], size[1], !m_navigator->inside(), obstacles);
     m_labelsPlaced = key;
 }

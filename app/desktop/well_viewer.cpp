@@ -21,13 +21,20 @@ void WellViewer::setLegend(const reconstruction::ColourLegend* legend) {
         m_legend->unref();
         m_legend = nullptr;
     }
+    m_shownLegend.reset();
     if (legend) {
-        // In the lower half: the wells' names are at the top of the view.
-        m_legend = scenegraph::makeColourLegend(*legend, scenegraph::kLowerLegendBar);
+        m_legend = scenegraph::makeColourLegend(*legend, kLegendBar);
         m_legend->ref();
         addSuperimposition(m_legend);
+        m_shownLegend = *legend;
     }
     scheduleRedraw();
+}
+
+std::optional<scenegraph::ScreenBox> WellViewer::legendPanel() const {
+    if (!m_shownLegend) return std::nullopt;
+    const SbVec2s size = getViewportRegion().getViewportSizePixels();
+    return scenegraph::legendPanel_px(*m_shownLegend, size[0], size[1], kLegendBar);
 }
 
 SbBool WellViewer::processSoEvent(const SoEvent* event) {

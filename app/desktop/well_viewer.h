@@ -1,11 +1,13 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 
 #include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
 #include <Inventor/SbVec2s.h>
 
 #include "reconstruction/mesh/wall_colouring.h"
+#include "scenegraph/colour_legend.h"
 
 class SoSeparator;
 
@@ -25,6 +27,9 @@ public:
     void setLegend(const reconstruction::ColourLegend* legend);
     // The legend's overlay, null when none is shown (tests).
     SoSeparator* legendNode() const { return m_legend; }
+    // The legend's panel in the view's pixels (from its top-left corner), as drawn: what the
+    // wells' labels keep clear of. Nothing when no legend is shown.
+    std::optional<scenegraph::ScreenBox> legendPanel() const;
     // Called with the pixel (Coin's: origin at the bottom left) of a left click that did not
     // drag: a drag turns the camera, a click picks.
     void onClick(std::function<void(const SbVec2s& pixel)> callback) {
@@ -36,7 +41,10 @@ protected:
 
 private:
     static constexpr int kClickSlop_px = 3;  // a press and release this close is a click
-    SoSeparator* m_legend = nullptr;         // referenced while shown
+    // In the lower half of the view: the wells' names are at its top.
+    static constexpr scenegraph::LegendBar kLegendBar = scenegraph::kLowerLegendBar;
+    SoSeparator* m_legend = nullptr;  // referenced while shown
+    std::optional<reconstruction::ColourLegend> m_shownLegend;
     std::function<void(const SbVec2s&)> m_onClick;
     SbVec2s m_pressedAt{-1000, -1000};
 };

@@ -27,6 +27,7 @@
 #include "app/desktop/section_inspector_dock.h"
 #include "app/desktop/warnings_dock.h"
 #include "app/desktop/well_navigator.h"
+#include "app/desktop/well_viewer.h"
 #include "app/desktop/wells_dock.h"
 #include "desktop_test_support.h"
 #include "io/las_writer.h"
@@ -361,4 +362,38 @@ TEST_F(DesktopWindowTest, ThePadsWellNamesArePlacedApartForTheCameraOnceItRests)
         },
         10000))
         << "the labels were not placed again for the turned camera";
+}
+
+// The labels keep clear of the legend's panel where the window draws it (in the lower half
+// of its view, not where a picture puts it): the panel's box is where its fill is drawn.
+TEST_F(DesktopWindowTest, TheLegendsPanelIsWhereTheViewerDrawsIt) {
+    app::MainWindow window;
+    openAndAnalyse(window, test::syntheticLog("example", 100.0, 0.05));
+    auto* viewer = dynamic_cast<app::WellViewer*>(window.viewer());
+    ASSERT_NE(viewer, nullptr);
+    const std::optional<scenegraph::ScreenBox> panel = viewer->legendPanel();
+    ASSERT_TRUE(panel) << "a well coloured by its radius shows a legend";
+    auto* gl = qobject_cast<QGLWidget*>(viewer->getGLWidget());
+    ASSERT_NE(gl, nullptr);
+    viewer->render();
+    const QImage image = gl->grabFrameBuffer();
+    const SbVec2s size = viewer->getViewportRegion().getViewportSizePixels();
+    ASSERT_EQ(image.width(), size[0]);
+    ASSERT_EQ(image.height(), size[1]);
+    // The panel's fill, 0x262B36 (scenegraph/colour_legend.cpp), drawn unlit.
+    const QColor fill(0x26, 0x2B, 0x36);
+    std::size_t inside = 0, outside = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+            const QColor c = image.pixelColor(x, y);
+            if (std::abs(c.red() - fill.red()) > 2 || std::abs(c.green() - fill.green()) > 2 ||
+                std::abs(c.blue() - fill.blue()) > 2)
+                continue;
+            const bool in = x + 0.5f >= panel->x0 - 1.0f && x + 0.5f <= panel->x1 + 1.0f &&
+                            y + 0.5f >= panel->y0 - 1.0f && y + 0.5f <= panel->y1 + 1.0f;
+            (in ? inside : outside) += 1;
+        }
+    EXPECT_GT(double(inside), 0.5 * double(panel->width() * panel->height()))
+        << "the panel is filled where its box says";
+    EXPECT_LT(outside, 50u) << "no fill outside the box";
 }
