@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <Inventor/SbMatrix.h>
 #include <Inventor/actions/SoAction.h>
@@ -146,8 +148,55 @@ namespace {
 // The panel reaches this far above the bar (the title), in the legend's units (the picture's
 // height is 2).
 constexpr float kPanelAboveBar = 0.17f;
+// The panel ends this far inside the picture's top and bottom edges.
+constexpr float kPanelEdge = 0.99f;
+// A note line longer than this is wrapped at a space, so that a long range or note does not
+// widen the panel over the scene (and a narrow view's caption).
+constexpr std::size_t kFooterChars = 30;
+
 float panelBottomOf(const LegendText& text, LegendBar bar) {
     return bar.bottom - 0.07f * static_cast<float>(text.footer.size()) - 0.06f;
+}
+
+// `line` cut at spaces into lines of at most kFooterChars (a longer word stays whole).
+std::vector<std::string> wrapped(const std::string& line) {
+    std::vector<std::string> lines;
+    std::string current;
+    std::size_t at = 0;
+    while (at < line.size()) {
+        const std::size_t space = line.find(' ', at);
+        const std::size_t end = space == std::string::npos ? line.size() : space;
+        const std::string word = line.substr(at, end - at);
+        if (!current.empty() && current.size() + 1 + word.size() > kFooterChars) {
+            lines.push_back(current);
+            current.clear();
+        }
+        current += current.empty() ? word : " " + word;
+        at = end + 1;
+    }
+    lines.push_back(current);
+    return lines;
+}
+
+// The legend's text as drawn: its notes wrapped.
+LegendText laidOut(const reconstruction::ColourLegend& legend) {
+    LegendText text = legendText(legend);
+    std::vector<std::string> footer;
+    for (const std::string& line : text.footer)
+        for (std::string& part : wrapped(line)) footer.push_back(std::move(part));
+    text.footer = std::move(footer);
+    return text;
+}
+
+// `bar` raised until the panel's last note ends inside the picture, and shortened when that
+// would take its title out at the top.
+LegendBar fitted(const LegendText& text, LegendBar bar) {
+    const float below = -kPanelEdge - panelBottomOf(text, bar);
+    if (below <= 0.0f) return bar;
+    bar.top = std::min(bar.top + below, kPanelEdge - kPanelAboveBar);
+    bar.bottom += below;
+    bar.bottom = std::min(bar.bottom, bar.top - 0.2f);
+    return bar;
 }
 }  // namespace
 
@@ -155,12 +204,14 @@ ScreenBox legendPanel_px(const reconstruction::ColourLegend& legend, int width, 
                          LegendBar bar) {
     const float w = static_cast<float>(width), h = static_cast<float>(height);
     const auto down = [h](float up) { return (1.0f - up) / 2.0f * h; };
+    const LegendText text = laidOut(legend);
+    bar = fitted(text, bar);
     return {w - legendWidth_px(legend), down(bar.top + kPanelAboveBar), w,
-            down(panelBottomOf(legendText(legend), bar))};
+            down(panelBottomOf(text, bar))};
 }
 
 float legendWidth_px(const reconstruction::ColourLegend& legend) {
-    const LegendText text = legendText(legend);
+    const LegendText text = laidOut(legend);
     float width = textWidth_px(text.title, kFontSize_px) - kTitleRight_px;
     for (const std::string& line : text.footer)
         width = std::max(width, textWidth_px(line, kFontSize_px) - kTitleRight_px);
@@ -170,8 +221,10 @@ float legendWidth_px(const reconstruction::ColourLegend& legend) {
 }
 
 SoSeparator* makeColourLegend(const reconstruction::ColourLegend& legend, LegendBar bar) {
-    const float kBarTop = bar.top, kBarBottom = bar.bottom;
     assertMainThread("makeColourLegend");
+    const LegendText text = laidOut(legend);
+    bar = fitted(text, bar);
+    const float kBarTop = bar.top, kBarBottom = bar.bottom;
     auto* root = new SoAnnotation;
     root->setName("colour_legend");
     auto* camera = new SoOrthographicCamera;
@@ -197,7 +250,6 @@ SoSeparator* makeColourLegend(const reconstruction::ColourLegend& legend, Legend
     root->addChild(pixels);
 
     // A panel behind the legend so it reads over the wall, as wide as its longest line.
-    const LegendText text = legendText(legend);
     const float panelBottom = panelBottomOf(text, bar);
     root->addChild(makeBar(-legendWidth_px(legend), 0.0f, {panelBottom, kBarTop + kPanelAboveBar},
                            {0x262B36FFu, 0x262B36FFu}));

@@ -27,8 +27,10 @@ LegendText legendText(const reconstruction::ColourLegend& legend);
 // the picture's height. Add it after the scene under the render
 // root, or as a viewer's superimposition; it adds nothing to a bounding box of the scene.
 // Main thread only.
-// Where its colour bar runs, up the picture ([-1, 1]); the title above it, the notes below.
-// A window's tall view whose wells are named at their top puts it in its lower half.
+// Where its colour bar runs, up the picture ([-1, 1]); the title above it, the notes below
+// (wrapped at 30 characters; the bar is raised, and shortened if need be, until the last note
+// ends inside the picture). A window's tall view whose wells are named at their top puts it
+// in its lower half.
 struct LegendBar {
     float top = 0.55f;
     float bottom = -0.45f;
