@@ -96,28 +96,39 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     m_labelTimer.start();
 }
 
-void MainWindow::placeLabelsWhenStill() {
+MainWindow::LabelKey MainWindow::labelKey() const {
     const SoCamera* camera = m_viewer->getCamera();
-    if (!camera || m_session->wellCount() == 0) return;
+    if (!camera) return {};
     const SbVec2s size = m_viewer->getViewportRegion().getViewportSizePixels();
     const SbVec3f eye = camera->position.getValue();
     const SbVec4f turn = camera->orientation.getValue().getValue();
     const auto* perspective = dynamic_cast<const SoPerspectiveCamera*>(camera);
-    const LabelKey key{eye[0],
-                       eye[1],
-                       eye[2],
-                       turn[0],
-                       turn[1],
-                       turn[2],
-                       turn[3],
-                       perspective ? perspective->heightAngle.getValue() : -1.0,
-                       static_cast<double>(size[0]),
-                       static_cast<double>(size[1]),
-                       static_cast<double>(m_session->annotationGeneration()),
-                       m_navigator->inside() ? 1.0 : 0.0};
+    return {eye[0],
+            eye[1],
+            eye[2],
+            turn[0],
+            turn[1],
+            turn[2],
+            turn[3],
+            perspective ? perspective->heightAngle.getValue() : -1.0,
+            static_cast<double>(size[0]),
+            static_cast<double>(size[1]),
+            static_cast<double>(m_session->annotationGeneration()),
+            m_navigator->inside() ? 1.0 : 0.0};
+}
+
+bool MainWindow::labelsPlaced() const {
+    return m_viewer->getCamera() && labelKey() == m_labelsPlaced;
+}
+
+void MainWindow::placeLabelsWhenStill() {
+    const SoCamera* camera = m_viewer->getCamera();
+    if (!camera || m_session->wellCount() == 0) return;
+    const LabelKey key = labelKey();
     const bool resting = key == m_labelsSeen;
     m_labelsSeen = key;
     if (!resting || key == m_labelsPlaced) return;  // moving, or placed for this already
+    const SbVec2s size = m_viewer->getViewportRegion().getViewportSizePixels();
     std::vector<scenegraph::ScreenBox> obstacles = m_overlay->occupied(size[1]);
     if (const std::optional<scenegraph::ScreenBox> legend = m_viewer->legendPanel())
         obstacles.push_back(*legend);

@@ -56,6 +56,9 @@ public:
     // click does: the section hit becomes the current depth and the direction the current
     // azimuth; the camera stays. False when nothing analysed is there.
     bool pickAt(const SbVec2s& pixel);
+    // Whether the wells' labels are placed for the camera, view size and wells as they are now
+    // (they are once the camera has rested a poll or two; tests wait for it).
+    bool labelsPlaced() const;
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -89,6 +92,7 @@ private:
     // The camera, the view's size, the session's annotations and the inside look as last
     // seen, and as the labels were placed for.
     using LabelKey = std::array<double, 12>;
+    LabelKey labelKey() const;  // null camera: all zeros
     LabelKey m_labelsSeen{};
     LabelKey m_labelsPlaced{};
     FileMenu* m_files = nullptr;

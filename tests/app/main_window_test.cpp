@@ -50,6 +50,19 @@ protected:
         loop.exec();
         return fired;
     }
+    // Runs the event loop until the window's labels are placed for its camera as it is now
+    // (they follow the camera once it rests), at most `ms` milliseconds.
+    static bool waitForLabels(app::MainWindow& window, int ms) {
+        QEventLoop loop;
+        QTimer poll;
+        QObject::connect(&poll, &QTimer::timeout, &loop, [&] {
+            if (window.labelsPlaced()) loop.quit();
+        });
+        poll.start(10);
+        QTimer::singleShot(ms, &loop, &QEventLoop::quit);
+        if (!window.labelsPlaced()) loop.exec();
+        return window.labelsPlaced();
+    }
     static QApplication* s_application;
 };
 QApplication* MainWindowTest::s_application = nullptr;
@@ -114,6 +127,7 @@ TEST_F(MainWindowTest, ShowsDepthLabelsTheWellsNameAndTheNorthArrow) {
     window.session().openWell(QString::fromStdString(log.string()), options);
     ASSERT_TRUE(waitFor(window, &app::WellSession::allWellsLoaded, 60000))
         << "the well did not load";
+    ASSERT_TRUE(waitForLabels(window, 10000)) << "the labels were not placed for the camera";
     auto* gl = qobject_cast<QGLWidget*>(window.viewer()->getGLWidget());
     ASSERT_NE(gl, nullptr);
     window.viewer()->render();

@@ -246,7 +246,9 @@ TEST_F(DesktopWindowTest, TheWellsAndWarningsDocksDrawTheWellAndHideIt) {
     EXPECT_GT(test::drawnPixels(shown), 500u);
 
     // Unticking the well hides it in 3D (the tube, its ticks and labels go; the legend and
-    // the caption stay) and in the model.
+    // the caption stay) and in the model. Its labels first placed for the camera (they
+    // follow it once it rests).
+    ASSERT_TRUE(test::waitUntil([&] { return window.labelsPlaced(); }, 10000));
     auto* gl = qobject_cast<QGLWidget*>(window.viewer()->getGLWidget());
     ASSERT_NE(gl, nullptr);
     window.viewer()->render();
