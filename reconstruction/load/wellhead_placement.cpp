@@ -9,7 +9,9 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <memory>
+#include <string>
 
 #include "io/text.h"
 #include "reconstruction/load/load_well.h"
@@ -18,19 +20,38 @@ namespace caliper3d::reconstruction {
 
 namespace {
 
-// One PROJ context per call: placements run on the load workers, and a context is not
-// shared between threads.
-struct Context {
-    PJ_CONTEXT* ctx = proj_context_create();
-    Context() { proj_log_level(ctx, PJ_LOG_NONE); }
-    ~Context() { proj_context_destroy(ctx); }
-    Context(const Context&) = delete;
-    Context& operator=(const Context&) = delete;
-};
 struct PjDelete {
     void operator()(PJ* p) const { proj_destroy(p); }
 };
 using Pj = std::unique_ptr<PJ, PjDelete>;
+
+// A coordinate reference system PROJ knows, with its metres per unit of the first axis.
+struct Crs {
+    Pj pj;
+    PJ_TYPE type = PJ_TYPE_UNKNOWN;
+    double metresPerUnit = 1.0;
+};
+
+// One PROJ context a thread, with the systems made in it by name: placements run on the load
+// workers and a context is not shared between threads, and making a system reads PROJ's
+// database, which a field of a hundred wells would otherwise do several times a well (a
+// quarter of a small well's load).
+struct Context {
+    PJ_CONTEXT* ctx = proj_context_create();
+    std::map<std::string, Crs> systems;  // crsOf's, by the text they were made from
+    Context() { proj_log_level(ctx, PJ_LOG_NONE); }
+    ~Context() {
+        systems.clear();  // the systems first: they belong to the context
+        proj_context_destroy(ctx);
+    }
+    Context(const Context&) = delete;
+    Context& operator=(const Context&) = delete;
+};
+
+Context& threadContext() {
+    thread_local Context context;
+    return context;
+}
 
 // "32631", "EPSG 32631", "epsg::32631" -> "EPSG:32631"; "UTM zone 31N", "UTM 31 S" -> the
 // WGS 84 UTM zone; anything else as written (PROJ reads names, WKT and PROJ strings).
@@ -83,15 +104,11 @@ std::string geographicCrsOf(const io::WellLocation& w, Context& c) {
     return {};
 }
 
-// A coordinate reference system PROJ knows, with its metres per unit of the first axis.
-struct Crs {
-    Pj pj;
-    PJ_TYPE type = PJ_TYPE_UNKNOWN;
-    double metresPerUnit = 1.0;
-};
-
-Crs crsOf(Context& c, const std::string& text) {
-    Crs out;
+// The system `text` names (a null pj where PROJ knows none), made once a thread.
+const Crs& crsOf(Context& c, const std::string& text) {
+    auto [found, made] = c.systems.try_emplace(text);
+    Crs& out = found->second;
+    if (!made) return out;
     out.pj.reset(proj_create(c.ctx, text.c_str()));
     if (!out.pj) return out;
     out.type = proj_get_type(out.pj.get());
@@ -145,9 +162,9 @@ std::string elevationText(const io::WellLocation& w) {
 
 std::string fieldFrameOf(const io::WellLocation& w) {
     if (!w.crs.empty()) {
-        Context c;
+        Context& c = threadContext();
         std::string text = normalisedCrs(w.crs);
-        const Crs crs = crsOf(c, text);
+        const Crs& crs = crsOf(c, text);
         // A geographic system names the datum of the latitude and longitude, not a grid.
         const bool geographic = crs.pj && (crs.type == PJ_TYPE_GEOGRAPHIC_2D_CRS ||
                                            crs.type == PJ_TYPE_GEOGRAPHIC_3D_CRS);
@@ -161,8 +178,8 @@ std::string fieldFrameOf(const io::WellLocation& w) {
 
 std::string describeFrame(const std::string& frame) {
     if (frame == kHeaderGrid) return "the first well's header grid (no coordinate system named)";
-    Context c;
-    const Crs crs = crsOf(c, frame);
+    Context& c = threadContext();
+    const Crs& crs = crsOf(c, frame);
     if (!crs.pj) return "'" + frame + "'";
     std::string name = proj_get_name(crs.pj.get()) ? proj_get_name(crs.pj.get()) : frame;
     const std::string wgs84Utm = "WGS 84 / UTM zone ";
@@ -206,8 +223,8 @@ WellPlacement placeFromHeader(const io::WellLocation& w, const std::string& fram
                           format("E %.2f N %.2f", w.easting_m, w.northing_m) + elevationText(w);
         return out;
     }
-    Context c;
-    const Crs to = crsOf(c, frame);
+    Context& c = threadContext();
+    const Crs& to = crsOf(c, frame);
     if (!isProjected(to)) {
         out.description = "the field frame '" + frame + "' is not a projected system PROJ knows";
         return out;
@@ -217,7 +234,7 @@ WellPlacement placeFromHeader(const io::WellLocation& w, const std::string& fram
     std::string why;
     if (w.hasProjected() && !w.crs.empty()) {
         const std::string text = normalisedCrs(w.crs);
-        const Crs from = crsOf(c, text);
+        const Crs& from = crsOf(c, text);
         double e = 0.0, n = 0.0;
         if (!isProjected(from)) {
             why = w.crsSource + " '" + w.crs + "' is not a projected system PROJ knows";
@@ -245,7 +262,7 @@ WellPlacement placeFromHeader(const io::WellLocation& w, const std::string& fram
                               "not one PROJ knows";
             return out;
         }
-        const Crs from = crsOf(c, datum);
+        const Crs& from = crsOf(c, datum);
         double e = 0.0, n = 0.0;
         if (!from.pj || !transform(c, from, to, w.longitude_deg, w.latitude_deg, e, n)) {
             out.description = "PROJ cannot project its latitude/longitude into " + frame;
@@ -271,8 +288,8 @@ WellPlacement placeFromHeader(const io::WellLocation& w, const std::string& fram
 
 double trueNorthGridAzimuth(const std::string& frame, double easting_m, double northing_m) {
     if (frame.empty() || frame == kHeaderGrid) return 0.0;
-    Context c;
-    const Crs grid = crsOf(c, frame);
+    Context& c = threadContext();
+    const Crs& grid = crsOf(c, frame);
     if (!isProjected(grid)) return 0.0;
     Crs geographic;
     geographic.pj.reset(proj_crs_get_geodetic_crs(c.ctx, grid.pj.get()));

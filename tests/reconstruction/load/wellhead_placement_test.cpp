@@ -6,7 +6,9 @@
 #include <GeographicLib/UTMUPS.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -145,6 +147,59 @@ TEST(WellheadPlacementTest, MapCoordinatesInANamedSystemAreTransformedIntoTheFie
     EXPECT_NE(p.description.find("UTM zone 32N (EPSG:32632), into UTM zone 31N (EPSG:32631)"),
               std::string::npos)
         << p.description;
+}
+
+TEST(WellheadPlacementTest, WellsPlacedOnSeveralThreadsAtOnceLandWhereTheyLandOneByOne) {
+    // Each thread keeps its own PROJ context and the systems it has made: the same wells
+    // placed by four threads at once, each several times over (the second time from the
+    // systems it already holds), land exactly where they land placed one by one, and every
+    // place is within half a metre of GeographicLib's.
+    struct Case {
+        std::string file;
+        double e = 0.0, n = 0.0;
+    };
+    std::vector<Case> cases;
+    for (int k = 0; k < 6; ++k) {
+        const double lat = 60.2 + 0.05 * k, lon = 2.5 + 0.1 * k;
+        Case c;
+        utm(lat, lon, 31, c.e, c.n);
+        char la[32], lo[32];
+        std::snprintf(la, sizeof la, "%.8f", lat);
+        std::snprintf(lo, sizeof lo, "%.8f", lon);
+        c.file = writeWell("wellhead_threads_" + std::to_string(k) + ".las",
+                           {{"LATI", "DEG", la, ""}, {"LONG", "DEG", lo, ""}});
+        cases.push_back(c);
+    }
+    std::vector<WellSource> sources;
+    for (const Case& c : cases) sources.push_back({c.file, {}, {}, {}});
+    const Wellhead origin = sceneOrigin(sources);
+    ASSERT_EQ(origin.frame, "EPSG:32631");
+    std::vector<WellPlacement> alone;
+    for (const WellSource& source : sources) alone.push_back(placeWell(source, origin));
+    constexpr int kThreads = 4, kRounds = 3;
+    std::vector<std::vector<WellPlacement>> placed(kThreads);
+    std::vector<std::thread> threads;
+    for (int t = 0; t < kThreads; ++t)
+        threads.emplace_back([&, t] {
+            for (int round = 0; round < kRounds; ++round)
+                for (std::size_t k = 0; k < sources.size(); ++k)
+                    placed[static_cast<std::size_t>(t)].push_back(placeWell(
+                        sources[(k + static_cast<std::size_t>(t)) % sources.size()], origin));
+        });
+    for (std::thread& t : threads) t.join();
+    for (int t = 0; t < kThreads; ++t)
+        for (std::size_t i = 0; i < placed[static_cast<std::size_t>(t)].size(); ++i) {
+            const std::size_t k = (i + static_cast<std::size_t>(t)) % sources.size();
+            const WellPlacement& p = placed[static_cast<std::size_t>(t)][i];
+            ASSERT_TRUE(p.wellhead) << p.description;
+            ASSERT_TRUE(alone[k].wellhead) << alone[k].description;
+            EXPECT_EQ(p.wellhead->easting_m, alone[k].wellhead->easting_m);
+            EXPECT_EQ(p.wellhead->northing_m, alone[k].wellhead->northing_m);
+            EXPECT_EQ(p.description, alone[k].description);
+            // In the field frame: the first well's UTM zone.
+            EXPECT_NEAR(p.wellhead->easting_m, cases[k].e, 0.5);
+            EXPECT_NEAR(p.wellhead->northing_m, cases[k].n, 0.5);
+        }
 }
 
 TEST(WellheadPlacementTest, TwoWellsOpenedTogetherSitAtTheirRelativeOffsets) {
