@@ -145,7 +145,11 @@ int renderPicture(const std::vector<WellSource>& sources, const RenderSettings& 
     // What will draw the picture, before the meshes are built (render caching on a GPU).
     scenegraph::probeOffscreenRenderer();
     PicturePlan plan = r.plan;
-    AssembledScene scene = assembleScene(sources, r.options, std::ref(plan));
+    // One picture builds what its camera needs before it draws (refineForCamera): a field
+    // needs only its coarsest segment level up front.
+    const int firstLevel = sources.size() > 1 ? reconstruction::kFieldFirstCoarseLevel
+                                              : reconstruction::kFirstCoarseLevel;
+    AssembledScene scene = assembleScene(sources, r.options, std::ref(plan), firstLevel);
     inputs = scene.inputs;
     if (scene.wells == 0) return kExitBadInput;
     scenegraph::PictureRequest request;

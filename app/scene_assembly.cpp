@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <chrono>
+#include <condition_variable>
 #include <cstdio>
 #include <exception>
+#include <functional>
 #include <memory>
+#include <mutex>
 #include <thread>
 #include <tuple>
 #include <utility>
@@ -18,6 +21,8 @@
 #include "io/picks_reader.h"
 #include "reconstruction/load/load_well.h"
 #include "reconstruction/mesh/lod_levels.h"
+#include "reconstruction/mesh/lod_tree.h"
+#include "reconstruction/parallel/ordered_blocks.h"
 #include "reconstruction/well_geometry.h"
 #include "scenegraph/colour_legend.h"
 #include "scenegraph/pick_markers.h"
@@ -37,42 +42,173 @@ AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOpt
     return assembleScene(wells, options, ScenePlan());
 }
 
-AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOptions& options,
-                             const ScenePlan& plan) {
-    const auto start = std::chrono::steady_clock::now();
-    AssembledScene out;
-    out.root = scenegraph::NodeRef<SoSeparator>(new SoSeparator);
-    out.root->setName("caliper3d_scene");
-    const reconstruction::Wellhead origin = reconstruction::sceneOrigin(wells);
-    std::vector<std::shared_ptr<const reconstruction::WellGeometry>> loaded;
+namespace {
+
+// One well as its worker left it: loaded with its picks, or the exception that stopped it.
+struct LoadSlot {
+    reconstruction::LoadedWell well;
+    std::vector<io::Pick> picks;
+    std::exception_ptr error;
+};
+
+// Loads every well, side by side when there are several: each on one of the machine's threads
+// with a one-thread read (a small log's read does not split well in two, and two wells at once
+// keep both cores busy through the path and the placement too). One well reads on its own
+// options' threads. The slots are in the order of `wells`.
+std::vector<LoadSlot> loadAll(const std::vector<WellSource>& wells, const LoadOptions& options,
+                              const reconstruction::Wellhead& origin) {
+    std::vector<LoadSlot> loads(wells.size());
+    LoadOptions each = options;
+    int threads = 1;
+    if (wells.size() > 1) {
+        threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+        each.readThreads = 1;
+    }
+    reconstruction::forEachBlockInOrder(
+        wells.size(), threads,
+        [&](std::size_t w, std::size_t) {
+            LoadSlot& slot = loads[w];
+            try {
+                slot.well = reconstruction::loadWell(wells[w], each, origin);
+                if (!wells[w].picksPath.empty()) {
+                    io::PickFile picks = io::readPicks(wells[w].picksPath);
+                    slot.well.diagnostics.merge(picks.diagnostics);
+                    slot.picks = std::move(picks.picks);
+                }
+            } catch (...) {
+                slot.error = std::current_exception();
+            }
+        },
+        [](std::size_t) {});
+    return loads;
+}
+
+// The wells that loaded, in order, with what the scene keeps of each.
+struct Loaded {
+    std::vector<std::shared_ptr<const reconstruction::WellGeometry>> geometries;
     std::vector<std::string> files;
     std::vector<io::Diagnostics> diagnostics;
-    std::vector<std::size_t> loadedInput;      // each loaded well's place in out.inputs
+    std::vector<std::size_t> inputs;           // each loaded well's place in out.inputs
     std::vector<std::vector<io::Pick>> picks;  // each loaded well's image-log picks
-    for (const WellSource& well : wells) {
+};
+
+// Each well's line of out.inputs, in order: its rows and warnings, or why it failed (said
+// on stderr as well). The slots are emptied: the geometry holds the table.
+Loaded takeLoaded(const std::vector<WellSource>& wells, std::vector<LoadSlot> loads,
+                  AssembledScene& out) {
+    Loaded kept;
+    for (std::size_t w = 0; w < wells.size(); ++w) {
+        const WellSource& well = wells[w];
+        LoadSlot& slot = loads[w];
         InputSummary& input = out.inputs.emplace_back();
         input.file = well.path;
         try {
-            reconstruction::LoadedWell one = reconstruction::loadWell(well, options, origin);
-            io::PickFile wellPicks;
-            if (!well.picksPath.empty()) wellPicks = io::readPicks(well.picksPath);
-            one.diagnostics.merge(wellPicks.diagnostics);
-            picks.push_back(std::move(wellPicks.picks));
-            loaded.push_back(one.geometry);
-            files.push_back(well.path);
+            if (slot.error) std::rethrow_exception(slot.error);
+            reconstruction::LoadedWell& one = slot.well;
+            kept.picks.push_back(std::move(slot.picks));
+            kept.geometries.push_back(one.geometry);
+            kept.files.push_back(well.path);
             const std::vector<double>& md = one.table->depth_m;
             input.rows = md.size();
             if (!md.empty())
                 std::tie(input.top_m, input.bottom_m) = std::pair(md.front(), md.back());
             input.addWarnings(one.diagnostics);
-            loadedInput.push_back(out.inputs.size() - 1);
-            diagnostics.push_back(std::move(one.diagnostics));
+            kept.inputs.push_back(out.inputs.size() - 1);
+            kept.diagnostics.push_back(std::move(one.diagnostics));
         } catch (const std::exception& e) {
             ++out.failures;
             std::fprintf(stderr, "caliper3d: %s\n", e.what());
             input.error = inputErrorFrom(e, well.path);
         }
+        slot = LoadSlot{};
     }
+    return kept;
+}
+
+// Each well's drawn geometry and coarse meshes, built on a worker up to two wells ahead of
+// the main thread, which makes their nodes in order (Coin nodes are made on the main thread
+// only: docs/threading.md). The worker stops, and is joined, when this goes.
+class MeshesAhead {
+public:
+    struct Built {
+        std::shared_ptr<const reconstruction::WellGeometry> geometry;
+        reconstruction::CoarseMeshes meshes;
+        std::exception_ptr error;
+    };
+    MeshesAhead(std::size_t count, std::function<Built(std::size_t)> build)
+        : m_slots(count), m_worker([this, build = std::move(build)] { run(build); }) {}
+    ~MeshesAhead() {
+        {
+            const std::lock_guard<std::mutex> lock(m_mutex);
+            m_stop = true;
+        }
+        m_changed.notify_all();
+        m_worker.join();
+    }
+    MeshesAhead(const MeshesAhead&) = delete;
+    MeshesAhead& operator=(const MeshesAhead&) = delete;
+
+    // Well `w`'s, once built; wells are taken in order.
+    Built take(std::size_t w) {
+        std::unique_lock<std::mutex> lock(m_mutex);
+        m_changed.wait(lock, [&] { return m_built > w; });
+        Built out = std::move(m_slots[w]);
+        m_taken = w + 1;
+        lock.unlock();
+        m_changed.notify_all();
+        return out;
+    }
+
+private:
+    static constexpr std::size_t kAhead = 2;
+
+    void run(const std::function<Built(std::size_t)>& build) {
+        for (std::size_t w = 0; w < m_slots.size(); ++w) {
+            {
+                std::unique_lock<std::mutex> lock(m_mutex);
+                m_changed.wait(lock, [&] { return m_stop || w < m_taken + kAhead; });
+                if (m_stop) return;
+            }
+            Built built;
+            try {
+                built = build(w);
+            } catch (...) {
+                built.error = std::current_exception();
+            }
+            {
+                const std::lock_guard<std::mutex> lock(m_mutex);
+                m_slots[w] = std::move(built);
+                m_built = w + 1;
+            }
+            m_changed.notify_all();
+        }
+    }
+
+    std::mutex m_mutex;  // guards everything below but the worker
+    std::condition_variable m_changed;
+    std::vector<Built> m_slots;
+    std::size_t m_built = 0;  // wells [0, m_built) are in their slots
+    std::size_t m_taken = 0;  // wells [0, m_taken) have been taken
+    bool m_stop = false;
+    std::thread m_worker;  // last: started once the rest is in place
+};
+
+}  // namespace
+
+AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOptions& options,
+                             const ScenePlan& plan, int firstCoarseLevel) {
+    const auto start = std::chrono::steady_clock::now();
+    AssembledScene out;
+    out.root = scenegraph::NodeRef<SoSeparator>(new SoSeparator);
+    out.root->setName("caliper3d_scene");
+    const reconstruction::Wellhead origin = reconstruction::sceneOrigin(wells);
+    Loaded wellsLoaded = takeLoaded(wells, loadAll(wells, options, origin), out);
+    // (References, not a structured binding: the lambdas below capture them.)
+    auto& loaded = wellsLoaded.geometries;
+    const auto& files = wellsLoaded.files;
+    const auto& diagnostics = wellsLoaded.diagnostics;
+    const auto& loadedInput = wellsLoaded.inputs;
+    const auto& picks = wellsLoaded.picks;
     double exaggeration = options.radialExaggeration;
     // A well that cannot be coloured as asked fails them all: they share one legend.
     const auto failAll = [&](const std::exception& e) {
@@ -111,11 +247,20 @@ AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOpt
     } catch (const std::exception& e) {
         failAll(e);
     }
-    for (std::size_t w = 0; w < loaded.size(); ++w) {
-        const auto geometry = std::make_shared<const reconstruction::WellGeometry>(
+    MeshesAhead ahead(loaded.size(), [&](std::size_t w) {
+        MeshesAhead::Built built;
+        built.geometry = std::make_shared<const reconstruction::WellGeometry>(
             loaded[w]->restyled(exaggeration, colourings[w]));
+        built.meshes = reconstruction::buildCoarseMeshes(*built.geometry, firstCoarseLevel);
+        return built;
+    });
+    for (std::size_t w = 0; w < loaded.size(); ++w) {
+        MeshesAhead::Built built = ahead.take(w);
+        if (built.error) std::rethrow_exception(built.error);
+        const std::shared_ptr<const reconstruction::WellGeometry>& geometry = built.geometry;
         auto scene = std::make_shared<scenegraph::WellScene>();
-        scene->buildAll(*geometry);
+        scene->attachAll(*geometry, built.meshes);
+        built.meshes = {};
         out.geometries.push_back(geometry);
         out.scenes.push_back(scene);
         out.root->addChild(scene->root());

@@ -9,6 +9,7 @@
 #include "app/input_options.h"
 #include "app/input_summary.h"
 
+#include "reconstruction/mesh/lod_levels.h"
 #include "reconstruction/well_geometry.h"
 #include "scenegraph/camera_setup.h"
 #include "scenegraph/node_ref.h"
@@ -50,7 +51,12 @@ AssembledScene assembleScene(const std::vector<std::string>& files, const LoadOp
 using ScenePlan =
     std::function<void(std::vector<std::shared_ptr<const reconstruction::WellGeometry>>& wells,
                        double& radialExaggeration)>;
+// Each well's segments come with their levels from `firstCoarseLevel` on (a picture of a field
+// needs fewer up front: reconstruction::kFieldFirstCoarseLevel). Several wells are read side by
+// side, one on each of the machine's threads, and each well's meshes are built on a worker
+// while the nodes of the one before are made here.
 AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOptions& options,
-                             const ScenePlan& plan);
+                             const ScenePlan& plan,
+                             int firstCoarseLevel = reconstruction::kFirstCoarseLevel);
 
 }  // namespace caliper3d::app

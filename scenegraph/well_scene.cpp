@@ -140,22 +140,15 @@ void WellScene::addSegment(const reconstruction::SegmentMesh& segment) {
     m_records.push_back(std::move(record));
 }
 
-void WellScene::buildAll(const reconstruction::WellGeometry& geometry) {
+void WellScene::buildAll(const reconstruction::WellGeometry& geometry, int firstLevel) {
+    attachAll(geometry, reconstruction::buildCoarseMeshes(geometry, firstLevel));
+}
+
+void WellScene::attachAll(const reconstruction::WellGeometry& geometry,
+                          const reconstruction::CoarseMeshes& meshes) {
     setPath(geometry);
-    // Meshes on two threads (they read the immutable geometry only), nodes on this one, in
-    // order. Every coarse mesh is held at once: a few MB for a 4 km well.
-    const std::size_t count = geometry.segmentCount();
-    std::vector<reconstruction::SegmentMesh> meshes(count);
-    auto build = [&geometry, &meshes, count](std::size_t from) {
-        for (std::size_t s = from; s < count; s += 2)
-            meshes[s] = reconstruction::buildCoarseSegment(geometry, s);
-    };
-    std::thread helper(build, 1);
-    build(0);
-    helper.join();
-    for (const reconstruction::SegmentMesh& mesh : meshes) addSegment(mesh);
-    for (const reconstruction::SpanMesh& span : reconstruction::buildSpanMeshes(geometry))
-        addSpan(span);
+    for (const reconstruction::SegmentMesh& mesh : meshes.segments) addSegment(mesh);
+    for (const reconstruction::SpanMesh& span : meshes.spans) addSpan(span);
     cacheBounds();
 }
 

@@ -67,9 +67,13 @@ public:
     void addSegment(const reconstruction::SegmentMesh& segment);
     // The merged mesh of a span whose segments are here (others are ignored).
     void addSpan(const reconstruction::SpanMesh& span);
-    // Path, every segment's coarse levels and every span, built here on the calling (main)
-    // thread.
-    void buildAll(const reconstruction::WellGeometry& geometry);
+    // Path, every segment's coarse levels (`firstLevel` on) and every span, built here on the
+    // calling (main) thread.
+    void buildAll(const reconstruction::WellGeometry& geometry,
+                  int firstLevel = reconstruction::kFirstCoarseLevel);
+    // The same from meshes built elsewhere (reconstruction::buildCoarseMeshes, on a worker).
+    void attachAll(const reconstruction::WellGeometry& geometry,
+                   const reconstruction::CoarseMeshes& meshes);
     // Path and every level of every segment (tests; a whole well at full detail is large).
     void buildAllLevels(const reconstruction::WellGeometry& geometry);
 

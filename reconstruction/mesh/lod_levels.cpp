@@ -356,9 +356,8 @@ SegmentMesh buildSegmentMesh(const WellGeometry& geometry, std::size_t segment) 
     return buildSegmentLevels(geometry, segment, 0, std::numeric_limits<int>::max());
 }
 
-SegmentMesh buildCoarseSegment(const WellGeometry& geometry, std::size_t segment) {
-    return buildSegmentLevels(geometry, segment, kFirstCoarseLevel,
-                              std::numeric_limits<int>::max());
+SegmentMesh buildCoarseSegment(const WellGeometry& geometry, std::size_t segment, int firstLevel) {
+    return buildSegmentLevels(geometry, segment, firstLevel, std::numeric_limits<int>::max());
 }
 
 std::vector<glm::vec3> sectionRing(const WellGeometry& geometry, std::size_t row) {

@@ -30,6 +30,11 @@ std::vector<LodLevel> lodPyramid(const GeometryOptions& options);
 
 // Levels built for the whole well up front; finer ones are built on demand, near the camera.
 inline constexpr int kFirstCoarseLevel = 2;
+// Up front in a picture of a field of wells: the pads' N-gon, a ring a metre at most. A field
+// seen whole draws its spans' merged meshes, and a picture builds what its camera needs
+// before it draws (scenegraph::refineForCamera), so the finer coarse level, eight times the
+// vertices, would be built for every segment of every well and drawn for none.
+inline constexpr int kFieldFirstCoarseLevel = 3;
 
 // Rows a level keeps among [first, last]: both ends, every measured row next to a no-data
 // row (so the wall reaches a gap's edges at every level), and otherwise a row only where
@@ -46,8 +51,9 @@ std::vector<std::size_t> decimatedRows(const WellGeometry& geometry, std::size_t
 SegmentMesh buildSegmentLevels(const WellGeometry& geometry, std::size_t segment, int from, int to);
 // Every level.
 SegmentMesh buildSegmentMesh(const WellGeometry& geometry, std::size_t segment);
-// The levels built up front, kFirstCoarseLevel on.
-SegmentMesh buildCoarseSegment(const WellGeometry& geometry, std::size_t segment);
+// The levels built up front, `firstLevel` on.
+SegmentMesh buildCoarseSegment(const WellGeometry& geometry, std::size_t segment,
+                               int firstLevel = kFirstCoarseLevel);
 
 // The rings of `rows` (increasing) joined by closed strips wherever every row between two of
 // them is measured (a no-data interval is a gap in the wall). The first and last rows get the

@@ -287,4 +287,19 @@ std::vector<SpanMesh> buildSpanMeshes(const WellGeometry& geometry,
     return out;
 }
 
+CoarseMeshes buildCoarseMeshes(const WellGeometry& geometry, int firstLevel) {
+    CoarseMeshes out;
+    const std::size_t count = geometry.segmentCount();
+    out.segments.resize(count);
+    auto build = [&geometry, &out, count, firstLevel](std::size_t from) {
+        for (std::size_t s = from; s < count; s += 2)
+            out.segments[s] = buildCoarseSegment(geometry, s, firstLevel);
+    };
+    std::thread helper(build, 1);
+    build(0);
+    helper.join();
+    out.spans = buildSpanMeshes(geometry);
+    return out;
+}
+
 }  // namespace caliper3d::reconstruction

@@ -63,4 +63,13 @@ LodLevel spanLevel(const GeometryOptions& options, int knots, int depth);
 std::vector<SpanMesh> buildSpanMeshes(const WellGeometry& geometry,
                                       const std::atomic<bool>* cancel = nullptr);
 
+// A well's meshes built up front: every segment's levels from `firstLevel` on
+// (buildCoarseSegment) and every span (buildSpanMeshes). Reads only the geometry, so any
+// thread may build it; it uses two threads of its own (the machine's two cores).
+struct CoarseMeshes {
+    std::vector<SegmentMesh> segments;
+    std::vector<SpanMesh> spans;
+};
+CoarseMeshes buildCoarseMeshes(const WellGeometry& geometry, int firstLevel = kFirstCoarseLevel);
+
 }  // namespace caliper3d::reconstruction

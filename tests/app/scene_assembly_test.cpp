@@ -1,10 +1,13 @@
 #include "app/scene_assembly.h"
 
 #include <fstream>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "io/column_text_writer.h"
+#include "reconstruction/mesh/lod_levels.h"
 #include "reconstruction/synthetic/synthetic_well.h"
 #include "scenegraph/main_thread.h"
 #include "test_support.h"
@@ -73,4 +76,76 @@ TEST(SceneAssemblyTest, WellsWithDifferentLogTopsArePlacedAtTheirTrueDepths) {
     EXPECT_NEAR(b.y, 30.0, 1e-9);  // 30 m east
     // Row for row the deeper log lies 27.7 m lower.
     EXPECT_NEAR(scene.geometries[1]->centre(10).z - scene.geometries[0]->centre(10).z, 27.7, 1e-9);
+}
+
+TEST(SceneAssemblyTest, WellsReadSideBySideKeepTheirOrderAndEachFailureIsItsOwn) {
+    // Several wells are read on the machine's threads at once and their meshes built ahead of
+    // their nodes: the scene still lists them in the order given, each bad one fails alone,
+    // and each well is what it is when assembled on its own.
+    scenegraph::initCoin();
+    std::vector<app::WellSource> wells;
+    std::vector<double> lengths;
+    for (int k = 0; k < 7; ++k) {
+        const auto log = test::scratch("assembly_side_by_side_" + std::to_string(k) + ".txt");
+        const double length = 12.0 + 4.0 * k;
+        io::writeColumnTextFile(log.string(),
+                                reconstruction::makeSyntheticWell(reconstruction::syntheticProfile(
+                                    k % 2 ? "circle" : "example", length, 0.05)));
+        const reconstruction::Wellhead head{1000.0 + 30.0 * k, 2000.0 - 20.0 * k, 50.0};
+        wells.push_back({log.string(), {}, head, {}});
+        lengths.push_back(length);
+    }
+    wells[2].path = test::scratch("assembly_no_such_log.txt").string();
+    wells[5].surveyPath = test::scratch("assembly_no_such_survey.csv").string();
+    const app::AssembledScene scene = app::assembleScene(wells, app::LoadOptions{});
+    EXPECT_EQ(scene.wells, 5);
+    EXPECT_EQ(scene.failures, 2);
+    ASSERT_EQ(scene.inputs.size(), wells.size());
+    std::size_t loaded = 0;
+    for (std::size_t k = 0; k < wells.size(); ++k) {
+        SCOPED_TRACE(k);
+        EXPECT_EQ(scene.inputs[k].file, wells[k].path);
+        if (k == 2 || k == 5) {
+            EXPECT_TRUE(scene.inputs[k].error.has_value());
+            continue;
+        }
+        ASSERT_FALSE(scene.inputs[k].error.has_value()) << scene.inputs[k].error->reason;
+        ASSERT_TRUE(scene.inputs[k].top_m && scene.inputs[k].bottom_m);
+        EXPECT_NEAR(*scene.inputs[k].bottom_m - *scene.inputs[k].top_m, lengths[k], 1e-6);
+        // The same well assembled alone: the same rows at the same places, the same tree.
+        const app::AssembledScene alone = app::assembleScene({wells[k]}, app::LoadOptions{});
+        ASSERT_EQ(alone.wells, 1);
+        const reconstruction::WellGeometry& a = *scene.geometries[loaded];
+        const reconstruction::WellGeometry& b = *alone.geometries[0];
+        ASSERT_EQ(a.table().rowCount(), b.table().rowCount());
+        const std::size_t last = a.table().rowCount() - 1;
+        // Relative to the scene's first well, not to itself.
+        EXPECT_NEAR(a.centre(last).x - b.centre(last).x, -20.0 * double(k), 1e-9);
+        EXPECT_NEAR(a.centre(last).y - b.centre(last).y, 30.0 * double(k), 1e-9);
+        EXPECT_EQ(scene.scenes[loaded]->segmentCount(), alone.scenes[0]->segmentCount());
+        EXPECT_EQ(scene.scenes[loaded]->mergedSpans(), alone.scenes[0]->mergedSpans());
+        EXPECT_EQ(scene.scenes[loaded]->fullDetailTriangles(),
+                  alone.scenes[0]->fullDetailTriangles());
+        ++loaded;
+    }
+    EXPECT_EQ(loaded, 5u);
+}
+
+TEST(SceneAssemblyTest, AFieldPictureHoldsOnlyItsCoarsestSegmentLevelUpFront) {
+    scenegraph::initCoin();
+    const auto log = test::scratch("assembly_field_level.txt");
+    io::writeColumnTextFile(
+        log.string(),
+        reconstruction::makeSyntheticWell(reconstruction::syntheticProfile("example", 30.0, 0.05)));
+    const app::WellSource a{log.string(), {}, reconstruction::Wellhead{0.0, 0.0, 0.0}, {}};
+    const app::WellSource b{log.string(), {}, reconstruction::Wellhead{25.0, 0.0, 0.0}, {}};
+    const app::AssembledScene usual = app::assembleScene({a, b}, app::LoadOptions{}, {});
+    const app::AssembledScene field =
+        app::assembleScene({a, b}, app::LoadOptions{}, {}, reconstruction::kFieldFirstCoarseLevel);
+    ASSERT_EQ(field.wells, 2);
+    for (std::size_t w = 0; w < 2; ++w)
+        for (std::size_t s = 0; s < field.scenes[w]->segmentCount(); ++s) {
+            EXPECT_EQ(usual.scenes[w]->heldFrom(s), reconstruction::kFirstCoarseLevel);
+            EXPECT_EQ(field.scenes[w]->heldFrom(s), reconstruction::kFieldFirstCoarseLevel);
+        }
 }

@@ -312,5 +312,55 @@ TEST_F(FieldPictureTest, OnlyTheTickedWellOfSeveralCarriesDepthTicks) {
     }
 }
 
+TEST_F(FieldPictureTest, AFieldBuiltFromItsCoarsestLevelDrawsEveryPictureTheSame) {
+    // `render` of a field builds only each segment's coarsest level up front
+    // (reconstruction::kFieldFirstCoarseLevel) and what its camera needs before it draws: the
+    // overview and the view down a hole are, pixel for pixel, those of a field built with
+    // the finer coarse level too.
+    const Geometries field = syntheticField(4, 120.0, 0.1);
+    auto built = [&](int firstLevel) {
+        std::vector<PictureWell> wells;
+        for (const auto& geometry : field) {
+            auto scene = std::make_shared<WellScene>();
+            scene->buildAll(*geometry, firstLevel);
+            wells.push_back({geometry, std::move(scene)});
+        }
+        return wells;
+    };
+    PictureRequest overview;
+    overview.width = 640;
+    overview.height = 400;
+    overview.view = ViewDirection::Iso;
+    overview.radialExaggeration = field.front()->options().radialExaggeration;
+    PictureRequest hole = overview;
+    hole.pose = downHolePose(*field.front(), 30.0);
+    hole.top_m = 30.0;
+    hole.bottom_m = 30.0 + hole.pose->fogVisibility_m;
+    hole.tickMarks = false;
+    for (const PictureRequest& request : {overview, hole}) {
+        SCOPED_TRACE(request.pose ? "down the hole" : "overview");
+        const std::vector<PictureWell> finer = built(reconstruction::kFirstCoarseLevel);
+        const std::vector<PictureWell> coarsest = built(reconstruction::kFieldFirstCoarseLevel);
+        Picture a, b;
+        try {
+            a = drawPicture(finer, request);
+            b = drawPicture(coarsest, request);
+        } catch (const std::runtime_error& e) {
+            FAIL() << e.what();
+        }
+        ASSERT_EQ(a.image.rgba.size(), b.image.rgba.size());
+        EXPECT_TRUE(a.image.rgba == b.image.rgba);
+        // Down the hole the camera needed finer levels, and both built them.
+        if (request.pose) EXPECT_GT(b.refinedSegments, 0u);
+        // Not two empty pictures: the walls fill a good part of each.
+        std::size_t drawn = 0;
+        for (std::size_t i = 0; i + 3 < b.image.rgba.size(); i += 4)
+            drawn += std::abs(int(b.image.rgba[i]) - int(kBackgroundColour[0] * 255.0f + 0.5f)) > 8
+                         ? 1
+                         : 0;
+        EXPECT_GT(drawn, b.image.rgba.size() / 4 / 50);
+    }
+}
+
 }  // namespace
 }  // namespace caliper3d::scenegraph
