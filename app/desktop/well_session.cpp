@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <thread>
 
 #ifdef __GLIBC__
 #include <malloc.h>
@@ -59,6 +60,7 @@ struct WellSession::Well {
     std::unique_ptr<BackgroundJob> matchJob;   // another run's depth match to its main run
     // The report's section values, computed the first time a colouring needs them.
     std::shared_ptr<const reconstruction::SectionValues> values;
+    bool started = false;  // its pipeline runs (or has run); else it waits its turn
     bool done = false;
 };
 
@@ -349,7 +351,7 @@ int WellSession::addWell(const WellSource& source, const LoadOptions& options) {
             Qt::QueuedConnection);
     };
     w.feeder = std::make_unique<scenegraph::SegmentFeeder>(*w.pipeline, w.view->scene(), callbacks);
-    w.pipeline->start();
+    startWaitingLoads();
     m_progressTimer.start();
     emit loadStarted();
     return w.id;
@@ -407,7 +409,29 @@ void WellSession::analyse(Well& well) {
         });
 }
 
+int WellSession::loadsAtOnce() {
+    return static_cast<int>(std::max(2u, std::thread::hardware_concurrency()));
+}
+
+int WellSession::loadsRunning() const {
+    return static_cast<int>(std::count_if(m_wells.begin(), m_wells.end(), [](const auto& well) {
+        return well->started && !well->done;
+    }));
+}
+
+void WellSession::startWaitingLoads() {
+    int running = loadsRunning();
+    for (const auto& well : m_wells) {
+        if (running >= loadsAtOnce()) return;
+        if (well->started || well->done || !well->pipeline) continue;
+        well->started = true;
+        well->pipeline->start();
+        ++running;
+    }
+}
+
 void WellSession::wellDone() {
+    startWaitingLoads();
     if (loading()) return;
     applyStyleAfterLoad();
     emit allWellsLoaded();

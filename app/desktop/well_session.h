@@ -103,6 +103,13 @@ public:
     void setWellVisible(int well, bool visible);
 
     std::size_t wellCount() const { return m_wells.size(); }
+    // Wells load a few at a time (loadsAtOnce: the machine's threads, at least 2), in the
+    // order they were added: a field of a hundred started at once had two hundred threads
+    // share the cores with the window, which showed nothing for eight seconds. A well added
+    // beyond them waits its turn (no geometry yet, its load fraction 0); each load that ends
+    // starts the next. loadsRunning: the loads started and not ended.
+    static int loadsAtOnce();
+    int loadsRunning() const;
     bool loading() const;
     LoadProgress progress() const;
     // Writes each loading well's fraction done into its record (DeskWell::loadFraction), where
@@ -169,6 +176,7 @@ private:
                     const std::string& error);
     bool allAnalysed() const;
     static void giveBackFreedMemory();  // once every well is loaded and analysed
+    void startWaitingLoads();
     void wellDone();
     double loadFraction(const Well& well) const;
     void applyStyleAfterLoad();

@@ -59,14 +59,23 @@ void WellsDock::rebuild() {
     m_tree->clear();
     m_items.assign(static_cast<std::size_t>(m_model.wellCount()), nullptr);
     bool grouped = false;
+    // The items are made outside the tree and put in at once: an item made in the tree lays
+    // the whole tree out again, which for a field of a hundred wells, rebuilt as each is
+    // added, kept the window from showing for seconds.
+    QList<QTreeWidgetItem*> topLevel;
     for (int i = 0; i < m_model.wellCount(); ++i) {
         // A run other than the main one goes under its main run (which comes first).
         const int main = m_model.mainRun(i);
         QTreeWidgetItem* parent = main != i && main < i ? item(main) : nullptr;
-        auto* entry = parent ? new QTreeWidgetItem(parent) : new QTreeWidgetItem(m_tree);
+        auto* entry = parent ? new QTreeWidgetItem(parent) : new QTreeWidgetItem;
+        if (!parent) topLevel.append(entry);
         grouped = grouped || parent != nullptr;
         entry->setData(Name, Qt::UserRole, i);
         m_items[static_cast<std::size_t>(i)] = entry;
+    }
+    m_tree->addTopLevelItems(topLevel);
+    for (int i = 0; i < m_model.wellCount(); ++i) {
+        QTreeWidgetItem* entry = item(i);
         auto* colour = new QComboBox(m_tree);
         colour->setObjectName(QString("colourBy%1").arg(i));
         m_tree->setItemWidget(entry, Colour, colour);

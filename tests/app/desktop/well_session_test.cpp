@@ -2,6 +2,7 @@
 // all through WellSession and read back from the DeskModel, the only store.
 #include "app/desktop/well_session.h"
 
+#include <algorithm>
 #include <fstream>
 
 #include <gtest/gtest.h>
@@ -175,6 +176,57 @@ TEST_F(WellSessionTest, CancelRemovesOnlyTheWellsStillLoading) {
     EXPECT_EQ(session.sceneRoot()->getNumChildren(), 1);
     EXPECT_EQ(session.wellSources().size(), 1u);
     EXPECT_TRUE(test::waitUntil([&] { return session.retiredLoadsRunning() == 0; }, 5000));
+}
+
+TEST_F(WellSessionTest, AFieldLoadsAFewWellsAtATimeAndCancelStopsThoseWaiting) {
+    const int atOnce = app::WellSession::loadsAtOnce();
+    ASSERT_GE(atOnce, 2);
+    const int wells = atOnce + 3;
+    app::DeskModel model;
+    app::WellSession session(model, nullptr);
+    for (int i = 0; i < wells; ++i) {
+        const auto log = test::syntheticLog(i % 2 ? "circle" : "example", 30.0 + i, 0.1);
+        if (i == 0)
+            session.openWell(path(log), eightAndAHalfInch());
+        else
+            session.addWell(path(log), eightAndAHalfInch());
+    }
+    // Every well is in the model at once; only the first `atOnce` load, the others wait.
+    ASSERT_EQ(model.wellCount(), wells);
+    EXPECT_EQ(session.loadsRunning(), atOnce);
+    for (int i = atOnce; i < wells; ++i) EXPECT_EQ(model.well(i).geometry, nullptr) << i;
+    int most = 0;
+    ASSERT_TRUE(test::waitUntil(
+        [&] {
+            most = std::max(most, session.loadsRunning());
+            for (int i = 0; i < model.wellCount(); ++i)
+                if (!model.well(i).analysis) return false;
+            return !session.loading();
+        },
+        120000))
+        << "the field did not load";
+    EXPECT_LE(most, atOnce);
+    EXPECT_EQ(session.loadsRunning(), 0);
+    for (int i = 0; i < wells; ++i) {
+        ASSERT_NE(model.well(i).geometry, nullptr) << i;
+        EXPECT_EQ(model.well(i).geometry->table().rowCount(),
+                  static_cast<std::size_t>(10 * (30 + i) + 1))
+            << i;
+    }
+
+    // Cancelling while some load and others wait removes them all, the loaded ones stay.
+    QSignalSpy cancelled(&session, &app::WellSession::loadCancelled);
+    for (int i = 0; i < wells; ++i)
+        session.addWell(path(test::syntheticLog("example", 1500.0, 0.01)), eightAndAHalfInch());
+    ASSERT_EQ(model.wellCount(), 2 * wells);
+    EXPECT_EQ(session.loadsRunning(), atOnce);
+    session.cancelLoading();
+    EXPECT_EQ(cancelled.count(), 1);
+    EXPECT_FALSE(session.loading());
+    EXPECT_EQ(session.loadsRunning(), 0);
+    EXPECT_EQ(model.wellCount(), wells);
+    EXPECT_EQ(session.sceneRoot()->getNumChildren(), wells);
+    EXPECT_TRUE(test::waitUntil([&] { return session.retiredLoadsRunning() == 0; }, 20000));
 }
 
 TEST_F(WellSessionTest, AFailedWellSaysWhichFileAndLine) {
