@@ -11,8 +11,11 @@
 
 namespace caliper3d::scenegraph {
 
-WellView::WellView(SoGroup* parent)
-    : m_parent(parent), m_shown(makeRef(new SoSwitch)), m_scene(std::make_unique<WellScene>()) {
+WellView::WellView(SoGroup* parent, int firstCoarseLevel)
+    : m_parent(parent),
+      m_shown(makeRef(new SoSwitch)),
+      m_scene(std::make_unique<WellScene>()),
+      m_firstCoarseLevel(firstCoarseLevel) {
     assertMainThread("WellView");
     m_shown->whichChild = SO_SWITCH_ALL;
     m_shown->addChild(m_scene->root());
@@ -59,7 +62,7 @@ void WellView::show(SoSeparator* annotations, const reconstruction::WellGeometry
 void WellView::rebuild(const reconstruction::WellGeometry& geometry, double radialExaggeration) {
     assertMainThread("WellView");
     auto scene = std::make_unique<WellScene>();
-    scene->buildAll(geometry);
+    scene->buildAll(geometry, m_firstCoarseLevel);
     m_shown->replaceChild(m_scene->root(), scene->root());
     m_scene = std::move(scene);
     annotate(geometry, radialExaggeration);  // the tick marks stand off the wall as now drawn

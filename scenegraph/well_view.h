@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "io/picks_reader.h"
+#include "reconstruction/mesh/lod_levels.h"
 #include "scenegraph/node_ref.h"
 
 class SoGroup;
@@ -33,7 +34,8 @@ struct WellLabels;
 // only.
 class WellView {
 public:
-    explicit WellView(SoGroup* parent);
+    // Its scene's segments hold their levels from `firstCoarseLevel` on (rebuild included).
+    explicit WellView(SoGroup* parent, int firstCoarseLevel = reconstruction::kFirstCoarseLevel);
     ~WellView();
     WellView(const WellView&) = delete;
     WellView& operator=(const WellView&) = delete;
@@ -71,6 +73,7 @@ private:
     SoSeparator* m_annotations = nullptr;  // a child of m_shown
     std::vector<io::Pick> m_picks;
     bool m_depthTicks = true;
+    int m_firstCoarseLevel = reconstruction::kFirstCoarseLevel;
 };
 
 }  // namespace caliper3d::scenegraph

@@ -257,30 +257,11 @@ io::PickFile picksOf(const std::string& path) {
 }
 }  // namespace
 
-int WellSession::addWell(const WellSource& source, const LoadOptions& options) {
-    auto owned = std::make_unique<Well>();
-    Well& w = *owned;
-    w.id = m_nextId++;
-    w.name = fileName(source.path);
-    w.view = std::make_unique<scenegraph::WellView>(m_sceneRoot.get());
-    m_wells.push_back(std::move(owned));
-    m_look = options;
-
-    DeskWell record;
-    record.id = w.id;
-    record.path = QString::fromStdString(source.path);
-    record.name = w.name;
-    record.source = source;
-    record.options = options;
-    m_model.addWell(record);
-    emit lookChanged();
-
-    // Survey, log and geometry are all read on the worker (loadWell).
-    w.pipeline = std::make_unique<reconstruction::WellLoadPipeline>(source, options, m_origin);
-    emit status("Loading " + w.name + "...");
+scenegraph::SegmentFeeder::Callbacks WellSession::feederCallbacks(Well& w,
+                                                                  const std::string& picksPath) {
     scenegraph::SegmentFeeder::Callbacks callbacks;
-    callbacks.geometry = [this, &w, picksPath = source.picksPath](
-                             std::shared_ptr<const reconstruction::WellGeometry> g) {
+    callbacks.geometry = [this, &w,
+                          picksPath](std::shared_ptr<const reconstruction::WellGeometry> g) {
         if (!picksPath.empty()) {
             io::PickFile picks = picksOf(picksPath);
             w.picksDiagnostics = picks.diagnostics;
@@ -350,7 +331,38 @@ int WellSession::addWell(const WellSource& source, const LoadOptions& options) {
             },
             Qt::QueuedConnection);
     };
-    w.feeder = std::make_unique<scenegraph::SegmentFeeder>(*w.pipeline, w.view->scene(), callbacks);
+    return callbacks;
+}
+
+int WellSession::addWell(const WellSource& source, const LoadOptions& options) {
+    auto owned = std::make_unique<Well>();
+    Well& w = *owned;
+    w.id = m_nextId++;
+    w.name = fileName(source.path);
+    // The wells after the first come with their coarsest segment level only: a field seen
+    // whole draws its spans' merged meshes, and the detail worker builds finer levels near
+    // the camera, as for every well's finest ones.
+    const int firstLevel = m_wells.empty() ? reconstruction::kFirstCoarseLevel
+                                           : reconstruction::kFieldFirstCoarseLevel;
+    w.view = std::make_unique<scenegraph::WellView>(m_sceneRoot.get(), firstLevel);
+    m_wells.push_back(std::move(owned));
+    m_look = options;
+
+    DeskWell record;
+    record.id = w.id;
+    record.path = QString::fromStdString(source.path);
+    record.name = w.name;
+    record.source = source;
+    record.options = options;
+    m_model.addWell(record);
+    emit lookChanged();
+
+    // Survey, log and geometry are all read on the worker (loadWell).
+    w.pipeline =
+        std::make_unique<reconstruction::WellLoadPipeline>(source, options, m_origin, firstLevel);
+    emit status("Loading " + w.name + "...");
+    w.feeder = std::make_unique<scenegraph::SegmentFeeder>(*w.pipeline, w.view->scene(),
+                                                           feederCallbacks(w, source.picksPath));
     startWaitingLoads();
     m_progressTimer.start();
     emit loadStarted();
@@ -519,6 +531,12 @@ std::vector<SoNode*> WellSession::wellScenes() const {
 
 std::shared_ptr<const reconstruction::WellGeometry> WellSession::geometry(std::size_t i) const {
     return i < std::size_t(m_model.wellCount()) ? m_model.well(int(i)).geometry : nullptr;
+}
+
+const scenegraph::WellScene* WellSession::scene(std::size_t i) const {
+    if (i >= std::size_t(m_model.wellCount())) return nullptr;
+    const Well* well = find(m_model.well(int(i)).id);
+    return well && well->view ? &well->view->scene() : nullptr;
 }
 
 std::vector<std::string> WellSession::colourQuantities() const {

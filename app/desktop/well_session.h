@@ -18,6 +18,7 @@
 #include "scenegraph/detail_loader.h"
 #include "scenegraph/label_placement.h"
 #include "scenegraph/node_ref.h"
+#include "scenegraph/segment_feeder.h"
 
 class SbVec2s;
 class SbViewportRegion;
@@ -129,6 +130,8 @@ public:
     std::vector<SoNode*> wellScenes() const;
     // The geometry well `i` (a record of the model) is drawn from (null until placed).
     std::shared_ptr<const reconstruction::WellGeometry> geometry(std::size_t i) const;
+    // The scene well `i` (a record of the model) is drawn in (null when there is none).
+    const scenegraph::WellScene* scene(std::size_t i) const;
     // What the wall can be coloured by: the built-in quantities and the first well's curves.
     std::vector<std::string> colourQuantities() const;
     // Cancelled loads whose workers have not stopped yet (they stop within a block).
@@ -177,6 +180,9 @@ private:
     bool allAnalysed() const;
     static void giveBackFreedMemory();  // once every well is loaded and analysed
     void startWaitingLoads();
+    // What the well's segment feeder calls as its load arrives (geometry, warnings, progress,
+    // the end), its picks read from `picksPath` ("" none) once it is placed.
+    scenegraph::SegmentFeeder::Callbacks feederCallbacks(Well& w, const std::string& picksPath);
     void wellDone();
     double loadFraction(const Well& well) const;
     void applyStyleAfterLoad();

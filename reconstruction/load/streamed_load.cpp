@@ -83,7 +83,7 @@ private:
         if (m_sink.stretch) m_sink.stretch(stretch);
         for (std::size_t s = 0; s < complete; ++s) {
             if (m_options.cancel && m_options.cancel->load()) throw GeometryCancelled();
-            SegmentMesh segment = buildCoarseSegment(*stretch, s);
+            SegmentMesh segment = buildCoarseSegment(*stretch, s, m_sink.firstCoarseLevel);
             segment.index += m_sent;
             segment.firstRow += m_rowOffset;
             segment.lastRow += m_rowOffset;

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "reconstruction/load/load_well.h"
+#include "reconstruction/mesh/lod_levels.h"
 #include "reconstruction/mesh/mesh.h"
 #include "reconstruction/well_geometry.h"
 
@@ -14,9 +15,10 @@ struct StreamedLoadSink {
     // The geometry (path and frames) of the next stretch of rows read; its first row is the
     // last row of the stretch before.
     std::function<void(const std::shared_ptr<const WellGeometry>& stretch)> stretch;
-    // The next coarse segment (buildCoarseSegment), numbered and with rows as in the whole
-    // well's geometry, identical to it bit for bit.
+    // The next coarse segment (buildCoarseSegment from `firstCoarseLevel` on), numbered and
+    // with rows as in the whole well's geometry, identical to it bit for bit.
     std::function<void(SegmentMesh&& segment)> segment;
+    int firstCoarseLevel = kFirstCoarseLevel;
     // How much of the log is read, 0 to 1 (rows read over the reader's estimate of the
     // rows to come), after each block; called on the reading thread.
     std::function<void(double fraction)> read;

@@ -9,7 +9,9 @@ namespace caliper3d::reconstruction {
 
 WellLoadPipeline::WellLoadPipeline(Loader loader) : m_loader(std::move(loader)) {}
 
-WellLoadPipeline::WellLoadPipeline(WellSource source, LoadOptions options, const Wellhead& origin) {
+WellLoadPipeline::WellLoadPipeline(WellSource source, LoadOptions options, const Wellhead& origin,
+                                   int firstCoarseLevel)
+    : m_firstCoarseLevel(firstCoarseLevel) {
     m_streamed = [this, source = std::move(source), options = std::move(options),
                   origin](const StreamedLoadSink& sink) mutable {
         options.cancel = &m_cancelled;  // a cancel stops the read too, within a block
@@ -40,6 +42,7 @@ void WellLoadPipeline::run() {
         LoadedWell well;
         if (m_streamed) {
             StreamedLoadSink sink;
+            sink.firstCoarseLevel = m_firstCoarseLevel;
             double drawnTo = -1.0e300;  // the path line sent so far ends here
             sink.stretch = [this, &drawnTo](const std::shared_ptr<const WellGeometry>& stretch) {
                 if (m_cancelled.load()) return;
@@ -65,7 +68,7 @@ void WellLoadPipeline::run() {
         m_events.push(LoadStarted{geometry, std::move(well.diagnostics)});
         for (std::size_t s = built; s < geometry->segmentCount(); ++s) {
             if (m_cancelled.load()) break;
-            m_events.push(buildCoarseSegment(*geometry, s));
+            m_events.push(buildCoarseSegment(*geometry, s, m_firstCoarseLevel));
             ++built;
         }
         // The tree's merged meshes, once every segment is out: until a span's arrives, the

@@ -57,7 +57,9 @@ public:
     // Loads `source` streamed (loadWellStreamed: the log read on a reading thread while this
     // worker, the meshing thread, sends each stretch read and its segments), `origin` being
     // the scene origin; then the whole well's geometry and warnings and the rest.
-    WellLoadPipeline(WellSource source, LoadOptions options, const Wellhead& origin);
+    // Segments come with their levels from `firstCoarseLevel` on (lod_levels.h).
+    WellLoadPipeline(WellSource source, LoadOptions options, const Wellhead& origin,
+                     int firstCoarseLevel = kFirstCoarseLevel);
     explicit WellLoadPipeline(Loader loader);
     // A table from `reader` (e.g. one made in memory), reconstructed with
     // `options`; no warnings of its own.
@@ -84,6 +86,7 @@ private:
     HandOffQueue<LoadEvent> m_events;
     std::atomic<bool> m_cancelled{false};
     std::atomic<double> m_readFraction{0.0};
+    int m_firstCoarseLevel = kFirstCoarseLevel;
     std::thread m_worker;
 };
 

@@ -14,6 +14,8 @@
 
 #include "app/desktop/desk_model.h"
 #include "desktop_test_support.h"
+#include "reconstruction/mesh/lod_levels.h"
+#include "scenegraph/well_scene.h"
 
 using namespace caliper3d;
 
@@ -212,6 +214,15 @@ TEST_F(WellSessionTest, AFieldLoadsAFewWellsAtATimeAndCancelStopsThoseWaiting) {
         EXPECT_EQ(model.well(i).geometry->table().rowCount(),
                   static_cast<std::size_t>(10 * (30 + i) + 1))
             << i;
+        // The first well holds the finer coarse level up front, the field's others only the
+        // coarsest (no camera here asks for more).
+        const scenegraph::WellScene* scene = session.scene(std::size_t(i));
+        ASSERT_NE(scene, nullptr);
+        ASSERT_GT(scene->segmentCount(), 0u);
+        for (std::size_t s = 0; s < scene->segmentCount(); ++s)
+            ASSERT_EQ(scene->heldFrom(s), i == 0 ? reconstruction::kFirstCoarseLevel
+                                                 : reconstruction::kFieldFirstCoarseLevel)
+                << i;
     }
 
     // Cancelling while some load and others wait removes them all, the loaded ones stay.
