@@ -14,7 +14,6 @@
 #include <Inventor/nodes/SoShapeHints.h>
 
 #include <algorithm>
-#include <thread>
 
 #include <glm/geometric.hpp>
 

@@ -83,27 +83,6 @@ std::string utmZoneOf(double latitude_deg, double longitude_deg) {
     return "EPSG:" + std::to_string((latitude_deg >= 0.0 ? 32600 : 32700) + zone);
 }
 
-// The geographic system of a header's latitude and longitude: the datum GDAT names (by its
-// common name, else as PROJ reads it), WGS 84 when none; "" when PROJ does not know it.
-std::string geographicCrsOf(const io::WellLocation& w, Context& c) {
-    std::string letters;
-    for (char ch : io::upper(w.geodeticDatum))
-        if (std::isalnum(static_cast<unsigned char>(ch))) letters += ch;
-    if (letters.empty() || letters == "WGS84") return "EPSG:4326";
-    static const char* const kDatums[][2] = {{"NAD83", "EPSG:4269"},      {"NAD27", "EPSG:4267"},
-                                             {"ED50", "EPSG:4230"},       {"ETRS89", "EPSG:4258"},
-                                             {"GDA94", "EPSG:4283"},      {"GDA2020", "EPSG:7844"},
-                                             {"SIRGAS2000", "EPSG:4674"}, {"WGS72", "EPSG:4322"}};
-    for (const auto& d : kDatums)
-        if (letters == d[0]) return d[1];
-    std::string text = normalisedCrs(w.geodeticDatum);
-    Pj crs(proj_create(c.ctx, text.c_str()));
-    if (crs && (proj_get_type(crs.get()) == PJ_TYPE_GEOGRAPHIC_2D_CRS ||
-                proj_get_type(crs.get()) == PJ_TYPE_GEOGRAPHIC_3D_CRS))
-        return text;
-    return {};
-}
-
 // The system `text` names (a null pj where PROJ knows none), made once a thread.
 const Crs& crsOf(Context& c, const std::string& text) {
     auto [found, made] = c.systems.try_emplace(text);
@@ -126,6 +105,28 @@ const Crs& crsOf(Context& c, const std::string& text) {
 
 bool isProjected(const Crs& crs) {
     return crs.pj && crs.type == PJ_TYPE_PROJECTED_CRS;
+}
+
+bool isGeographic(const Crs& crs) {
+    return crs.pj &&
+           (crs.type == PJ_TYPE_GEOGRAPHIC_2D_CRS || crs.type == PJ_TYPE_GEOGRAPHIC_3D_CRS);
+}
+
+// The geographic system of a header's latitude and longitude: the datum GDAT names (by its
+// common name, else as PROJ reads it), WGS 84 when none; "" when PROJ does not know it.
+std::string geographicCrsOf(const io::WellLocation& w, Context& c) {
+    std::string letters;
+    for (char ch : io::upper(w.geodeticDatum))
+        if (std::isalnum(static_cast<unsigned char>(ch))) letters += ch;
+    if (letters.empty() || letters == "WGS84") return "EPSG:4326";
+    static const char* const kDatums[][2] = {{"NAD83", "EPSG:4269"},      {"NAD27", "EPSG:4267"},
+                                             {"ED50", "EPSG:4230"},       {"ETRS89", "EPSG:4258"},
+                                             {"GDA94", "EPSG:4283"},      {"GDA2020", "EPSG:7844"},
+                                             {"SIRGAS2000", "EPSG:4674"}, {"WGS72", "EPSG:4322"}};
+    for (const auto& d : kDatums)
+        if (letters == d[0]) return d[1];
+    std::string text = normalisedCrs(w.geodeticDatum);
+    return isGeographic(crsOf(c, text)) ? text : std::string();
 }
 
 // x, y in `from`'s units (longitude, latitude in degrees for a geographic system) to `to`'s
@@ -164,11 +165,8 @@ std::string fieldFrameOf(const io::WellLocation& w) {
     if (!w.crs.empty()) {
         Context& c = threadContext();
         std::string text = normalisedCrs(w.crs);
-        const Crs& crs = crsOf(c, text);
         // A geographic system names the datum of the latitude and longitude, not a grid.
-        const bool geographic = crs.pj && (crs.type == PJ_TYPE_GEOGRAPHIC_2D_CRS ||
-                                           crs.type == PJ_TYPE_GEOGRAPHIC_3D_CRS);
-        if (!geographic) return text;
+        if (!isGeographic(crsOf(c, text))) return text;
     }
     if (std::isfinite(w.latitude_deg) && std::isfinite(w.longitude_deg))
         return utmZoneOf(w.latitude_deg, w.longitude_deg);

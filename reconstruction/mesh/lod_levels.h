@@ -30,9 +30,10 @@ std::vector<LodLevel> lodPyramid(const GeometryOptions& options);
 
 // Levels built for the whole well up front; finer ones are built on demand, near the camera.
 inline constexpr int kFirstCoarseLevel = 2;
-// Up front in a picture of a field of wells: the pads' N-gon, a ring a metre at most. A field
-// seen whole draws its spans' merged meshes, and a picture builds what its camera needs
-// before it draws (scenegraph::refineForCamera), so the finer coarse level, eight times the
+// Up front in a field of wells (render of several wells; in the window every well after the
+// first): the pads' N-gon, a ring a metre at most. A field seen whole draws its spans' merged
+// meshes, and what a camera needs finer is built for it (scenegraph::refineForCamera in a
+// picture, the detail worker in the window), so the finer coarse level, eight times the
 // vertices, would be built for every segment of every well and drawn for none.
 inline constexpr int kFieldFirstCoarseLevel = 3;
 
