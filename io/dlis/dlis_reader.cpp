@@ -171,9 +171,20 @@ void describeFile(LogicalFile& file, const std::string& name, Diagnostics* diagn
         ch.name = o->name;
         ch.longName = textOf(*o, "LONG-NAME");
         ch.units = textOf(*o, "UNITS");
-        if (const Attribute* a = o->attribute("REPRESENTATION-CODE")) {
+        if (const Attribute* a = o->attribute("REPRESENTATION-CODE"); a && !a->values.empty()) {
             const double code = a->number();
-            if (std::isfinite(code)) ch.repCode = static_cast<int>(code);
+            if (std::isfinite(code) && code >= 1 && code <= 27 && code == std::floor(code)) {
+                ch.repCode = static_cast<int>(code);
+            } else {
+                // Not a code RP66 defines (1..27): the channel's values cannot be read.
+                ch.repCode = 0;
+                if (diagnostics)
+                    diagnostics->warn(name, 0,
+                                      "channel " + ch.name.id + " gives representation code " +
+                                          a->text() +
+                                          ", which RP66 does not define (1 to 27); "
+                                          "its values are not read");
+            }
         }
         ch.dimension = dimensionOf(*o);
         std::size_t elements = 1;

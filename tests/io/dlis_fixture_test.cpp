@@ -528,3 +528,41 @@ TEST(DlisFixtureTest, RedundantSetAddsNoChannels) {
     ASSERT_EQ(index.files.size(), 1u);
     EXPECT_EQ(index.files[0].channels.size(), 10u);
 }
+
+// A CHANNEL set giving representation codes RP66 does not define (one far outside an int,
+// as a damaged file can): those channels are listed with no code and a warning each, and
+// the caliper is read as before.
+TEST(DlisFixtureTest, UndefinedRepresentationCodesAreWarnedAndTheCaliperStillReads) {
+    dlis::SixArmShape shape;
+    shape.rows = 20;
+    dlis::LogicalFileSpec f = dlis::sixArmLog(shape);
+    dlis::Set odd;
+    odd.type = "CHANNEL";
+    odd.name = "ODD";
+    odd.templ = {dlis::attr("REPRESENTATION-CODE", dlis::numbers(dlis::FDOUBL, {dlis::FSINGL}))};
+    for (const auto& [id, code] :
+         {std::pair<const char*, double>{"HUGE", 5.0457e231}, {"BYTE", 300.0}, {"HALF", 2.5}}) {
+        dlis::Object o;
+        o.name = {f.origin, 0, id};
+        o.attrs.push_back(dlis::valueOnly(dlis::numbers(dlis::FDOUBL, {code})));
+        odd.objects.push_back(o);
+    }
+    f.extraRecords.push_back({true, 3, dlis::encodeSet(odd), false});
+    const std::string path = write("dlis_odd_codes.dlis", {f});
+    caliper3d::io::Diagnostics d;
+    std::ifstream in(path, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto index = caliper3d::io::dlis::indexDlis(bytes, path, &d);
+    ASSERT_EQ(index.files.size(), 1u);
+    std::size_t odds = 0;
+    for (const auto& ch : index.files[0].channels)
+        if (ch.name.id == "HUGE" || ch.name.id == "BYTE" || ch.name.id == "HALF") {
+            ++odds;
+            EXPECT_EQ(ch.repCode, 0) << ch.name.id;
+            EXPECT_TRUE(anyWarning(d, "channel " + lower(ch.name.id) + " gives representation"))
+                << warnings(d);
+        }
+    EXPECT_EQ(odds, 3u);
+    EXPECT_EQ(d.warningCount, 3u) << warnings(d);
+    expectSixArm(loadCaliperLog(path, ReadOptions{}).table, shape);
+}
