@@ -90,7 +90,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     // them; View all shows the paths from the wellheads too).
     connect(m_session, &WellSession::firstSegmentsShown, m_navigator, &WellNavigator::viewAll);
     connect(m_session, &WellSession::allWellsLoaded, m_navigator,
-            [this] { m_navigator->frameLogs(m_session->wellScenes()); });
+            [this] { m_navigator->frameLogs([this] { return m_session->wellScenes(); }); });
     m_labelTimer.setInterval(kLabelPoll_ms);
     connect(&m_labelTimer, &QTimer::timeout, this, &MainWindow::placeLabelsWhenStill);
     m_labelTimer.start();

@@ -14,6 +14,8 @@
 #include <Inventor/nodes/SoEnvironment.h>
 #include <Inventor/nodes/SoLightModel.h>
 #include <Inventor/nodes/SoLineSet.h>
+#include <Inventor/nodes/SoOrthographicCamera.h>
+#include <Inventor/nodes/SoPerspectiveCamera.h>
 #include <Inventor/nodes/SoPickStyle.h>
 #include <Inventor/nodes/SoSeparator.h>
 #include <Inventor/nodes/SoSwitch.h>
@@ -104,34 +106,70 @@ void WellNavigator::showPicked(int well, std::size_t row, double azimuth_deg) {
 }
 
 void WellNavigator::viewAll() {
-    SoCamera* camera = m_viewer.getCamera();
-    if (!camera) return;
+    if (!m_viewer.getCamera()) return;
     leaveInside();
-    scenegraph::frameAll(camera, m_sceneRoot, m_viewer.getViewportRegion());
-    scenegraph::keepLeftOf(camera, m_sceneRoot, m_viewer.getViewportRegion(), m_rightMargin_px);
+    frameAndRemember([this] {
+        SoCamera* camera = m_viewer.getCamera();
+        scenegraph::frameAll(camera, m_sceneRoot, m_viewer.getViewportRegion());
+        scenegraph::keepLeftOf(camera, m_sceneRoot, m_viewer.getViewportRegion(), m_rightMargin_px);
+    });
 }
 
 void WellNavigator::viewFrom(scenegraph::ViewDirection direction) {
-    SoCamera* camera = m_viewer.getCamera();
-    if (!camera) return;
+    if (!m_viewer.getCamera()) return;
     leaveInside();
-    scenegraph::frameFrom(camera, m_sceneRoot, m_viewer.getViewportRegion(), direction);
-    scenegraph::keepLeftOf(camera, m_sceneRoot, m_viewer.getViewportRegion(), m_rightMargin_px);
+    frameAndRemember([this, direction] {
+        SoCamera* camera = m_viewer.getCamera();
+        scenegraph::frameFrom(camera, m_sceneRoot, m_viewer.getViewportRegion(), direction);
+        scenegraph::keepLeftOf(camera, m_sceneRoot, m_viewer.getViewportRegion(), m_rightMargin_px);
+    });
 }
 
-void WellNavigator::frameLogs(const std::vector<SoNode*>& wells) {
-    SoCamera* camera = m_viewer.getCamera();
-    if (!camera || wells.empty() || m_inside) return;
-    auto* logs = new SoSeparator;
-    logs->ref();
-    for (SoNode* well : wells) logs->addChild(well);
-    SoGetBoundingBoxAction box(m_viewer.getViewportRegion());
-    box.apply(logs);
-    if (!box.getBoundingBox().isEmpty()) {
-        scenegraph::frameAll(camera, logs, m_viewer.getViewportRegion());
-        scenegraph::keepLeftOf(camera, logs, m_viewer.getViewportRegion(), m_rightMargin_px);
-    }
-    logs->unref();
+void WellNavigator::frameLogs(std::function<std::vector<SoNode*>()> wells) {
+    if (!m_viewer.getCamera() || m_inside) return;
+    frameAndRemember([this, wells = std::move(wells)] {
+        const std::vector<SoNode*> scenes = wells();
+        if (scenes.empty()) return;
+        SoCamera* camera = m_viewer.getCamera();
+        auto* logs = new SoSeparator;
+        logs->ref();
+        for (SoNode* well : scenes) logs->addChild(well);
+        SoGetBoundingBoxAction box(m_viewer.getViewportRegion());
+        box.apply(logs);
+        if (!box.getBoundingBox().isEmpty()) {
+            scenegraph::frameAll(camera, logs, m_viewer.getViewportRegion());
+            scenegraph::keepLeftOf(camera, logs, m_viewer.getViewportRegion(), m_rightMargin_px);
+        }
+        logs->unref();
+    });
+}
+
+void WellNavigator::frameAndRemember(std::function<void()> frame) {
+    frame();
+    m_lastFraming = std::move(frame);
+    m_framedPose = pose();
+}
+
+std::optional<WellNavigator::CameraPose> WellNavigator::pose() const {
+    const SoCamera* camera = m_viewer.getCamera();
+    if (!camera) return std::nullopt;
+    CameraPose p;
+    p.position = camera->position.getValue();
+    p.orientation = camera->orientation.getValue().getValue();
+    p.focalDistance = camera->focalDistance.getValue();
+    if (const auto* perspective = dynamic_cast<const SoPerspectiveCamera*>(camera))
+        p.height = perspective->heightAngle.getValue();
+    else if (const auto* ortho = dynamic_cast<const SoOrthographicCamera*>(camera))
+        p.height = ortho->height.getValue();
+    return p;
+}
+
+void WellNavigator::setRightMargin(float px) {
+    if (px == m_rightMargin_px) return;
+    m_rightMargin_px = px;
+    // Framed beside the old margin and not moved since: framed again beside the new one.
+    if (m_lastFraming && !m_inside && m_framedPose && pose() == m_framedPose)
+        frameAndRemember(m_lastFraming);
 }
 
 void WellNavigator::leaveInside() {

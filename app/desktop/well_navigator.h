@@ -4,9 +4,12 @@
 #include <QTimer>
 
 #include <cstddef>
+#include <functional>
+#include <optional>
 #include <vector>
 
 #include <Inventor/SbVec3f.h>
+#include <Inventor/SbVec4f.h>
 
 #include "scenegraph/camera_setup.h"
 
@@ -45,11 +48,13 @@ public:
     void viewAll();
     // The whole scene from a preset direction (from outside the hole).
     void viewFrom(scenegraph::ViewDirection direction);
-    // The logs of `wells` (each a well's scene, without the path above its log) in view, as
-    // `caliper3d render` frames them: what a window opens on.
-    void frameLogs(const std::vector<SoNode*>& wells);
-    // What the framings above keep clear at the view's right edge (the colour legend), pixels.
-    void setRightMargin(float px) { m_rightMargin_px = px; }
+    // The logs of the wells `wells` gives (each a well's scene, without the path above its
+    // log) in view, as `caliper3d render` frames them: what a window opens on.
+    void frameLogs(std::function<std::vector<SoNode*>()> wells);
+    // What the framings above keep clear at the view's right edge (the colour legend),
+    // pixels. A legend that arrives (or changes width) after a framing the user has not
+    // moved the camera from since frames the scene again beside it.
+    void setRightMargin(float px);
     // Looks at the current depth: from inside the hole down it, or from outside, from the
     // side the camera looks from now, close enough to see the section.
     void follow();
@@ -80,6 +85,19 @@ private:
     void updateMarker();
     void flightStep();
     void leaveInside();  // outside, the camera left where it is
+    // `frame` done now, and remembered with where it left the camera (setRightMargin).
+    void frameAndRemember(std::function<void()> frame);
+    struct CameraPose {
+        SbVec3f position;
+        SbVec4f orientation;
+        float focalDistance = 0.0f;
+        float height = 0.0f;  // height angle, or an orthographic camera's height
+        bool operator==(const CameraPose& o) const {
+            return position == o.position && orientation == o.orientation &&
+                   focalDistance == o.focalDistance && height == o.height;
+        }
+    };
+    std::optional<CameraPose> pose() const;
 
     DeskModel& m_model;
     SoQtExaminerViewer& m_viewer;
@@ -91,7 +109,9 @@ private:
     SoLineSet* m_markerLine = nullptr;
     bool m_inside = false;
     float m_rightMargin_px = 0.0f;
-    bool m_picking = false;  // within showPicked: the camera stays
+    std::function<void()> m_lastFraming;     // the last framing, to redo beside a legend
+    std::optional<CameraPose> m_framedPose;  // where it left the camera
+    bool m_picking = false;                  // within showPicked: the camera stays
     QTimer m_flight;
     double m_speed_m_s = 5.0;
     static constexpr int kFlightTick_ms = 40;

@@ -13,9 +13,14 @@
 #include <QtCharts/QChart>
 #include <QtCharts/QLineSeries>
 
+#include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
+#include <Inventor/nodes/SoCamera.h>
+
 #include "app/desktop/desk_model.h"
 #include "app/desktop/log_track_dock.h"
+#include "app/desktop/main_window.h"
 #include "app/desktop/section_inspector_dock.h"
+#include "app/desktop/well_navigator.h"
 #include "app/desktop/well_session.h"
 #include "app/desktop/wells_dock.h"
 #include "desktop_test_support.h"
@@ -206,4 +211,49 @@ TEST_F(WellRunsTest, TheWallIsColouredByTheChangeBetweenTheRuns) {
     EXPECT_FALSE(alone.restyle(1.0, change));
     ASSERT_GE(status.count(), 1);
     EXPECT_NE(status.last().at(0).toString().indexOf("no other run"), -1);
+}
+
+// The change legend arrives seconds after the window framed the runs, and is wider than the
+// one it replaces: the view frames the runs again beside it, as a framing done with it would;
+// once the user has moved the camera, a new legend leaves it where it is.
+TEST_F(WellRunsTest, TheViewFramesTheRunsAgainBesideALegendThatArrivesLater) {
+    app::MainWindow window;
+    window.resize(900, 700);
+    window.show();
+    app::WellSession& session = window.session();
+    ASSERT_TRUE(openRuns(session, window.model()));
+    ASSERT_TRUE(test::waitUntil([&] { return !session.loading() && session.legend(); }, 120000));
+    QTest::qWait(100);  // the framing after the load, through the event loop
+    const float before = scenegraph::legendWidth_px(*session.legend());
+    SoCamera* camera = window.viewer()->getCamera();
+    ASSERT_NE(camera, nullptr);
+    const auto where = [camera] {
+        return std::make_pair(camera->position.getValue(), camera->focalDistance.getValue());
+    };
+
+    reconstruction::ColourRequest change;
+    change.quantity = "change";
+    ASSERT_TRUE(session.restyle(1.0, change));
+    ASSERT_TRUE(test::waitUntil(
+        [&] { return session.legend() && session.legend()->title == "run1.las minus run2.las"; },
+        120000));
+    QTest::qWait(100);
+    const float after = scenegraph::legendWidth_px(*session.legend());
+    ASSERT_NE(before, after) << "the test needs legends of different widths";
+    const auto reframed = where();
+    window.navigator().frameLogs([&] { return session.wellScenes(); });
+    EXPECT_EQ(where(), reframed) << "the view was not framed again beside the new legend";
+
+    // Moved by the user: the next legend (back to the departure from bit size) does not move it.
+    camera->position.setValue(camera->position.getValue() + SbVec3f(1.0f, 0.0f, 0.0f));
+    const auto moved = where();
+    reconstruction::ColourRequest departure;
+    departure.quantity = "departure";
+    ASSERT_TRUE(session.restyle(1.0, departure));
+    ASSERT_TRUE(test::waitUntil(
+        [&] { return session.legend() && session.legend()->title != "run1.las minus run2.las"; },
+        120000));
+    QTest::qWait(100);
+    EXPECT_NE(scenegraph::legendWidth_px(*session.legend()), after);
+    EXPECT_EQ(where(), moved);
 }
