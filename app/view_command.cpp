@@ -81,7 +81,7 @@ constexpr double kExampleBreakout_m = 70.0;  // the middle of the example's brea
 // The example's pictures with no display: the scene and its legend, no labels.
 void writeBarePicture(SoSeparator* root, const reconstruction::ColourLegend* legend,
                       const std::string& path, int width, int height) {
-    if (legend) root->addChild(scenegraph::makeColourLegend(*legend));
+    if (legend) root->addChild(scenegraph::makeColourLegend(*legend, height));
     scenegraph::OffscreenRenderer renderer;
     scenegraph::writePng(renderer.render(root, width, height, scenegraph::kBackgroundColour), path);
 }

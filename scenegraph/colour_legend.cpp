@@ -145,18 +145,27 @@ LegendText legendText(const reconstruction::ColourLegend& legend) {
 }
 
 namespace {
-// The panel reaches this far above the bar (the title), in the legend's units (the picture's
-// height is 2).
-constexpr float kPanelAboveBar = 0.17f;
-// The panel ends this far inside the picture's top and bottom edges.
+// Up, the text is laid out in pixels from the bar (its bar is placed in fractions of the
+// picture's height): in a tall view its lines are as close as in a short one.
+constexpr float kTitleAbove_px = 19.0f;  // the title's baseline above the bar's top
+constexpr float kPanelAbove_px = 37.0f;  // the panel's top above the bar's top
+constexpr float kLine_px = 17.0f;        // one note line below the last
+constexpr float kPanelBelow_px = 12.0f;  // the panel's bottom below the last note
+constexpr float kLabelDrop_px = 5.0f;    // a label's baseline below the mark it names
+constexpr float kMinBar_px = 60.0f;      // the bar is never shortened below this
+// The panel ends this far inside the picture's top and bottom edges (the picture's height
+// is 2).
 constexpr float kPanelEdge = 0.99f;
 // A note line longer than this is wrapped at a space, so that a long range or note does not
 // widen the panel over the scene (and a narrow view's caption).
 constexpr std::size_t kFooterChars = 30;
 
-float panelBottomOf(const LegendText& text, LegendBar bar) {
-    return bar.bottom - 0.07f * static_cast<float>(text.footer.size()) - 0.06f;
-}
+// The legend's frame up the picture for one height: the bar's ends, the panel's, and the
+// size of a pixel in the overlay camera's units.
+struct Frame {
+    float barTop = 0.0f, barBottom = 0.0f, panelTop = 0.0f, panelBottom = 0.0f, px = 0.0f;
+    float noteY(std::size_t i) const { return barBottom - kLine_px * px * float(i + 1); }
+};
 
 // `line` cut at spaces into lines of at most kFooterChars (a longer word stays whole).
 std::vector<std::string> wrapped(const std::string& line) {
@@ -188,15 +197,24 @@ LegendText laidOut(const reconstruction::ColourLegend& legend) {
     return text;
 }
 
-// `bar` raised until the panel's last note ends inside the picture, and shortened when that
-// would take its title out at the top.
-LegendBar fitted(const LegendText& text, LegendBar bar) {
-    const float below = -kPanelEdge - panelBottomOf(text, bar);
-    if (below <= 0.0f) return bar;
-    bar.top = std::min(bar.top + below, kPanelEdge - kPanelAboveBar);
-    bar.bottom += below;
-    bar.bottom = std::min(bar.bottom, bar.top - 0.2f);
-    return bar;
+// `bar` in a picture `height` pixels tall: no longer than its most, then raised until the
+// panel's last note ends inside the picture, and shortened when that would take its title
+// out at the top.
+Frame frameOf(const LegendText& text, LegendBar bar, int height) {
+    Frame f;
+    f.px = 2.0f / static_cast<float>(std::max(height, 1));
+    if (bar.maxLength_px > 0.0f) bar.top = std::min(bar.top, bar.bottom + bar.maxLength_px * f.px);
+    const float below_px = kLine_px * static_cast<float>(text.footer.size()) + kPanelBelow_px;
+    const float raise = -kPanelEdge - (bar.bottom - below_px * f.px);
+    if (raise > 0.0f) {
+        bar.top = std::min(bar.top + raise, kPanelEdge - kPanelAbove_px * f.px);
+        bar.bottom = std::min(bar.bottom + raise, bar.top - kMinBar_px * f.px);
+    }
+    f.barTop = bar.top;
+    f.barBottom = bar.bottom;
+    f.panelTop = bar.top + kPanelAbove_px * f.px;
+    f.panelBottom = bar.bottom - below_px * f.px;
+    return f;
 }
 }  // namespace
 
@@ -204,10 +222,8 @@ ScreenBox legendPanel_px(const reconstruction::ColourLegend& legend, int width, 
                          LegendBar bar) {
     const float w = static_cast<float>(width), h = static_cast<float>(height);
     const auto down = [h](float up) { return (1.0f - up) / 2.0f * h; };
-    const LegendText text = laidOut(legend);
-    bar = fitted(text, bar);
-    return {w - legendWidth_px(legend), down(bar.top + kPanelAboveBar), w,
-            down(panelBottomOf(text, bar))};
+    const Frame f = frameOf(laidOut(legend), bar, height);
+    return {w - legendWidth_px(legend), down(f.panelTop), w, down(f.panelBottom)};
 }
 
 float legendWidth_px(const reconstruction::ColourLegend& legend) {
@@ -220,11 +236,12 @@ float legendWidth_px(const reconstruction::ColourLegend& legend) {
     return std::ceil(width + kPanelMargin_px);
 }
 
-SoSeparator* makeColourLegend(const reconstruction::ColourLegend& legend, LegendBar bar) {
+SoSeparator* makeColourLegend(const reconstruction::ColourLegend& legend, int height,
+                              LegendBar bar) {
     assertMainThread("makeColourLegend");
     const LegendText text = laidOut(legend);
-    bar = fitted(text, bar);
-    const float kBarTop = bar.top, kBarBottom = bar.bottom;
+    const Frame f = frameOf(text, bar, height);
+    const float kBarTop = f.barTop, kBarBottom = f.barBottom;
     auto* root = new SoAnnotation;
     root->setName("colour_legend");
     auto* camera = new SoOrthographicCamera;
@@ -250,8 +267,7 @@ SoSeparator* makeColourLegend(const reconstruction::ColourLegend& legend, Legend
     root->addChild(pixels);
 
     // A panel behind the legend so it reads over the wall, as wide as its longest line.
-    const float panelBottom = panelBottomOf(text, bar);
-    root->addChild(makeBar(-legendWidth_px(legend), 0.0f, {panelBottom, kBarTop + kPanelAboveBar},
+    root->addChild(makeBar(-legendWidth_px(legend), 0.0f, {f.panelBottom, f.panelTop},
                            {0x262B36FFu, 0x262B36FFu}));
 
     std::vector<float> ys;
@@ -279,21 +295,20 @@ SoSeparator* makeColourLegend(const reconstruction::ColourLegend& legend, Legend
     auto* ink = new SoBaseColor;
     ink->rgb.setValue(0.92f, 0.93f, 0.95f);
     root->addChild(ink);
-    addText(root, kTitleRight_px, kBarTop + 0.09f, text.title);
-    const float lineHeight = 0.035f;  // baseline to the centre of a line, roughly
+    addText(root, kTitleRight_px, kBarTop + kTitleAbove_px * f.px, text.title);
+    const float drop = kLabelDrop_px * f.px;
     if (legend.kind == ColourMapKind::Categorical) {
         for (std::size_t i = 0; i < text.labels.size(); ++i) {
             const float top = kBarTop - step * static_cast<float>(i);
-            addText(root, kTextRight_px, top - step * 0.425f - lineHeight / 2, text.labels[i]);
+            addText(root, kTextRight_px, top - step * 0.425f - drop, text.labels[i]);
         }
     } else {
         const float ysOf[3] = {kBarTop, (kBarTop + kBarBottom) / 2.0f, kBarBottom};
         for (std::size_t i = 0; i < 3; ++i)
-            addText(root, kTextRight_px, ysOf[i] - lineHeight / 2, text.labels[i]);
+            addText(root, kTextRight_px, ysOf[i] - drop, text.labels[i]);
     }
     for (std::size_t i = 0; i < text.footer.size(); ++i)
-        addText(root, kTitleRight_px, kBarBottom - 0.07f * static_cast<float>(i + 1),
-                text.footer[i]);
+        addText(root, kTitleRight_px, f.noteY(i), text.footer[i]);
     return root;
 }
 

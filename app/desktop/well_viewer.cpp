@@ -23,7 +23,8 @@ void WellViewer::setLegend(const reconstruction::ColourLegend* legend) {
     }
     m_shownLegend.reset();
     if (legend) {
-        m_legend = scenegraph::makeColourLegend(*legend, kLegendBar);
+        m_legendHeight = getViewportRegion().getViewportSizePixels()[1];
+        m_legend = scenegraph::makeColourLegend(*legend, m_legendHeight, kLegendBar);
         m_legend->ref();
         addSuperimposition(m_legend);
         m_shownLegend = *legend;
@@ -35,6 +36,15 @@ std::optional<scenegraph::ScreenBox> WellViewer::legendPanel() const {
     if (!m_shownLegend) return std::nullopt;
     const SbVec2s size = getViewportRegion().getViewportSizePixels();
     return scenegraph::legendPanel_px(*m_shownLegend, size[0], size[1], kLegendBar);
+}
+
+// The legend's text is laid out in pixels up the view: made again for a new height.
+void WellViewer::sizeChanged(const SbVec2s& size) {
+    SoQtExaminerViewer::sizeChanged(size);
+    if (m_shownLegend && getViewportRegion().getViewportSizePixels()[1] != m_legendHeight) {
+        const reconstruction::ColourLegend legend = *m_shownLegend;
+        setLegend(&legend);
+    }
 }
 
 SbBool WellViewer::processSoEvent(const SoEvent* event) {

@@ -38,6 +38,7 @@ public:
 
 protected:
     SbBool processSoEvent(const SoEvent* event) override;
+    void sizeChanged(const SbVec2s& size) override;
 
 private:
     static constexpr int kClickSlop_px = 3;  // a press and release this close is a click
@@ -45,6 +46,7 @@ private:
     static constexpr scenegraph::LegendBar kLegendBar = scenegraph::kLowerLegendBar;
     SoSeparator* m_legend = nullptr;  // referenced while shown
     std::optional<reconstruction::ColourLegend> m_shownLegend;
+    short m_legendHeight = 0;  // the view's height the legend was laid out for
     std::function<void(const SbVec2s&)> m_onClick;
     SbVec2s m_pressedAt{-1000, -1000};
 };

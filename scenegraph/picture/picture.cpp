@@ -101,7 +101,7 @@ Picture drawPicture(const std::vector<PictureWell>& wells, const PictureRequest&
     }
     root->addChild(out.overlay->root());
     out.refinedSegments = refineForCamera(wells, root, height, request.pixelTolerance);
-    if (request.legend) root->addChild(makeColourLegend(*request.legend));
+    if (request.legend) root->addChild(makeColourLegend(*request.legend, height));
     OffscreenRenderer renderer;
     out.image = renderer.render(root, width, height, kBackgroundColour);
     out.render_ms = msSince(start);

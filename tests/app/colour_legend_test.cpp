@@ -162,8 +162,12 @@ TEST(ColourLegendTest, EveryLineLiesOnTheLegendsPanelInANarrowPicture) {
         return std::abs(c.red() - panel.red()) <= 2 && std::abs(c.green() - panel.green()) <= 2 &&
                std::abs(c.blue() - panel.blue()) <= 2;
     };
-    // The panel's rows: from its top (0.72 up the picture) to below the last note.
-    const int top = static_cast<int>((1.0 - 0.72) / 2.0 * image.height()) + 2;
+    // The panel's rows at the right edge: from the middle of its bar (the picture's middle)
+    // up to its top and down to below the last note.
+    int top = image.height() / 2;
+    ASSERT_TRUE(isPanel(image.width() - 2, top)) << "the panel at the bar's middle";
+    while (top > 0 && isPanel(image.width() - 2, top - 1)) --top;
+    top += 2;
     int bottom = top;
     while (bottom + 1 < image.height() && isPanel(image.width() - 2, bottom + 1)) ++bottom;
     ASSERT_GT(bottom - top, image.height() / 3) << "the panel runs down the right edge";

@@ -63,7 +63,7 @@ TEST_F(ColourLegendLayoutTest, ALongLegendStaysInsideANarrowTallViewWhereItsBoxS
     const int width = 490, height = 785;
     const reconstruction::ColourLegend legend = changeLikeLegend();
     auto root = makeRef(new SoSeparator);
-    root->addChild(makeColourLegend(legend, kLowerLegendBar));
+    root->addChild(makeColourLegend(legend, height, kLowerLegendBar));
     RenderedImage image;
     try {
         OffscreenRenderer renderer;
@@ -94,6 +94,24 @@ TEST_F(ColourLegendLayoutTest, ALongLegendStaysInsideANarrowTallViewWhereItsBoxS
             outside += light && !in ? 1 : 0;
         }
     EXPECT_EQ(outside, 0);
+}
+
+// Up, the legend's text is laid out in pixels and the window's bar is no taller than its most:
+// a taller view gives a panel as tall in pixels, where a fraction of the height would have
+// spread the notes apart.
+TEST_F(ColourLegendLayoutTest, ATallerViewGivesTheSamePanelInPixels) {
+    const reconstruction::ColourLegend legend = changeLikeLegend();
+    const ScreenBox short785 = legendPanel_px(legend, 490, 785, kLowerLegendBar);
+    const ScreenBox tall1400 = legendPanel_px(legend, 490, 1400, kLowerLegendBar);
+    EXPECT_NEAR(short785.height(), tall1400.height(), 0.5f);
+    EXPECT_LE(tall1400.y1, 1400.0f);
+    // The bar (at most 200 px), the title above it and nine note lines below it.
+    EXPECT_LT(short785.height(), 0.55f * 785.0f);
+    EXPECT_LE(short785.y1, 785.0f);
+    // A picture's default bar keeps its share of the height; its notes stay as close.
+    const ScreenBox picture800 = legendPanel_px(legend, 490, 800);
+    const ScreenBox picture1600 = legendPanel_px(legend, 490, 1600);
+    EXPECT_NEAR(picture1600.height() - picture800.height(), 0.5f * 800.0f, 1.0f);
 }
 
 }  // namespace

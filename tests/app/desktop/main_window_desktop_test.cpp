@@ -226,7 +226,12 @@ TEST_F(DesktopWindowTest, ABadFileOpensAnErrorDialogNamingTheFileAndLine) {
 
 TEST_F(DesktopWindowTest, TheWellsAndWarningsDocksDrawTheWellAndHideIt) {
     app::MainWindow window;
-    openAndAnalyse(window, test::syntheticLog("example", 100.0, 0.05));
+    // A short file name: the well's name, which is left out where it does not fit, and a
+    // long one can be as wide as the view beside the docks (it depends on the fonts).
+    const std::string path = test::scratch("w1.txt").string();
+    io::writeColumnTextFile(path, reconstruction::makeSyntheticWell(
+                                      reconstruction::syntheticProfile("example", 100.0, 0.05)));
+    openAndAnalyse(window, path);
     auto* wells = window.findChild<app::WellsDock*>("wells");
     ASSERT_NE(wells, nullptr);
     QTreeWidgetItem* item = wells->tree()->topLevelItem(0);
@@ -373,29 +378,47 @@ TEST_F(DesktopWindowTest, TheLegendsPanelIsWhereTheViewerDrawsIt) {
     openAndAnalyse(window, test::syntheticLog("example", 100.0, 0.05));
     auto* viewer = dynamic_cast<app::WellViewer*>(window.viewer());
     ASSERT_NE(viewer, nullptr);
-    const std::optional<scenegraph::ScreenBox> panel = viewer->legendPanel();
-    ASSERT_TRUE(panel) << "a well coloured by its radius shows a legend";
     auto* gl = qobject_cast<QGLWidget*>(viewer->getGLWidget());
     ASSERT_NE(gl, nullptr);
-    viewer->render();
-    const QImage image = gl->grabFrameBuffer();
-    const SbVec2s size = viewer->getViewportRegion().getViewportSizePixels();
-    ASSERT_EQ(image.width(), size[0]);
-    ASSERT_EQ(image.height(), size[1]);
     // The panel's fill, 0x262B36 (scenegraph/colour_legend.cpp), drawn unlit.
     const QColor fill(0x26, 0x2B, 0x36);
-    std::size_t inside = 0, outside = 0;
-    for (int y = 0; y < image.height(); ++y)
-        for (int x = 0; x < image.width(); ++x) {
-            const QColor c = image.pixelColor(x, y);
-            if (std::abs(c.red() - fill.red()) > 2 || std::abs(c.green() - fill.green()) > 2 ||
-                std::abs(c.blue() - fill.blue()) > 2)
-                continue;
-            const bool in = x + 0.5f >= panel->x0 - 1.0f && x + 0.5f <= panel->x1 + 1.0f &&
-                            y + 0.5f >= panel->y0 - 1.0f && y + 0.5f <= panel->y1 + 1.0f;
-            (in ? inside : outside) += 1;
-        }
-    EXPECT_GT(double(inside), 0.5 * double(panel->width() * panel->height()))
-        << "the panel is filled where its box says";
-    EXPECT_LT(outside, 50u) << "no fill outside the box";
+    const auto expectPanelWhereItsBoxSays = [&](const char* when) {
+        const std::optional<scenegraph::ScreenBox> panel = viewer->legendPanel();
+        ASSERT_TRUE(panel) << "a well coloured by its radius shows a legend";
+        viewer->render();
+        const QImage image = gl->grabFrameBuffer();
+        const SbVec2s size = viewer->getViewportRegion().getViewportSizePixels();
+        ASSERT_EQ(image.width(), size[0]);
+        ASSERT_EQ(image.height(), size[1]);
+        std::size_t inside = 0, outside = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x) {
+                const QColor c = image.pixelColor(x, y);
+                if (std::abs(c.red() - fill.red()) > 2 || std::abs(c.green() - fill.green()) > 2 ||
+                    std::abs(c.blue() - fill.blue()) > 2)
+                    continue;
+                const bool in = x + 0.5f >= panel->x0 - 1.0f && x + 0.5f <= panel->x1 + 1.0f &&
+                                y + 0.5f >= panel->y0 - 1.0f && y + 0.5f <= panel->y1 + 1.0f;
+                (in ? inside : outside) += 1;
+            }
+        EXPECT_GT(double(inside), 0.5 * double(panel->width() * panel->height()))
+            << when << ": the panel is filled where its box says";
+        EXPECT_LT(outside, 50u) << when << ": no fill outside the box";
+    };
+    expectPanelWhereItsBoxSays("as opened");
+    // Its text is laid out in pixels for the view's height: made again when that changes.
+    const int before = viewer->getViewportRegion().getViewportSizePixels()[1];
+    window.resize(1280, 800);
+    ASSERT_TRUE(test::waitUntil(
+        [&] { return viewer->getViewportRegion().getViewportSizePixels()[1] != before; }, 5000))
+        << "the view is still " << before << " pixels high";
+    // The window system resizes the GL widget's drawable in its own time: until then a
+    // frame reads back black.
+    ASSERT_TRUE(test::waitUntil(
+        [&] {
+            viewer->render();
+            return gl->grabFrameBuffer().pixelColor(1, 1) != QColor(Qt::black);
+        },
+        5000));
+    expectPanelWhereItsBoxSays("after the window was made lower");
 }
