@@ -4,8 +4,10 @@
 #include <filesystem>
 #include <string>
 
+#include <gtest/gtest.h>
 #include <QApplication>
 #include <QColor>
+#include <QCoreApplication>
 #include <QEventLoop>
 #include <QImage>
 #include <QSettings>
@@ -20,9 +22,14 @@
 
 namespace caliper3d::test {
 
-// QSettings of every test here goes to a scratch folder, never the user's.
+// QSettings of every test here goes to a scratch folder, never the user's: one a test, since
+// ctest runs the tests as processes at once and two writing one settings file see each
+// other's values.
 inline QString scratchSettingsFolder() {
-    const std::filesystem::path folder = scratch("settings");
+    const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
+    const std::string name = test ? std::string(test->test_suite_name()) + "." + test->name()
+                                  : "pid" + std::to_string(QCoreApplication::applicationPid());
+    const std::filesystem::path folder = scratch("settings") / name;
     std::filesystem::create_directories(folder);
     return QString::fromStdString(folder.string());
 }
