@@ -27,9 +27,56 @@ std::optional<ViewDirection> parseViewDirection(const std::string& name) {
     return std::nullopt;
 }
 
+namespace {
+
+// The distance from `centre`, looking along `look`, at which every corner of `box` lies
+// inside a perspective view whose half-widths at unit distance are `tanH` across and `tanV`
+// up.
+float fittingDistance(const SbBox3f& box, const SbVec3f& centre, const SbRotation& orientation,
+                      float tanH, float tanV) {
+    SbVec3f lo, hi, look, right, up;
+    box.getBounds(lo, hi);
+    orientation.multVec(SbVec3f(0.0f, 0.0f, -1.0f), look);
+    orientation.multVec(SbVec3f(1.0f, 0.0f, 0.0f), right);
+    orientation.multVec(SbVec3f(0.0f, 1.0f, 0.0f), up);
+    float distance = 0.01f;
+    for (int corner = 0; corner < 8; ++corner) {
+        const SbVec3f p((corner & 1) ? hi[0] : lo[0], (corner & 2) ? hi[1] : lo[1],
+                        (corner & 4) ? hi[2] : lo[2]);
+        const SbVec3f d = p - centre;
+        const float depth = d.dot(look);  // positive: beyond the centre
+        distance = std::max(distance, std::abs(d.dot(up)) / tanV - depth);
+        distance = std::max(distance, std::abs(d.dot(right)) / tanH - depth);
+    }
+    return distance;
+}
+
+}  // namespace
+
 void frameAll(SoCamera* camera, SoNode* root, const SbViewportRegion& viewport, float room) {
     assertMainThread("frameAll");
-    camera->viewAll(root, viewport);
+    camera->viewAll(root, viewport);  // near and far planes, and an orthographic camera
+    if (camera->isOfType(SoPerspectiveCamera::getClassTypeId())) {
+        SoGetBoundingBoxAction bbox(viewport);
+        bbox.apply(root);
+        const SbBox3f& box = bbox.getBoundingBox();
+        // The view's own half-widths: with the viewport's aspect below 1, Coin keeps the
+        // height angle across and widens the view up.
+        const SbViewVolume volume = camera->getViewVolume(viewport.getViewportAspectRatio());
+        const float near = volume.getNearDist();
+        if (!box.isEmpty() && near > 0.0f && volume.getWidth() > 0.0f &&
+            volume.getHeight() > 0.0f) {
+            const SbVec3f centre = box.getCenter();
+            const float distance =
+                fittingDistance(box, centre, camera->orientation.getValue(),
+                                volume.getWidth() / 2.0f / near, volume.getHeight() / 2.0f / near);
+            SbVec3f look;
+            camera->orientation.getValue().multVec(SbVec3f(0.0f, 0.0f, -1.0f), look);
+            camera->position = centre - look * (distance * room);
+            camera->focalDistance = distance * room;
+            return;
+        }
+    }
     SbVec3f look;
     camera->orientation.getValue().multVec(SbVec3f(0.0f, 0.0f, -1.0f), look);
     const float distance = camera->focalDistance.getValue();
@@ -178,22 +225,12 @@ SoSeparator* makeRenderRoot(SoNode* scene, ViewDirection view, int width, int he
     const SbBox3f& box = bbox.getBoundingBox();
     SbVec3f lo(0, 0, 0), hi(0, 0, 0);
     if (!box.isEmpty()) box.getBounds(lo, hi);
-    SbVec3f right, up;
-    camera->orientation.getValue().multVec(SbVec3f(1.0f, 0.0f, 0.0f), right);
-    camera->orientation.getValue().multVec(SbVec3f(0.0f, 1.0f, 0.0f), up);
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
     const float tanV = std::tan(camera->heightAngle.getValue() / 2.0f);
     const float tanH = tanV * aspect;
-    float distance = 0.01f, radius = 0.01f;
-    for (int corner = 0; corner < 8; ++corner) {
-        const SbVec3f p((corner & 1) ? hi[0] : lo[0], (corner & 2) ? hi[1] : lo[1],
-                        (corner & 4) ? hi[2] : lo[2]);
-        const SbVec3f d = p - centre;
-        const float depth = d.dot(look);  // positive: beyond the centre
-        distance = std::max(distance, std::abs(d.dot(up)) / tanV - depth);
-        distance = std::max(distance, std::abs(d.dot(right)) / tanH - depth);
-        radius = std::max(radius, d.length());
-    }
+    float distance =
+        fittingDistance(SbBox3f(lo, hi), centre, camera->orientation.getValue(), tanH, tanV);
+    const float radius = std::max(0.01f, (hi - centre).length());
     distance *= 1.05f;
     camera->position = centre - look * distance;
     camera->nearDistance = std::max(distance - radius * 1.1f, distance * 1e-3f);

@@ -29,9 +29,12 @@ std::optional<ViewDirection> parseViewDirection(const std::string& name);
 // back along the view; call viewAll afterwards to frame the scene).
 void aimCamera(SoCamera* camera, ViewDirection view, const SbVec3f& centre);
 
-// SoCamera::viewAll of `root`, then backed off along the view by `room` (SoCamera::viewAll
-// puts the ends of a long well on the window's edges, a vertical well's wellhead and its
-// name half outside).
+// `root` in view from the camera's direction: a perspective camera looks at the centre of
+// its bounding box from the distance at which every corner of the box is inside the view
+// (SoCamera::viewAll fits the box's bounding sphere into the view's narrower side, which
+// leaves a long well a quarter of a tall view's height), an orthographic one as
+// SoCamera::viewAll puts it; then backed off along the view by `room` (so that the ends of a
+// long well are not on the view's edges, nor a vertical well's name half outside).
 constexpr float kViewAllRoom = 1.12f;
 void frameAll(SoCamera* camera, SoNode* root, const SbViewportRegion& viewport,
               float room = kViewAllRoom);

@@ -1,0 +1,98 @@
+// Framing a scene from the camera's direction (scenegraph::frameAll, keepLeftOf): a long,
+// thin well fills a tall, narrow view up and down, and a legend's margin keeps it left of it.
+#include <algorithm>
+
+#include <gtest/gtest.h>
+
+#include <Inventor/SbViewVolume.h>
+#include <Inventor/SbViewportRegion.h>
+#include <Inventor/nodes/SoCube.h>
+#include <Inventor/nodes/SoPerspectiveCamera.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+#include "coin_fixture.h"
+#include "scenegraph/camera_setup.h"
+#include "scenegraph/node_ref.h"
+
+namespace caliper3d::scenegraph {
+namespace {
+
+// The box's extent in the picture, 0 to 1 across and up, as the camera sees its 8 corners.
+struct Extent {
+    float left = 1.0f, right = 0.0f, bottom = 1.0f, top = 0.0f;
+};
+Extent extentOf(const SoCamera& camera, const SbViewportRegion& viewport, const SbVec3f& lo,
+                const SbVec3f& hi) {
+    const SbViewVolume volume =
+        const_cast<SoCamera&>(camera).getViewVolume(viewport.getViewportAspectRatio());
+    Extent e;
+    for (int corner = 0; corner < 8; ++corner) {
+        const SbVec3f p((corner & 1) ? hi[0] : lo[0], (corner & 2) ? hi[1] : lo[1],
+                        (corner & 4) ? hi[2] : lo[2]);
+        SbVec3f s;
+        volume.projectToScreen(p, s);
+        e.left = std::min(e.left, s[0]);
+        e.right = std::max(e.right, s[0]);
+        e.bottom = std::min(e.bottom, s[1]);
+        e.top = std::max(e.top, s[1]);
+    }
+    return e;
+}
+
+class CameraFramingTest : public CoinTest {};
+
+// A 100 m "well" (a 0.3 m square column) seen from the north in a view half as wide as it is
+// tall: the sphere SoCamera::viewAll fits into the view's width left it 45 % of the height;
+// fitted by its corners it takes the height less the room on either end.
+TEST_F(CameraFramingTest, ALongWellFillsATallNarrowViewUpAndDown) {
+    auto root = makeRef(new SoSeparator);
+    auto* column = new SoCube;
+    column->width = 0.3f;
+    column->height = 100.0f;
+    column->depth = 0.3f;
+    root->addChild(column);
+    auto camera = makeRef(new SoPerspectiveCamera);
+    const SbViewportRegion viewport(400, 800);
+    aimCamera(camera.get(), ViewDirection::North, SbVec3f(0.0f, 0.0f, 0.0f));
+    frameAll(camera.get(), root.get(), viewport);
+    const SbVec3f lo(-0.15f, -50.0f, -0.15f), hi(0.15f, 50.0f, 0.15f);
+    const Extent e = extentOf(*camera.get(), viewport, lo, hi);
+    EXPECT_GT(e.top - e.bottom, 0.85f);  // 1 / kViewAllRoom of the height, near enough
+    EXPECT_LE(e.top, 1.0f);
+    EXPECT_GE(e.bottom, 0.0f);
+    EXPECT_NEAR(0.5f * (e.left + e.right), 0.5f, 0.01f);
+    // The same in a wide view: the height still decides.
+    const SbViewportRegion wide(1200, 800);
+    frameAll(camera.get(), root.get(), wide);
+    const Extent w = extentOf(*camera.get(), wide, lo, hi);
+    EXPECT_GT(w.top - w.bottom, 0.85f);
+    EXPECT_LE(w.top, 1.0f);
+
+    // A legend 240 px wide on the right of the narrow view: the well moves left of it.
+    keepLeftOf(camera.get(), root.get(), viewport, 240.0f);
+    const Extent k = extentOf(*camera.get(), viewport, lo, hi);
+    EXPECT_LE(k.right, 1.0f - 240.0f / 400.0f + 1e-3f);
+    EXPECT_GE(k.bottom, 0.0f);
+}
+
+// A wide, flat scene (wells spread over a field, seen from the top) is fitted across.
+TEST_F(CameraFramingTest, AWideSceneFitsAcross) {
+    auto root = makeRef(new SoSeparator);
+    auto* slab = new SoCube;
+    slab->width = 400.0f;
+    slab->height = 1.0f;
+    slab->depth = 100.0f;
+    root->addChild(slab);
+    auto camera = makeRef(new SoPerspectiveCamera);
+    const SbViewportRegion viewport(800, 800);
+    aimCamera(camera.get(), ViewDirection::Top, SbVec3f(0.0f, 0.0f, 0.0f));
+    frameAll(camera.get(), root.get(), viewport);
+    const Extent e = extentOf(*camera.get(), viewport, SbVec3f(-200.0f, -0.5f, -50.0f),
+                              SbVec3f(200.0f, 0.5f, 50.0f));
+    EXPECT_GT(e.right - e.left, 0.85f);
+    EXPECT_LE(e.right, 1.0f);
+    EXPECT_GE(e.left, 0.0f);
+}
+
+}  // namespace
+}  // namespace caliper3d::scenegraph
