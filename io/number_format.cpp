@@ -41,7 +41,7 @@ void appendFixed(std::string& out, double value, int decimals) {
             ++k;
         } while (k <= decimals || u > 0);
         if (n < 0) *--p = '-';
-        out.append(p, text + sizeof text);
+        out.append(p, static_cast<std::size_t>(text + sizeof text - p));  // not the iterator form
         return;
     }
     char buf[400];
@@ -50,7 +50,7 @@ void appendFixed(std::string& out, double value, int decimals) {
     const char* begin = buf;
     if (*begin == '-' && std::none_of(begin, end, [](char c) { return c >= '1' && c <= '9'; }))
         ++begin;
-    out.append(begin, end);
+    out.append(begin, static_cast<std::size_t>(end - begin));
 }
 
 }  // namespace caliper3d::io
