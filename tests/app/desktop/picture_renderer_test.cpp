@@ -55,8 +55,15 @@ TEST(PictureRendererTest, SavePictureDrawsWhatRenderDrawsForTheSameCamera) {
     options.radialExaggeration = 30.0;
     window.session().keepExaggeration();  // as caliper3d view --exaggerate 30
     window.session().openWell(QString::fromStdString(log.string()), options);
+    // Loaded, and its legend in: the session sets it once the load is done, and render's
+    // picture carries it (a picture saved before it came in draws none, and places its
+    // labels where the legend would be).
     ASSERT_TRUE(test::waitUntil(
-        [&] { return window.model().wellCount() == 1 && !window.session().loading(); }, 120000))
+        [&] {
+            return window.model().wellCount() == 1 && !window.session().loading() &&
+                   window.session().legend();
+        },
+        120000))
         << "the well did not load";
     ASSERT_NE(window.model().well(0).geometry, nullptr);
 
