@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
+#include <utility>
+#include <vector>
 
 #include <Inventor/SbViewVolume.h>
 #include <Inventor/SbViewportRegion.h>
@@ -89,37 +92,59 @@ namespace {
 constexpr float kMaxMargin = 0.6f;  // of a view's width, at most, kept clear on its right
 }  // namespace
 
-void keepLeftOf(SoCamera* camera, SoNode* root, const SbViewportRegion& viewport,
-                float rightMargin_px) {
-    assertMainThread("keepLeftOf");
-    const float width = viewport.getViewportSizePixels()[0];
-    if (!(rightMargin_px > 0.0f) || !(width > 0.0f)) return;
-    // A narrow view keeps what it can: the wells keep at least this much of its width.
-    rightMargin_px = std::min(rightMargin_px, kMaxMargin * width);
+namespace {
+
+// The 8 corners of `root`'s bounding box; none when it is empty.
+std::vector<SbVec3f> boxCorners(SoNode* root, const SbViewportRegion& viewport) {
     SoGetBoundingBoxAction bbox(viewport);
     bbox.apply(root);
     const SbBox3f& box = bbox.getBoundingBox();
-    if (box.isEmpty()) return;
-    const float room = 1.0f - rightMargin_px / width;  // of the width, from the left
-    SbVec3f lo, hi, look, right;
+    if (box.isEmpty()) return {};
+    SbVec3f lo, hi;
     box.getBounds(lo, hi);
+    std::vector<SbVec3f> corners;
+    corners.reserve(8);
+    for (int corner = 0; corner < 8; ++corner)
+        corners.emplace_back((corner & 1) ? hi[0] : lo[0], (corner & 2) ? hi[1] : lo[1],
+                             (corner & 4) ? hi[2] : lo[2]);
+    return corners;
+}
+
+// The points' extent across the picture (0 to 1, left to right) from the camera as it is.
+std::pair<float, float> acrossOf(const SoCamera* camera, const std::vector<SbVec3f>& points,
+                                 const SbViewportRegion& viewport) {
+    const SbViewVolume volume =
+        const_cast<SoCamera*>(camera)->getViewVolume(viewport.getViewportAspectRatio());
+    float left = 1.0f, right = 0.0f;
+    for (const SbVec3f& p : points) {
+        SbVec3f screen;
+        volume.projectToScreen(p, screen);
+        left = std::min(left, screen[0]);
+        right = std::max(right, screen[0]);
+    }
+    return {left, right};
+}
+
+}  // namespace
+
+void keepLeftOf(SoCamera* camera, SoNode* root, const SbViewportRegion& viewport,
+                float rightMargin_px) {
+    assertMainThread("keepLeftOf");
+    keepLeftOf(camera, boxCorners(root, viewport), viewport, rightMargin_px);
+}
+
+void keepLeftOf(SoCamera* camera, const std::vector<SbVec3f>& points,
+                const SbViewportRegion& viewport, float rightMargin_px) {
+    assertMainThread("keepLeftOf");
+    const float width = viewport.getViewportSizePixels()[0];
+    if (!(rightMargin_px > 0.0f) || !(width > 0.0f) || points.empty()) return;
+    // A narrow view keeps what it can: the wells keep at least this much of its width.
+    rightMargin_px = std::min(rightMargin_px, kMaxMargin * width);
+    const float room = 1.0f - rightMargin_px / width;  // of the width, from the left
+    SbVec3f look, right;
     camera->orientation.getValue().multVec(SbVec3f(0.0f, 0.0f, -1.0f), look);
     camera->orientation.getValue().multVec(SbVec3f(1.0f, 0.0f, 0.0f), right);
-    // The box's extent across the picture (0 to 1, left to right) from the camera as it is.
-    const auto across = [&](float& left, float& rightEdge) {
-        const SbViewVolume volume = camera->getViewVolume(viewport.getViewportAspectRatio());
-        left = 1.0f, rightEdge = 0.0f;
-        for (int corner = 0; corner < 8; ++corner) {
-            const SbVec3f p((corner & 1) ? hi[0] : lo[0], (corner & 2) ? hi[1] : lo[1],
-                            (corner & 4) ? hi[2] : lo[2]);
-            SbVec3f screen;
-            volume.projectToScreen(p, screen);
-            left = std::min(left, screen[0]);
-            rightEdge = std::max(rightEdge, screen[0]);
-        }
-    };
-    float left = 0.0f, rightEdge = 0.0f;
-    across(left, rightEdge);
+    auto [left, rightEdge] = acrossOf(camera, points, viewport);
     // Wider than the room: back off (about the focus) until it fits.
     const float span = rightEdge - left;
     if (span > room) {
@@ -128,7 +153,7 @@ void keepLeftOf(SoCamera* camera, SoNode* root, const SbViewportRegion& viewport
         const float factor = span / room;
         camera->position = focus - look * (distance * factor);
         camera->focalDistance = distance * factor;
-        across(left, rightEdge);
+        std::tie(left, rightEdge) = acrossOf(camera, points, viewport);
     }
     // Its centre to the middle of the room: a shift across of that fraction of the width seen
     // at the focal distance.
@@ -142,6 +167,55 @@ void keepLeftOf(SoCamera* camera, SoNode* root, const SbViewportRegion& viewport
     volume.projectToScreen(focus + right * distance, b);
     const float perUnit = (b[0] - a[0]) / distance;  // of the width, per scene unit across
     if (perUnit > 0.0f) camera->position = camera->position.getValue() + right * (shift / perUnit);
+}
+
+void framePoints(SoCamera* camera, const std::vector<SbVec3f>& points,
+                 const SbViewportRegion& viewport, float room) {
+    assertMainThread("framePoints");
+    if (points.empty() || !camera->isOfType(SoPerspectiveCamera::getClassTypeId())) return;
+    const SbViewVolume volume = camera->getViewVolume(viewport.getViewportAspectRatio());
+    const float near = volume.getNearDist();
+    if (!(near > 0.0f) || !(volume.getWidth() > 0.0f) || !(volume.getHeight() > 0.0f)) return;
+    // Half-widths at unit distance, narrowed by the room to spare.
+    const float tanH = volume.getWidth() / 2.0f / near / room;
+    const float tanV = volume.getHeight() / 2.0f / near / room;
+    SbVec3f look, right, up;
+    camera->orientation.getValue().multVec(SbVec3f(0.0f, 0.0f, -1.0f), look);
+    camera->orientation.getValue().multVec(SbVec3f(1.0f, 0.0f, 0.0f), right);
+    camera->orientation.getValue().multVec(SbVec3f(0.0f, 1.0f, 0.0f), up);
+    // The points in the camera's axes about their box's centre; the eye sought as an offset
+    // across (a, b) and a distance back (d) from there: each round takes the distance at which
+    // every point fits, then centres the points' extent in the picture at that distance.
+    SbBox3f box;
+    for (const SbVec3f& p : points) box.extendBy(p);
+    const SbVec3f centre = box.getCenter();
+    std::vector<SbVec3f> local;
+    local.reserve(points.size());
+    for (const SbVec3f& p : points) {
+        const SbVec3f d = p - centre;
+        local.emplace_back(d.dot(right), d.dot(up), d.dot(look));
+    }
+    float a = 0.0f, b = 0.0f, d = 0.0f;
+    for (int round = 0; round < 4; ++round) {
+        d = 1e-3f;
+        for (const SbVec3f& q : local)
+            d = std::max({d, std::abs(q[0] - a) / tanH - q[2], std::abs(q[1] - b) / tanV - q[2]});
+        float x0 = 1e30f, x1 = -1e30f, y0 = 1e30f, y1 = -1e30f;
+        for (const SbVec3f& q : local) {
+            const float depth = d + q[2];
+            x0 = std::min(x0, (q[0] - a) / depth);
+            x1 = std::max(x1, (q[0] - a) / depth);
+            y0 = std::min(y0, (q[1] - b) / depth);
+            y1 = std::max(y1, (q[1] - b) / depth);
+        }
+        a += 0.5f * (x0 + x1) * d;
+        b += 0.5f * (y0 + y1) * d;
+    }
+    d = 1e-3f;
+    for (const SbVec3f& q : local)
+        d = std::max({d, std::abs(q[0] - a) / tanH - q[2], std::abs(q[1] - b) / tanV - q[2]});
+    camera->position = centre + right * a + up * b - look * d;
+    camera->focalDistance = d;
 }
 
 void frameFrom(SoCamera* camera, SoNode* root, const SbViewportRegion& viewport,

@@ -2,6 +2,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 class SbVec3f;
 class SbViewportRegion;
@@ -43,6 +44,15 @@ void frameAll(SoCamera* camera, SoNode* root, const SbViewportRegion& viewport,
 // most 60 % of the view's width).
 void keepLeftOf(SoCamera* camera, SoNode* root, const SbViewportRegion& viewport,
                 float rightMargin_px);
+// The same two for a scene given as points (scene frame; a well's path, say): a
+// perspective camera is moved across and back until every point lies inside the view with
+// `room` to spare, tighter than a box's corners for wells that turn or spread (the corners of
+// the box round an L-shaped well or a field seen from the side lie far outside them). Nothing
+// when `points` is empty; an orthographic camera is left as it is.
+void framePoints(SoCamera* camera, const std::vector<SbVec3f>& points,
+                 const SbViewportRegion& viewport, float room = kViewAllRoom);
+void keepLeftOf(SoCamera* camera, const std::vector<SbVec3f>& points,
+                const SbViewportRegion& viewport, float rightMargin_px);
 // aimCamera at the centre of `root`'s bounding box from `view`, then frameAll; nothing when
 // `root` is empty.
 void frameFrom(SoCamera* camera, SoNode* root, const SbViewportRegion& viewport,

@@ -22,6 +22,7 @@
 
 #include "app/desktop/desk_model.h"
 #include "reconstruction/mesh/lod_levels.h"
+#include "reconstruction/well_geometry.h"
 #include "scenegraph/camera_setup.h"
 
 namespace caliper3d::app {
@@ -131,6 +132,14 @@ void WellNavigator::frameLogs(std::function<std::vector<SoNode*>()> wells) {
         const std::vector<SoNode*> scenes = wells();
         if (scenes.empty()) return;
         SoCamera* camera = m_viewer.getCamera();
+        // The logged paths of the wells shown, where the model has them: tighter than the
+        // scenes' box for wells that turn or spread.
+        const std::vector<SbVec3f> paths = loggedPaths();
+        if (!paths.empty() && camera->isOfType(SoPerspectiveCamera::getClassTypeId())) {
+            scenegraph::framePoints(camera, paths, m_viewer.getViewportRegion());
+            scenegraph::keepLeftOf(camera, paths, m_viewer.getViewportRegion(), m_rightMargin_px);
+            return;
+        }
         auto* logs = new SoSeparator;
         logs->ref();
         for (SoNode* well : scenes) logs->addChild(well);
@@ -142,6 +151,20 @@ void WellNavigator::frameLogs(std::function<std::vector<SoNode*>()> wells) {
         }
         logs->unref();
     });
+}
+
+std::vector<SbVec3f> WellNavigator::loggedPaths() const {
+    std::vector<SbVec3f> points;
+    for (int i = 0; i < m_model.wellCount(); ++i) {
+        const DeskWell& well = m_model.well(i);
+        if (!well.visible || !well.geometry || well.geometry->table().rowCount() == 0) continue;
+        const auto& depth = well.geometry->table().depth_m;
+        // About 500 points a well: the framing is to a pixel or so of a long well's drawn tube.
+        const double spacing = std::max(1.0, (depth.back() - depth.front()) / 500.0);
+        for (const glm::vec3& p : reconstruction::pathLine(*well.geometry, spacing))
+            points.emplace_back(p.x, p.y, p.z);
+    }
+    return points;
 }
 
 void WellNavigator::frameAndRemember(std::function<void()> frame) {

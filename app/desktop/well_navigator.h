@@ -98,6 +98,8 @@ private:
         }
     };
     std::optional<CameraPose> pose() const;
+    // Points along the logged part of every well shown (scene frame): what frameLogs fits.
+    std::vector<SbVec3f> loggedPaths() const;
 
     DeskModel& m_model;
     SoQtExaminerViewer& m_viewer;

@@ -1,13 +1,16 @@
 // Framing a scene from the camera's direction (scenegraph::frameAll, keepLeftOf): a long,
 // thin well fills a tall, narrow view up and down, and a legend's margin keeps it left of it.
 #include <algorithm>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include <Inventor/SbViewVolume.h>
 #include <Inventor/SbViewportRegion.h>
+#include <Inventor/nodes/SoCoordinate3.h>
 #include <Inventor/nodes/SoCube.h>
 #include <Inventor/nodes/SoPerspectiveCamera.h>
+#include <Inventor/nodes/SoPointSet.h>
 #include <Inventor/nodes/SoSeparator.h>
 
 #include "coin_fixture.h"
@@ -92,6 +95,61 @@ TEST_F(CameraFramingTest, AWideSceneFitsAcross) {
     EXPECT_GT(e.right - e.left, 0.85f);
     EXPECT_LE(e.right, 1.0f);
     EXPECT_GE(e.left, 0.0f);
+}
+
+// An L-shaped well (1 km down, then 1 km east) seen from the iso direction: fitted by its
+// path's points it fills the view up or across, with the room to spare on either side; the
+// corners of its box lie far outside it, and a box fit leaves it much smaller.
+TEST_F(CameraFramingTest, AnLShapedWellFittedByItsPathFillsTheView) {
+    std::vector<SbVec3f> path;
+    for (int i = 0; i <= 100; ++i) path.emplace_back(0.0f, -10.0f * float(i), 0.0f);
+    for (int i = 1; i <= 100; ++i) path.emplace_back(10.0f * float(i), -1000.0f, 0.0f);
+    const SbViewportRegion viewport(600, 800);
+    const auto extentOfPath = [&](const SoCamera& camera) {
+        const SbViewVolume volume =
+            const_cast<SoCamera&>(camera).getViewVolume(viewport.getViewportAspectRatio());
+        Extent e;
+        for (const SbVec3f& p : path) {
+            SbVec3f s;
+            volume.projectToScreen(p, s);
+            e.left = std::min(e.left, s[0]);
+            e.right = std::max(e.right, s[0]);
+            e.bottom = std::min(e.bottom, s[1]);
+            e.top = std::max(e.top, s[1]);
+        }
+        return e;
+    };
+    auto camera = makeRef(new SoPerspectiveCamera);
+    aimCamera(camera.get(), ViewDirection::Iso, SbVec3f(500.0f, -500.0f, 0.0f));
+    framePoints(camera.get(), path, viewport);
+    const Extent e = extentOfPath(*camera.get());
+    EXPECT_GE(e.left, 0.0f);
+    EXPECT_LE(e.right, 1.0f);
+    EXPECT_GE(e.bottom, 0.0f);
+    EXPECT_LE(e.top, 1.0f);
+    // One side fills the view less the room (1 / 1.12 = 0.89), and the points are centred.
+    EXPECT_GT(std::max(e.right - e.left, e.top - e.bottom), 0.87f);
+    EXPECT_NEAR(0.5f * (e.left + e.right), 0.5f, 0.01f);
+    EXPECT_NEAR(0.5f * (e.bottom + e.top), 0.5f, 0.01f);
+
+    // The same well's box fit, for comparison: smaller.
+    auto root = makeRef(new SoSeparator);
+    auto* coords = new SoCoordinate3;
+    coords->point.setValues(0, int(path.size()), path.data());
+    root->addChild(coords);
+    root->addChild(new SoPointSet);
+    auto boxed = makeRef(new SoPerspectiveCamera);
+    aimCamera(boxed.get(), ViewDirection::Iso, SbVec3f(500.0f, -500.0f, 0.0f));
+    frameAll(boxed.get(), root.get(), viewport);
+    const Extent b = extentOfPath(*boxed.get());
+    EXPECT_LT(std::max(b.right - b.left, b.top - b.bottom),
+              std::max(e.right - e.left, e.top - e.bottom) - 0.1f);
+
+    // Kept left of a 200 px legend: every point left of it.
+    keepLeftOf(camera.get(), path, viewport, 200.0f);
+    const Extent k = extentOfPath(*camera.get());
+    EXPECT_LE(k.right, 1.0f - 200.0f / 600.0f + 1e-3f);
+    EXPECT_GE(k.left, 0.0f);
 }
 
 }  // namespace
