@@ -144,29 +144,43 @@ void keepLeftOf(SoCamera* camera, const std::vector<SbVec3f>& points,
     SbVec3f look, right;
     camera->orientation.getValue().multVec(SbVec3f(0.0f, 0.0f, -1.0f), look);
     camera->orientation.getValue().multVec(SbVec3f(1.0f, 0.0f, 0.0f), right);
-    auto [left, rightEdge] = acrossOf(camera, points, viewport);
-    // Wider than the room: back off (about the focus) until it fits.
-    const float span = rightEdge - left;
-    if (span > room) {
+    // Back off (about the focus) by `factor`.
+    const auto backOff = [&](float factor) {
         const float distance = camera->focalDistance.getValue();
         const SbVec3f focus = camera->position.getValue() + look * distance;
-        const float factor = span / room;
         camera->position = focus - look * (distance * factor);
         camera->focalDistance = distance * factor;
+    };
+    // Move across by `shift` of the picture's width as seen at the focal distance.
+    const auto moveAcross = [&](float shift) {
+        const SbViewVolume volume = camera->getViewVolume(viewport.getViewportAspectRatio());
+        const float distance = camera->focalDistance.getValue();
+        const SbVec3f focus = camera->position.getValue() + look * distance;
+        SbVec3f a, b;
+        volume.projectToScreen(focus, a);
+        volume.projectToScreen(focus + right * distance, b);
+        const float perUnit = (b[0] - a[0]) / distance;  // of the width, per scene unit across
+        if (perUnit > 0.0f)
+            camera->position = camera->position.getValue() + right * (shift / perUnit);
+    };
+    // Wider than the room: back off until it fits; then its centre to the middle of the room.
+    auto [left, rightEdge] = acrossOf(camera, points, viewport);
+    if (rightEdge - left > room) {
+        backOff((rightEdge - left) / room);
         std::tie(left, rightEdge) = acrossOf(camera, points, viewport);
     }
-    // Its centre to the middle of the room: a shift across of that fraction of the width seen
-    // at the focal distance.
-    const float shift = 0.5f * (left + rightEdge) - 0.5f * room;
-    if (!(shift > 0.0f)) return;
-    const SbViewVolume volume = camera->getViewVolume(viewport.getViewportAspectRatio());
-    const float distance = camera->focalDistance.getValue();
-    const SbVec3f focus = camera->position.getValue() + look * distance;
-    SbVec3f a, b;
-    volume.projectToScreen(focus, a);
-    volume.projectToScreen(focus + right * distance, b);
-    const float perUnit = (b[0] - a[0]) / distance;  // of the width, per scene unit across
-    if (perUnit > 0.0f) camera->position = camera->position.getValue() + right * (shift / perUnit);
+    if (0.5f * (left + rightEdge) > 0.5f * room)
+        moveAcross(0.5f * (left + rightEdge) - 0.5f * room);
+    // A scene deep along the view (a well seen end on) moves across more at its near end than
+    // at the focus: checked, and backed off further until it lies in the room.
+    for (int round = 0; round < 16; ++round) {
+        std::tie(left, rightEdge) = acrossOf(camera, points, viewport);
+        if (left >= 0.0f && rightEdge <= room) return;
+        backOff(1.25f);
+        std::tie(left, rightEdge) = acrossOf(camera, points, viewport);
+        if (0.5f * (left + rightEdge) > 0.5f * room)
+            moveAcross(0.5f * (left + rightEdge) - 0.5f * room);
+    }
 }
 
 void framePoints(SoCamera* camera, const std::vector<SbVec3f>& points,

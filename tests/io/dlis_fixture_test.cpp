@@ -73,6 +73,13 @@ const caliper3d::io::ExtraCurve* extra(const SectionTable& t, const std::string&
     return nullptr;
 }
 
+// The index of the file at `path`, its warnings into `d`.
+caliper3d::io::dlis::DlisIndex indexFile(const std::string& path, caliper3d::io::Diagnostics& d) {
+    std::ifstream in(path, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    return caliper3d::io::dlis::indexDlis(bytes, path, &d);
+}
+
 // The six-arm known answers, row by row.
 void expectSixArm(const SectionTable& t, const dlis::SixArmShape& s) {
     ASSERT_EQ(t.armCount, 6);
@@ -464,9 +471,7 @@ TEST(DlisFixtureTest, RedundantSetAndASecondFrameDoNotChangeTheCaliper) {
     const LoadedLog log = loadCaliperLog(path, ReadOptions{});
     expectSixArm(log.table, shape);
     caliper3d::io::Diagnostics d;
-    std::ifstream in(path, std::ios::binary);
-    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const auto index = caliper3d::io::dlis::indexDlis(bytes, path, &d);
+    const auto index = indexFile(path, d);
     ASSERT_EQ(index.files.size(), 1u);
     EXPECT_EQ(index.files[0].frames.size(), 2u);
 }
@@ -550,9 +555,7 @@ TEST(DlisFixtureTest, UndefinedRepresentationCodesAreWarnedAndTheCaliperStillRea
     f.extraRecords.push_back({true, 3, dlis::encodeSet(odd), false});
     const std::string path = write("dlis_odd_codes.dlis", {f});
     caliper3d::io::Diagnostics d;
-    std::ifstream in(path, std::ios::binary);
-    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const auto index = caliper3d::io::dlis::indexDlis(bytes, path, &d);
+    const auto index = indexFile(path, d);
     ASSERT_EQ(index.files.size(), 1u);
     std::size_t odds = 0;
     for (const auto& ch : index.files[0].channels)

@@ -20,18 +20,16 @@
 namespace caliper3d::scenegraph {
 namespace {
 
-// The box's extent in the picture, 0 to 1 across and up, as the camera sees its 8 corners.
+// The points' extent in the picture, 0 to 1 across and up, as the camera sees them.
 struct Extent {
     float left = 1.0f, right = 0.0f, bottom = 1.0f, top = 0.0f;
 };
-Extent extentOf(const SoCamera& camera, const SbViewportRegion& viewport, const SbVec3f& lo,
-                const SbVec3f& hi) {
+Extent extentOf(const SoCamera& camera, const SbViewportRegion& viewport,
+                const std::vector<SbVec3f>& points) {
     const SbViewVolume volume =
         const_cast<SoCamera&>(camera).getViewVolume(viewport.getViewportAspectRatio());
     Extent e;
-    for (int corner = 0; corner < 8; ++corner) {
-        const SbVec3f p((corner & 1) ? hi[0] : lo[0], (corner & 2) ? hi[1] : lo[1],
-                        (corner & 4) ? hi[2] : lo[2]);
+    for (const SbVec3f& p : points) {
         SbVec3f s;
         volume.projectToScreen(p, s);
         e.left = std::min(e.left, s[0]);
@@ -40,6 +38,16 @@ Extent extentOf(const SoCamera& camera, const SbViewportRegion& viewport, const 
         e.top = std::max(e.top, s[1]);
     }
     return e;
+}
+// The same for the 8 corners of the box [lo, hi].
+Extent extentOf(const SoCamera& camera, const SbViewportRegion& viewport, const SbVec3f& lo,
+                const SbVec3f& hi) {
+    std::vector<SbVec3f> corners;
+    corners.reserve(8);
+    for (int corner = 0; corner < 8; ++corner)
+        corners.emplace_back((corner & 1) ? hi[0] : lo[0], (corner & 2) ? hi[1] : lo[1],
+                             (corner & 4) ? hi[2] : lo[2]);
+    return extentOf(camera, viewport, corners);
 }
 
 class CameraFramingTest : public CoinTest {};
@@ -78,6 +86,29 @@ TEST_F(CameraFramingTest, ALongWellFillsATallNarrowViewUpAndDown) {
     EXPECT_GE(k.bottom, 0.0f);
 }
 
+// Seen end on (looking down a vertical well, as from inside it), the near end moves across
+// far more than the focus does: kept left of a legend, every corner still lies in the room.
+TEST_F(CameraFramingTest, AWellSeenEndOnIsKeptLeftOfALegendWhole) {
+    auto root = makeRef(new SoSeparator);
+    auto* column = new SoCube;
+    column->width = 6.5f;
+    column->height = 300.0f;
+    column->depth = 6.5f;
+    root->addChild(column);
+    auto camera = makeRef(new SoPerspectiveCamera);
+    camera->position.setValue(0.0f, 140.0f, 0.0f);
+    camera->pointAt(SbVec3f(0.0f, 0.0f, 0.0f), SbVec3f(0.0f, 0.0f, -1.0f));
+    const SbViewportRegion viewport(500, 800);
+    frameAll(camera.get(), root.get(), viewport);
+    keepLeftOf(camera.get(), root.get(), viewport, 220.0f);
+    const Extent k = extentOf(*camera.get(), viewport, SbVec3f(-3.25f, -150.0f, -3.25f),
+                              SbVec3f(3.25f, 150.0f, 3.25f));
+    EXPECT_GE(k.left, 0.0f);
+    EXPECT_LE(k.right, 1.0f - 220.0f / 500.0f + 1e-3f);
+    EXPECT_GE(k.bottom, 0.0f);
+    EXPECT_LE(k.top, 1.0f);
+}
+
 // A wide, flat scene (wells spread over a field, seen from the top) is fitted across.
 TEST_F(CameraFramingTest, AWideSceneFitsAcross) {
     auto root = makeRef(new SoSeparator);
@@ -106,18 +137,7 @@ TEST_F(CameraFramingTest, AnLShapedWellFittedByItsPathFillsTheView) {
     for (int i = 1; i <= 100; ++i) path.emplace_back(10.0f * float(i), -1000.0f, 0.0f);
     const SbViewportRegion viewport(600, 800);
     const auto extentOfPath = [&](const SoCamera& camera) {
-        const SbViewVolume volume =
-            const_cast<SoCamera&>(camera).getViewVolume(viewport.getViewportAspectRatio());
-        Extent e;
-        for (const SbVec3f& p : path) {
-            SbVec3f s;
-            volume.projectToScreen(p, s);
-            e.left = std::min(e.left, s[0]);
-            e.right = std::max(e.right, s[0]);
-            e.bottom = std::min(e.bottom, s[1]);
-            e.top = std::max(e.top, s[1]);
-        }
-        return e;
+        return extentOf(camera, viewport, path);
     };
     auto camera = makeRef(new SoPerspectiveCamera);
     aimCamera(camera.get(), ViewDirection::Iso, SbVec3f(500.0f, -500.0f, 0.0f));
