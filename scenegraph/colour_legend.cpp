@@ -156,9 +156,10 @@ constexpr float kMinBar_px = 60.0f;      // the bar is never shortened below thi
 // The panel ends this far inside the picture's top and bottom edges (the picture's height
 // is 2).
 constexpr float kPanelEdge = 0.99f;
-// A note line longer than this is wrapped at a space, so that a long range or note does not
-// widen the panel over the scene (and a narrow view's caption).
-constexpr std::size_t kFooterChars = 30;
+// A note line is wrapped at a space to no more characters than the title has (within these
+// bounds), so that a long range or note does not widen the panel over the scene (and a
+// narrow view's caption and depth labels).
+constexpr std::size_t kFooterMinChars = 20, kFooterMaxChars = 30;
 
 // The legend's frame up the picture for one height: the bar's ends, the panel's, and the
 // size of a pixel in the overlay camera's units.
@@ -167,8 +168,8 @@ struct Frame {
     float noteY(std::size_t i) const { return barBottom - kLine_px * px * float(i + 1); }
 };
 
-// `line` cut at spaces into lines of at most kFooterChars (a longer word stays whole).
-std::vector<std::string> wrapped(const std::string& line) {
+// `line` cut at spaces into lines of at most `most` characters (a longer word stays whole).
+std::vector<std::string> wrapped(const std::string& line, std::size_t most) {
     std::vector<std::string> lines;
     std::string current;
     std::size_t at = 0;
@@ -176,7 +177,7 @@ std::vector<std::string> wrapped(const std::string& line) {
         const std::size_t space = line.find(' ', at);
         const std::size_t end = space == std::string::npos ? line.size() : space;
         const std::string word = line.substr(at, end - at);
-        if (!current.empty() && current.size() + 1 + word.size() > kFooterChars) {
+        if (!current.empty() && current.size() + 1 + word.size() > most) {
             lines.push_back(current);
             current.clear();
         }
@@ -192,7 +193,9 @@ LegendText laidOut(const reconstruction::ColourLegend& legend) {
     LegendText text = legendText(legend);
     std::vector<std::string> footer;
     for (const std::string& line : text.footer)
-        for (std::string& part : wrapped(line)) footer.push_back(std::move(part));
+        for (std::string& part :
+             wrapped(line, std::clamp(text.title.size(), kFooterMinChars, kFooterMaxChars)))
+            footer.push_back(std::move(part));
     text.footer = std::move(footer);
     return text;
 }

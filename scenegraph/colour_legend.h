@@ -28,10 +28,10 @@ LegendText legendText(const reconstruction::ColourLegend& legend);
 // height makes it again). Add it after the scene under the render root, or as a viewer's
 // superimposition; it adds nothing to a bounding box of the scene. Main thread only.
 // Where its colour bar runs, up the picture ([-1, 1]), and how long it may be at most (pixels;
-// 0: no limit, it keeps its bottom); the title above it, the notes below (wrapped at 30
-// characters; the bar is raised, and shortened if need be, until the last note ends inside
-// the picture). A window's tall view whose wells are named at their top puts it in its lower
-// half, no taller than the room it needs.
+// 0: no limit, it keeps its bottom); the title above it, the notes below (wrapped at the
+// title's length, 20 to 30 characters; the bar is raised, and shortened if need be, until the last
+// note ends inside the picture). A window's tall view whose wells are named at their top puts it in
+// its lower half, no taller than the room it needs.
 struct LegendBar {
     float top = 0.55f;
     float bottom = -0.45f;

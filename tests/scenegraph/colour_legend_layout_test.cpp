@@ -1,6 +1,7 @@
 // Where the colour legend is drawn: its panel's box (what labels keep clear of) is where its
 // fill is, and a legend with long notes stays inside a narrow, tall view (the window's).
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -12,6 +13,7 @@
 #include "reconstruction/mesh/wall_colouring.h"
 #include "scenegraph/camera_setup.h"
 #include "scenegraph/colour_legend.h"
+#include "scenegraph/label_style.h"
 #include "scenegraph/node_ref.h"
 #include "scenegraph/offscreen_renderer.h"
 
@@ -105,6 +107,11 @@ TEST_F(ColourLegendLayoutTest, ATallerViewGivesTheSamePanelInPixels) {
     const ScreenBox tall1400 = legendPanel_px(legend, 490, 1400, kLowerLegendBar);
     EXPECT_NEAR(short785.height(), tall1400.height(), 0.5f);
     EXPECT_LE(tall1400.y1, 1400.0f);
+    // Its notes wrapped at the title's length in characters: the panel about the title's
+    // width (13 px text, 10 px from the edge, 10 px margin; characters differ in width by a
+    // few pixels a line), not the width of 30 characters.
+    const float title = std::ceil(textWidth_px("r1.las minus r2.las (mm)", 13.0f) + 20.0f);
+    EXPECT_LE(short785.width(), 1.05f * title);
     // The bar (at most 200 px), the title above it and nine note lines below it.
     EXPECT_LT(short785.height(), 0.55f * 785.0f);
     EXPECT_LE(short785.y1, 785.0f);
