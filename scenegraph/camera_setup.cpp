@@ -30,6 +30,14 @@ std::optional<ViewDirection> parseViewDirection(const std::string& name) {
     return std::nullopt;
 }
 
+SbViewVolume shownViewVolume(const SoCamera& camera, float aspect) {
+    SbViewVolume volume = const_cast<SoCamera&>(camera).getViewVolume(aspect);
+    if (camera.viewportMapping.getValue() == SoCamera::ADJUST_CAMERA && aspect > 0.0f &&
+        aspect < 1.0f)
+        volume.scale(1.0f / aspect);
+    return volume;
+}
+
 namespace {
 
 // The distance from `centre`, looking along `look`, at which every corner of `box` lies
@@ -63,9 +71,8 @@ void frameAll(SoCamera* camera, SoNode* root, const SbViewportRegion& viewport, 
         SoGetBoundingBoxAction bbox(viewport);
         bbox.apply(root);
         const SbBox3f& box = bbox.getBoundingBox();
-        // The view's own half-widths: with the viewport's aspect below 1, Coin keeps the
-        // height angle across and widens the view up.
-        const SbViewVolume volume = camera->getViewVolume(viewport.getViewportAspectRatio());
+        // The view's own half-widths, as Coin draws it.
+        const SbViewVolume volume = shownViewVolume(*camera, viewport.getViewportAspectRatio());
         const float near = volume.getNearDist();
         if (!box.isEmpty() && near > 0.0f && volume.getWidth() > 0.0f &&
             volume.getHeight() > 0.0f) {
@@ -113,8 +120,7 @@ std::vector<SbVec3f> boxCorners(SoNode* root, const SbViewportRegion& viewport) 
 // The points' extent across the picture (0 to 1, left to right) from the camera as it is.
 std::pair<float, float> acrossOf(const SoCamera* camera, const std::vector<SbVec3f>& points,
                                  const SbViewportRegion& viewport) {
-    const SbViewVolume volume =
-        const_cast<SoCamera*>(camera)->getViewVolume(viewport.getViewportAspectRatio());
+    const SbViewVolume volume = shownViewVolume(*camera, viewport.getViewportAspectRatio());
     float left = 1.0f, right = 0.0f;
     for (const SbVec3f& p : points) {
         SbVec3f screen;
@@ -153,7 +159,7 @@ void keepLeftOf(SoCamera* camera, const std::vector<SbVec3f>& points,
     };
     // Move across by `shift` of the picture's width as seen at the focal distance.
     const auto moveAcross = [&](float shift) {
-        const SbViewVolume volume = camera->getViewVolume(viewport.getViewportAspectRatio());
+        const SbViewVolume volume = shownViewVolume(*camera, viewport.getViewportAspectRatio());
         const float distance = camera->focalDistance.getValue();
         const SbVec3f focus = camera->position.getValue() + look * distance;
         SbVec3f a, b;
@@ -187,7 +193,7 @@ void framePoints(SoCamera* camera, const std::vector<SbVec3f>& points,
                  const SbViewportRegion& viewport, float room) {
     assertMainThread("framePoints");
     if (points.empty() || !camera->isOfType(SoPerspectiveCamera::getClassTypeId())) return;
-    const SbViewVolume volume = camera->getViewVolume(viewport.getViewportAspectRatio());
+    const SbViewVolume volume = shownViewVolume(*camera, viewport.getViewportAspectRatio());
     const float near = volume.getNearDist();
     if (!(near > 0.0f) || !(volume.getWidth() > 0.0f) || !(volume.getHeight() > 0.0f)) return;
     // Half-widths at unit distance, narrowed by the room to spare.

@@ -5,6 +5,7 @@
 #include <vector>
 
 class SbVec3f;
+class SbViewVolume;
 class SbViewportRegion;
 class SoCamera;
 class SoNode;
@@ -29,6 +30,11 @@ std::optional<ViewDirection> parseViewDirection(const std::string& name);
 // Turns `camera` to look at `centre` from `view` (position moved one unit
 // back along the view; call viewAll afterwards to frame the scene).
 void aimCamera(SoCamera* camera, ViewDirection view, const SbVec3f& centre);
+
+// The view volume `camera` draws with in a view of `aspect` (width / height), as Coin maps it
+// (SoCamera's ADJUST_CAMERA: a view taller than wide widens the volume by 1 / aspect, keeping
+// the camera's angle across). SoCamera::getViewVolume alone leaves that out.
+SbViewVolume shownViewVolume(const SoCamera& camera, float aspect);
 
 // `root` in view from the camera's direction: a perspective camera looks at the centre of
 // its bounding box from the distance at which every corner of the box is inside the view

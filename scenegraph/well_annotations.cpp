@@ -135,9 +135,7 @@ AnnotationView pictureAnnotationView(const SoCamera& camera, int width, int heig
     view.look = glm::vec3(look[0], look[1], look[2]);
     view.right = glm::vec3(right[0], right[1], right[2]);
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
-    SbViewVolume volume = camera.getViewVolume(aspect);
-    // SoCamera's ADJUST_CAMERA mapping: a tall picture widens the volume to keep its width.
-    if (aspect < 1.0f) volume.scale(1.0f / aspect);
+    const SbViewVolume volume = shownViewVolume(camera, aspect);
     const SbVec3f eye = camera.position.getValue();
     const float nearest = camera.nearDistance.getValue();
     const glm::vec3 eyeAt(eye[0], eye[1], eye[2]), lookAlong = view.look;

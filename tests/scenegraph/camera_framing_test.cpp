@@ -26,8 +26,7 @@ struct Extent {
 };
 Extent extentOf(const SoCamera& camera, const SbViewportRegion& viewport,
                 const std::vector<SbVec3f>& points) {
-    const SbViewVolume volume =
-        const_cast<SoCamera&>(camera).getViewVolume(viewport.getViewportAspectRatio());
+    const SbViewVolume volume = shownViewVolume(camera, viewport.getViewportAspectRatio());
     Extent e;
     for (const SbVec3f& p : points) {
         SbVec3f s;

@@ -15,6 +15,7 @@
 #include <Inventor/nodes/SoText2.h>
 #include <Inventor/nodes/SoTranslation.h>
 
+#include "scenegraph/camera_setup.h"
 #include "scenegraph/label_placement.h"
 #include "scenegraph/label_style.h"
 
@@ -34,10 +35,7 @@ struct DrawnLabel {
 inline std::vector<DrawnLabel> drawnLabels(SoNode* root, const SoCamera& camera, int width,
                                            int height) {
     const float aspect = float(width) / float(height);
-    SbViewVolume volume = const_cast<SoCamera&>(camera).getViewVolume(aspect);
-    // As Coin draws it (SoCamera's ADJUST_CAMERA mapping): a tall view widens the volume to
-    // keep its width.
-    if (aspect < 1.0f) volume.scale(1.0f / aspect);
+    const SbViewVolume volume = scenegraph::shownViewVolume(camera, aspect);  // as Coin draws it
     std::vector<DrawnLabel> labels;
     for (const char* kind : {"well_name", "depth_label"}) {
         SoSearchAction search;

@@ -25,6 +25,7 @@
 #include "desktop_test_support.h"
 #include "io/column_text_writer.h"
 #include "reconstruction/synthetic/synthetic_well.h"
+#include "scenegraph/camera_setup.h"
 
 using namespace caliper3d;
 
@@ -143,7 +144,8 @@ TEST_F(ViewMenuTest, ViewAllAndThePresetsLeaveTheHole) {
         SbVec3f lo, hi, look;
         box.getBoundingBox().getBounds(lo, hi);
         camera->orientation.getValue().multVec(SbVec3f(0.0f, 0.0f, -1.0f), look);
-        const SbViewVolume volume = camera->getViewVolume(viewport.getViewportAspectRatio());
+        const SbViewVolume volume =
+            scenegraph::shownViewVolume(*camera, viewport.getViewportAspectRatio());
         for (int corner = 0; corner < 8; ++corner) {
             const SbVec3f p((corner & 1) ? hi[0] : lo[0], (corner & 2) ? hi[1] : lo[1],
                             (corner & 4) ? hi[2] : lo[2]);
