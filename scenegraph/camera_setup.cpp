@@ -117,16 +117,20 @@ std::vector<SbVec3f> boxCorners(SoNode* root, const SbViewportRegion& viewport) 
     return corners;
 }
 
-// The points' extent across the picture (0 to 1, left to right) from the camera as it is.
+// The points' extent across the picture (0 to 1, left to right) from the camera as it is,
+// each widened by `pad` either side.
 std::pair<float, float> acrossOf(const SoCamera* camera, const std::vector<SbVec3f>& points,
-                                 const SbViewportRegion& viewport) {
+                                 const SbViewportRegion& viewport, float pad = 0.0f) {
     const SbViewVolume volume = shownViewVolume(*camera, viewport.getViewportAspectRatio());
+    SbVec3f across;
+    camera->orientation.getValue().multVec(SbVec3f(pad, 0.0f, 0.0f), across);
     float left = 1.0f, right = 0.0f;
     for (const SbVec3f& p : points) {
-        SbVec3f screen;
-        volume.projectToScreen(p, screen);
-        left = std::min(left, screen[0]);
-        right = std::max(right, screen[0]);
+        SbVec3f a, b;
+        volume.projectToScreen(p - across, a);
+        volume.projectToScreen(p + across, b);
+        left = std::min({left, a[0], b[0]});
+        right = std::max({right, a[0], b[0]});
     }
     return {left, right};
 }
@@ -140,7 +144,7 @@ void keepLeftOf(SoCamera* camera, SoNode* root, const SbViewportRegion& viewport
 }
 
 void keepLeftOf(SoCamera* camera, const std::vector<SbVec3f>& points,
-                const SbViewportRegion& viewport, float rightMargin_px) {
+                const SbViewportRegion& viewport, float rightMargin_px, float pad) {
     assertMainThread("keepLeftOf");
     const float width = viewport.getViewportSizePixels()[0];
     if (!(rightMargin_px > 0.0f) || !(width > 0.0f) || points.empty()) return;
@@ -170,27 +174,27 @@ void keepLeftOf(SoCamera* camera, const std::vector<SbVec3f>& points,
             camera->position = camera->position.getValue() + right * (shift / perUnit);
     };
     // Wider than the room: back off until it fits; then its centre to the middle of the room.
-    auto [left, rightEdge] = acrossOf(camera, points, viewport);
+    auto [left, rightEdge] = acrossOf(camera, points, viewport, pad);
     if (rightEdge - left > room) {
         backOff((rightEdge - left) / room);
-        std::tie(left, rightEdge) = acrossOf(camera, points, viewport);
+        std::tie(left, rightEdge) = acrossOf(camera, points, viewport, pad);
     }
     if (0.5f * (left + rightEdge) > 0.5f * room)
         moveAcross(0.5f * (left + rightEdge) - 0.5f * room);
     // A scene deep along the view (a well seen end on) moves across more at its near end than
     // at the focus: checked, and backed off further until it lies in the room.
     for (int round = 0; round < 16; ++round) {
-        std::tie(left, rightEdge) = acrossOf(camera, points, viewport);
+        std::tie(left, rightEdge) = acrossOf(camera, points, viewport, pad);
         if (left >= 0.0f && rightEdge <= room) return;
         backOff(1.25f);
-        std::tie(left, rightEdge) = acrossOf(camera, points, viewport);
+        std::tie(left, rightEdge) = acrossOf(camera, points, viewport, pad);
         if (0.5f * (left + rightEdge) > 0.5f * room)
             moveAcross(0.5f * (left + rightEdge) - 0.5f * room);
     }
 }
 
 void framePoints(SoCamera* camera, const std::vector<SbVec3f>& points,
-                 const SbViewportRegion& viewport, float room) {
+                 const SbViewportRegion& viewport, float room, float pad) {
     assertMainThread("framePoints");
     if (points.empty() || !camera->isOfType(SoPerspectiveCamera::getClassTypeId())) return;
     const SbViewVolume volume = shownViewVolume(*camera, viewport.getViewportAspectRatio());
@@ -219,21 +223,23 @@ void framePoints(SoCamera* camera, const std::vector<SbVec3f>& points,
     for (int round = 0; round < 4; ++round) {
         d = 1e-3f;
         for (const SbVec3f& q : local)
-            d = std::max({d, std::abs(q[0] - a) / tanH - q[2], std::abs(q[1] - b) / tanV - q[2]});
+            d = std::max({d, (std::abs(q[0] - a) + pad) / tanH - q[2],
+                          (std::abs(q[1] - b) + pad) / tanV - q[2]});
         float x0 = 1e30f, x1 = -1e30f, y0 = 1e30f, y1 = -1e30f;
         for (const SbVec3f& q : local) {
             const float depth = d + q[2];
-            x0 = std::min(x0, (q[0] - a) / depth);
-            x1 = std::max(x1, (q[0] - a) / depth);
-            y0 = std::min(y0, (q[1] - b) / depth);
-            y1 = std::max(y1, (q[1] - b) / depth);
+            x0 = std::min(x0, (q[0] - a - pad) / depth);
+            x1 = std::max(x1, (q[0] - a + pad) / depth);
+            y0 = std::min(y0, (q[1] - b - pad) / depth);
+            y1 = std::max(y1, (q[1] - b + pad) / depth);
         }
         a += 0.5f * (x0 + x1) * d;
         b += 0.5f * (y0 + y1) * d;
     }
     d = 1e-3f;
     for (const SbVec3f& q : local)
-        d = std::max({d, std::abs(q[0] - a) / tanH - q[2], std::abs(q[1] - b) / tanV - q[2]});
+        d = std::max({d, (std::abs(q[0] - a) + pad) / tanH - q[2],
+                      (std::abs(q[1] - b) + pad) / tanV - q[2]});
     camera->position = centre + right * a + up * b - look * d;
     camera->focalDistance = d;
 }

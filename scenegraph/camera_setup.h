@@ -55,10 +55,11 @@ void keepLeftOf(SoCamera* camera, SoNode* root, const SbViewportRegion& viewport
 // `room` to spare, tighter than a box's corners for wells that turn or spread (the corners of
 // the box round an L-shaped well or a field seen from the side lie far outside them). Nothing
 // when `points` is empty; an orthographic camera is left as it is.
+// `pad`: the points stand for spheres of that radius (a well's drawn tube about its path).
 void framePoints(SoCamera* camera, const std::vector<SbVec3f>& points,
-                 const SbViewportRegion& viewport, float room = kViewAllRoom);
+                 const SbViewportRegion& viewport, float room = kViewAllRoom, float pad = 0.0f);
 void keepLeftOf(SoCamera* camera, const std::vector<SbVec3f>& points,
-                const SbViewportRegion& viewport, float rightMargin_px);
+                const SbViewportRegion& viewport, float rightMargin_px, float pad = 0.0f);
 // aimCamera at the centre of `root`'s bounding box from `view`, then frameAll; nothing when
 // `root` is empty.
 void frameFrom(SoCamera* camera, SoNode* root, const SbViewportRegion& viewport,

@@ -136,8 +136,11 @@ void WellNavigator::frameLogs(std::function<std::vector<SoNode*>()> wells) {
         // scenes' box for wells that turn or spread.
         const std::vector<SbVec3f> paths = loggedPaths();
         if (!paths.empty() && camera->isOfType(SoPerspectiveCamera::getClassTypeId())) {
-            scenegraph::framePoints(camera, paths, m_viewer.getViewportRegion());
-            scenegraph::keepLeftOf(camera, paths, m_viewer.getViewportRegion(), m_rightMargin_px);
+            const float pad = drawnRadius_m();
+            scenegraph::framePoints(camera, paths, m_viewer.getViewportRegion(),
+                                    scenegraph::kViewAllRoom, pad);
+            scenegraph::keepLeftOf(camera, paths, m_viewer.getViewportRegion(), m_rightMargin_px,
+                                   pad);
             return;
         }
         auto* logs = new SoSeparator;
@@ -165,6 +168,20 @@ std::vector<SbVec3f> WellNavigator::loggedPaths() const {
             points.emplace_back(p.x, p.y, p.z);
     }
     return points;
+}
+
+float WellNavigator::drawnRadius_m() const {
+    double most = 0.0;
+    for (int i = 0; i < m_model.wellCount(); ++i) {
+        const DeskWell& well = m_model.well(i);
+        if (!well.visible || !well.geometry) continue;
+        const io::SectionTable& table = well.geometry->table();
+        double radius = 0.0;
+        for (const double r : table.radius_mm)
+            if (std::isfinite(r)) radius = std::max(radius, r);
+        most = std::max(most, radius / 1000.0 * well.geometry->options().radialExaggeration);
+    }
+    return static_cast<float>(most);
 }
 
 void WellNavigator::frameAndRemember(std::function<void()> frame) {

@@ -100,6 +100,9 @@ private:
     std::optional<CameraPose> pose() const;
     // Points along the logged part of every well shown (scene frame): what frameLogs fits.
     std::vector<SbVec3f> loggedPaths() const;
+    // The largest radius drawn (exaggerated) among the wells shown, metres: the tube's room
+    // about its path.
+    float drawnRadius_m() const;
 
     DeskModel& m_model;
     SoQtExaminerViewer& m_viewer;

@@ -164,6 +164,25 @@ TEST_F(CameraFramingTest, AnLShapedWellFittedByItsPathFillsTheView) {
     EXPECT_LT(std::max(b.right - b.left, b.top - b.bottom),
               std::max(e.right - e.left, e.top - e.bottom) - 0.1f);
 
+    // A tube 50 m in radius drawn about the path: its sides in view too.
+    auto padded = makeRef(new SoPerspectiveCamera);
+    aimCamera(padded.get(), ViewDirection::Iso, SbVec3f(500.0f, -500.0f, 0.0f));
+    framePoints(padded.get(), path, viewport, kViewAllRoom, 50.0f);
+    SbVec3f across, up;
+    padded->orientation.getValue().multVec(SbVec3f(50.0f, 0.0f, 0.0f), across);
+    padded->orientation.getValue().multVec(SbVec3f(0.0f, 50.0f, 0.0f), up);
+    std::vector<SbVec3f> sides;
+    for (const SbVec3f& p : path)
+        for (const SbVec3f& side : {p + across, p - across, p + up, p - up}) sides.push_back(side);
+    const Extent t = extentOf(*padded.get(), viewport, sides);
+    EXPECT_GE(t.left, 0.0f);
+    EXPECT_LE(t.right, 1.0f);
+    EXPECT_GE(t.bottom, 0.0f);
+    EXPECT_LE(t.top, 1.0f);
+    EXPECT_GT(std::max(t.right - t.left, t.top - t.bottom), 0.87f);
+    keepLeftOf(padded.get(), path, viewport, 200.0f, 50.0f);
+    EXPECT_LE(extentOf(*padded.get(), viewport, sides).right, 1.0f - 200.0f / 600.0f + 1e-3f);
+
     // Kept left of a 200 px legend: every point left of it.
     keepLeftOf(camera.get(), path, viewport, 200.0f);
     const Extent k = extentOfPath(*camera.get());
