@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -40,73 +39,10 @@ SbViewVolume shownViewVolume(const SoCamera& camera, float aspect) {
 
 namespace {
 
-// The distance from `centre`, looking along `look`, at which every corner of `box` lies
-// inside a perspective view whose half-widths at unit distance are `tanH` across and `tanV`
-// up.
-float fittingDistance(const SbBox3f& box, const SbVec3f& centre, const SbRotation& orientation,
-                      float tanH, float tanV) {
-    SbVec3f lo, hi, look, right, up;
-    box.getBounds(lo, hi);
-    orientation.multVec(SbVec3f(0.0f, 0.0f, -1.0f), look);
-    orientation.multVec(SbVec3f(1.0f, 0.0f, 0.0f), right);
-    orientation.multVec(SbVec3f(0.0f, 1.0f, 0.0f), up);
-    float distance = 0.01f;
-    for (int corner = 0; corner < 8; ++corner) {
-        const SbVec3f p((corner & 1) ? hi[0] : lo[0], (corner & 2) ? hi[1] : lo[1],
-                        (corner & 4) ? hi[2] : lo[2]);
-        const SbVec3f d = p - centre;
-        const float depth = d.dot(look);  // positive: beyond the centre
-        distance = std::max(distance, std::abs(d.dot(up)) / tanV - depth);
-        distance = std::max(distance, std::abs(d.dot(right)) / tanH - depth);
-    }
-    return distance;
-}
-
-}  // namespace
-
-void frameAll(SoCamera* camera, SoNode* root, const SbViewportRegion& viewport, float room) {
-    assertMainThread("frameAll");
-    camera->viewAll(root, viewport);  // near and far planes, and an orthographic camera
-    if (camera->isOfType(SoPerspectiveCamera::getClassTypeId())) {
-        SoGetBoundingBoxAction bbox(viewport);
-        bbox.apply(root);
-        const SbBox3f& box = bbox.getBoundingBox();
-        // The view's own half-widths, as Coin draws it.
-        const SbViewVolume volume = shownViewVolume(*camera, viewport.getViewportAspectRatio());
-        const float near = volume.getNearDist();
-        if (!box.isEmpty() && near > 0.0f && volume.getWidth() > 0.0f &&
-            volume.getHeight() > 0.0f) {
-            const SbVec3f centre = box.getCenter();
-            const float distance =
-                fittingDistance(box, centre, camera->orientation.getValue(),
-                                volume.getWidth() / 2.0f / near, volume.getHeight() / 2.0f / near);
-            SbVec3f look;
-            camera->orientation.getValue().multVec(SbVec3f(0.0f, 0.0f, -1.0f), look);
-            camera->position = centre - look * (distance * room);
-            camera->focalDistance = distance * room;
-            return;
-        }
-    }
-    SbVec3f look;
-    camera->orientation.getValue().multVec(SbVec3f(0.0f, 0.0f, -1.0f), look);
-    const float distance = camera->focalDistance.getValue();
-    const SbVec3f focus = camera->position.getValue() + look * distance;
-    camera->position = focus - look * (distance * room);
-    camera->focalDistance = distance * room;
-}
-
-namespace {
 constexpr float kMaxMargin = 0.6f;  // of a view's width, at most, kept clear on its right
-}  // namespace
 
-namespace {
-
-// The 8 corners of `root`'s bounding box; none when it is empty.
-std::vector<SbVec3f> boxCorners(SoNode* root, const SbViewportRegion& viewport) {
-    SoGetBoundingBoxAction bbox(viewport);
-    bbox.apply(root);
-    const SbBox3f& box = bbox.getBoundingBox();
-    if (box.isEmpty()) return {};
+// The 8 corners of `box`.
+std::vector<SbVec3f> cornersOf(const SbBox3f& box) {
     SbVec3f lo, hi;
     box.getBounds(lo, hi);
     std::vector<SbVec3f> corners;
@@ -115,6 +51,33 @@ std::vector<SbVec3f> boxCorners(SoNode* root, const SbViewportRegion& viewport) 
         corners.emplace_back((corner & 1) ? hi[0] : lo[0], (corner & 2) ? hi[1] : lo[1],
                              (corner & 4) ? hi[2] : lo[2]);
     return corners;
+}
+
+// The 8 corners of `root`'s bounding box; none when it is empty.
+std::vector<SbVec3f> boxCorners(SoNode* root, const SbViewportRegion& viewport) {
+    SoGetBoundingBoxAction bbox(viewport);
+    bbox.apply(root);
+    const SbBox3f& box = bbox.getBoundingBox();
+    return box.isEmpty() ? std::vector<SbVec3f>{} : cornersOf(box);
+}
+
+// The distance from `centre`, looking along the camera's view, at which every one of `points`
+// lies inside a perspective view whose half-widths at unit distance are `tanH` across and
+// `tanV` up.
+float fittingDistance(const std::vector<SbVec3f>& points, const SbVec3f& centre,
+                      const SbRotation& orientation, float tanH, float tanV) {
+    SbVec3f look, right, up;
+    orientation.multVec(SbVec3f(0.0f, 0.0f, -1.0f), look);
+    orientation.multVec(SbVec3f(1.0f, 0.0f, 0.0f), right);
+    orientation.multVec(SbVec3f(0.0f, 1.0f, 0.0f), up);
+    float distance = 0.01f;
+    for (const SbVec3f& p : points) {
+        const SbVec3f d = p - centre;
+        const float depth = d.dot(look);  // positive: beyond the centre
+        distance = std::max(distance, std::abs(d.dot(up)) / tanV - depth);
+        distance = std::max(distance, std::abs(d.dot(right)) / tanH - depth);
+    }
+    return distance;
 }
 
 // The points' extent across the picture (0 to 1, left to right) from the camera as it is,
@@ -136,6 +99,37 @@ std::pair<float, float> acrossOf(const SoCamera* camera, const std::vector<SbVec
 }
 
 }  // namespace
+
+void frameAll(SoCamera* camera, SoNode* root, const SbViewportRegion& viewport, float room) {
+    assertMainThread("frameAll");
+    camera->viewAll(root, viewport);  // near and far planes, and an orthographic camera
+    if (camera->isOfType(SoPerspectiveCamera::getClassTypeId())) {
+        SoGetBoundingBoxAction bbox(viewport);
+        bbox.apply(root);
+        const SbBox3f& box = bbox.getBoundingBox();
+        // The view's own half-widths, as Coin draws it.
+        const SbViewVolume volume = shownViewVolume(*camera, viewport.getViewportAspectRatio());
+        const float near = volume.getNearDist();
+        if (!box.isEmpty() && near > 0.0f && volume.getWidth() > 0.0f &&
+            volume.getHeight() > 0.0f) {
+            const SbVec3f centre = box.getCenter();
+            const float distance =
+                fittingDistance(cornersOf(box), centre, camera->orientation.getValue(),
+                                volume.getWidth() / 2.0f / near, volume.getHeight() / 2.0f / near);
+            SbVec3f look;
+            camera->orientation.getValue().multVec(SbVec3f(0.0f, 0.0f, -1.0f), look);
+            camera->position = centre - look * (distance * room);
+            camera->focalDistance = distance * room;
+            return;
+        }
+    }
+    SbVec3f look;
+    camera->orientation.getValue().multVec(SbVec3f(0.0f, 0.0f, -1.0f), look);
+    const float distance = camera->focalDistance.getValue();
+    const SbVec3f focus = camera->position.getValue() + look * distance;
+    camera->position = focus - look * (distance * room);
+    camera->focalDistance = distance * room;
+}
 
 void keepLeftOf(SoCamera* camera, SoNode* root, const SbViewportRegion& viewport,
                 float rightMargin_px) {
@@ -173,23 +167,23 @@ void keepLeftOf(SoCamera* camera, const std::vector<SbVec3f>& points,
         if (perUnit > 0.0f)
             camera->position = camera->position.getValue() + right * (shift / perUnit);
     };
-    // Wider than the room: back off until it fits; then its centre to the middle of the room.
-    auto [left, rightEdge] = acrossOf(camera, points, viewport, pad);
-    if (rightEdge - left > room) {
-        backOff((rightEdge - left) / room);
-        std::tie(left, rightEdge) = acrossOf(camera, points, viewport, pad);
-    }
-    if (0.5f * (left + rightEdge) > 0.5f * room)
-        moveAcross(0.5f * (left + rightEdge) - 0.5f * room);
+    // Its centre, when right of it, to the middle of the room.
+    const auto centreInRoom = [&] {
+        const auto [left, rightEdge] = acrossOf(camera, points, viewport, pad);
+        if (0.5f * (left + rightEdge) > 0.5f * room)
+            moveAcross(0.5f * (left + rightEdge) - 0.5f * room);
+    };
+    // Wider than the room: back off until it fits.
+    const auto [left, rightEdge] = acrossOf(camera, points, viewport, pad);
+    if (rightEdge - left > room) backOff((rightEdge - left) / room);
+    centreInRoom();
     // A scene deep along the view (a well seen end on) moves across more at its near end than
     // at the focus: checked, and backed off further until it lies in the room.
     for (int round = 0; round < 16; ++round) {
-        std::tie(left, rightEdge) = acrossOf(camera, points, viewport, pad);
-        if (left >= 0.0f && rightEdge <= room) return;
+        const auto [l, r] = acrossOf(camera, points, viewport, pad);
+        if (l >= 0.0f && r <= room) return;
         backOff(1.25f);
-        std::tie(left, rightEdge) = acrossOf(camera, points, viewport, pad);
-        if (0.5f * (left + rightEdge) > 0.5f * room)
-            moveAcross(0.5f * (left + rightEdge) - 0.5f * room);
+        centreInRoom();
     }
 }
 
@@ -328,8 +322,8 @@ SoSeparator* makeRenderRoot(SoNode* scene, ViewDirection view, int width, int he
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
     const float tanV = std::tan(camera->heightAngle.getValue() / 2.0f);
     const float tanH = tanV * aspect;
-    float distance =
-        fittingDistance(SbBox3f(lo, hi), centre, camera->orientation.getValue(), tanH, tanV);
+    float distance = fittingDistance(cornersOf(SbBox3f(lo, hi)), centre,
+                                     camera->orientation.getValue(), tanH, tanV);
     const float radius = std::max(0.01f, (hi - centre).length());
     distance *= 1.05f;
     camera->position = centre - look * distance;
