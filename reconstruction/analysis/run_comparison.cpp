@@ -270,7 +270,7 @@ void keepLargest(LargestChange& largest, double change, double md, double azimut
 }
 
 // The sampling step about row k of a depth sequence (half the distance between its neighbours).
-double stepAbout(const std::vector<SectionChange>& s, std::size_t k) {
+double stepAbout(const FillArray<SectionChange>& s, std::size_t k) {
     if (s.size() < 2) return 0.0;
     const std::size_t lo = k == 0 ? 0 : k - 1, hi = std::min(k + 1, s.size() - 1);
     return (s[hi].md1_m - s[lo].md1_m) / static_cast<double>(hi - lo);
@@ -346,12 +346,16 @@ struct ZoneItem {
 };
 
 // The sections of [top, bottom] (run 1's depths): how many, how many compared, their mean deq
-// change and largest dmax change.
+// change and largest dmax change. The sections are in run 1's depth order, so only the zone's
+// own rows are visited (a long well has hundreds of zones).
 void measureZone(const RunComparison& r, ZoneChange& z, double& comparedFraction) {
     std::size_t all = 0, compared = 0;
     double deqSum = 0.0;
-    for (const SectionChange& c : r.sections) {
-        if (c.md1_m < z.top1_m || c.md1_m > z.bottom1_m) continue;
+    const auto first =
+        std::lower_bound(r.sections.begin(), r.sections.end(), z.top1_m,
+                         [](const SectionChange& c, double md) { return c.md1_m < md; });
+    for (auto it = first; it != r.sections.end() && !(it->md1_m > z.bottom1_m); ++it) {
+        const SectionChange& c = *it;
         ++all;
         if (!c.compared()) continue;
         ++compared;
@@ -430,43 +434,56 @@ RunComparison compareRuns(const ComparedRun& run1, const ComparedRun& run2,
     const SectionResults& s1 = run1.analysis->sections;
     const SectionResults& s2 = run2.analysis->sections;
     if (s1.size() == 0 || s2.size() == 0) throw std::runtime_error("a run has no sections");
-    // Where each depth of run 1 lies in run 2 (cheap, in order), then the sections compared in
-    // chunks, one comparer (and its scratch) per chunk.
-    struct Task {
-        std::size_t i, nearest, other;
-        double md2, w;
-    };
-    std::vector<Task> tasks;
+    // Run 1's rows that map into run 2's logged interval: one run of rows, as both runs' depths
+    // and the mapping increase with depth. They are compared in chunks, one comparer (and its
+    // scratch) per chunk, each chunk constructing its own rows of r.sections (FillArray: the
+    // 136 bytes a row are first touched by the workers, side by side, not zeroed first on one
+    // thread).
     const double first2 = s2.md_m(0), last2 = s2.md_m(s2.size() - 1);
     const double tolerance = 1e-6;
-    std::size_t j = 0;  // first row of run 2 at or below md2
-    for (std::size_t i = 0; i < s1.size(); ++i) {
-        const double md2 = r.mapping.toRun2(s1.md_m(i));
-        if (md2 < first2 - tolerance || md2 > last2 + tolerance) continue;
-        while (j + 1 < s2.size() && s2.md_m(j) < md2) ++j;
-        // Rows j - 1 and j enclose md2 (j alone at the top, or on a row).
-        const std::size_t above = j > 0 && s2.md_m(j) > md2 ? j - 1 : j;
-        const double span = s2.md_m(j) - s2.md_m(above);
-        const double w = span > 0.0 ? (md2 - s2.md_m(above)) / span : 0.0;
-        const std::size_t nearest = w > 0.5 ? j : above;
-        tasks.push_back({i, nearest, nearest == j ? above : j, md2, nearest == j ? 1.0 - w : w});
-    }
+    const auto md2Of = [&](std::size_t i) { return r.mapping.toRun2(s1.md_m(i)); };
+    std::size_t begin = 0, end = s1.size();
+    while (begin < end && md2Of(begin) < first2 - tolerance) ++begin;
+    while (end > begin && md2Of(end - 1) > last2 + tolerance) --end;
+    // The first row of run 2 at or below md2 (the last row when none is).
+    const auto rowAtOrBelow = [&s2](double md2) {
+        std::size_t lo = 0, hi = s2.size() - 1;
+        while (lo < hi) {
+            const std::size_t mid = lo + (hi - lo) / 2;
+            if (s2.md_m(mid) < md2)
+                lo = mid + 1;
+            else
+                hi = mid;
+        }
+        return lo;
+    };
     const std::vector<NotCompared> reasons1 = rowReasons(*run1.analysis);
     const std::vector<NotCompared> reasons2 = rowReasons(*run2.analysis);
-    r.sections.resize(tasks.size());
+    const std::size_t count = end - begin;
+    r.sections = FillArray<SectionChange>(count);
     const auto work = [&](std::size_t from, std::size_t to) {
+        if (from >= to) return;
         SectionComparer comparer(run1, run2, options, r.bias1, r.bias2, reasons1, reasons2);
+        std::size_t j = rowAtOrBelow(md2Of(begin + from));
         for (std::size_t k = from; k < to; ++k) {
-            const Task& t = tasks[k];
-            r.sections[k] = comparer.compare(t.i, t.md2, t.nearest, t.other, t.w);
+            const std::size_t i = begin + k;
+            const double md2 = md2Of(i);
+            while (j + 1 < s2.size() && s2.md_m(j) < md2) ++j;
+            // Rows j - 1 and j enclose md2 (j alone at the top, or on a row).
+            const std::size_t above = j > 0 && s2.md_m(j) > md2 ? j - 1 : j;
+            const double span = s2.md_m(j) - s2.md_m(above);
+            const double w = span > 0.0 ? (md2 - s2.md_m(above)) / span : 0.0;
+            const std::size_t nearest = w > 0.5 ? j : above;
+            r.sections.set(k, comparer.compare(i, md2, nearest, nearest == j ? above : j,
+                                               nearest == j ? 1.0 - w : w));
         }
     };
     const std::size_t chunks =
-        std::min<std::size_t>(std::max(1, options.threads), tasks.size() / 1024 + 1);
+        std::min<std::size_t>(std::max(1, options.threads), count / 1024 + 1);
     std::vector<std::thread> workers;
     for (std::size_t c = 1; c < chunks; ++c)
-        workers.emplace_back(work, tasks.size() * c / chunks, tasks.size() * (c + 1) / chunks);
-    work(0, tasks.size() / chunks);
+        workers.emplace_back(work, count * c / chunks, count * (c + 1) / chunks);
+    work(0, count / chunks);
     for (std::thread& w : workers) w.join();
     if (r.sections.empty())
         throw std::runtime_error(

@@ -8,6 +8,7 @@
 
 #include "reconstruction/analysis/depth_match.h"
 #include "reconstruction/analysis/well_analysis.h"
+#include "reconstruction/parallel/fill_array.h"
 
 namespace caliper3d::reconstruction {
 
@@ -138,7 +139,7 @@ struct LargestChange {
 struct RunComparison {
     DepthMapping mapping;
     double repeatability95_mm = 0.0;
-    std::vector<SectionChange> sections;  // every depth of run 1 that run 2 also logged
+    FillArray<SectionChange> sections;  // every depth of run 1 that run 2 also logged
     double overlapTop1_m = io::kNaN, overlapBottom1_m = io::kNaN;
     std::size_t compared = 0;         // sections compared
     std::size_t oriented = 0;         // of which both runs oriented (azimuths compared)
