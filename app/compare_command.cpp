@@ -92,8 +92,9 @@ AnalysedRun analyseRun(const WellSource& well, const LoadOptions& load,
 }
 
 reconstruction::DepthMapping depthMapping(VerbParser& verb, const AnalysedRun& a,
-                                          const AnalysedRun& b) {
+                                          const AnalysedRun& b, int threads) {
     reconstruction::RunMatchRequest request;
+    request.threads = threads;
     if (verb.isSet("shift")) request.shift_m = number(verb, "shift", false);
     request.curve = verb.value("match-curve");
     request.maxShift_m = number(verb, "max-shift", true);
@@ -122,7 +123,7 @@ void compareWells(VerbParser& verb, const std::vector<WellSource>& wells, InputS
     const AnalysedRun run2 = second.get();
 
     reconstruction::RunComparisonOptions options;
-    options.mapping = depthMapping(verb, run1, run2);
+    options.mapping = depthMapping(verb, run1, run2, analysis.threads);
     options.removeBias = !verb.isSet("keep-bias");
     options.threads = analysis.threads;
     options.outlineGate = verb.isSet("all-outlines") ? 0.0 : reconstruction::kCompareOutlineGate;

@@ -4,10 +4,13 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
 #include <boost/math/tools/minima.hpp>
+
+#include "reconstruction/parallel/ordered_blocks.h"
 
 namespace caliper3d::reconstruction {
 
@@ -169,16 +172,24 @@ DepthMatch matchDepths(const DepthCurve& c1, const DepthCurve& c2, const DepthMa
     const auto cells2 = cells + static_cast<std::size_t>(lastLag - firstLag) + 1;
     const std::vector<double> b = cellMeans(c2, origin2, h, cells2, 2.0 * step2 + h, centre2);
 
-    std::vector<double> r;
-    std::vector<double> n;
-    for (long lag = firstLag; lag <= lastLag; ++lag) {
-        PearsonSums sums;
-        const auto offset = static_cast<std::size_t>(lag - firstLag);
-        for (std::size_t k = 0; k < cells; ++k)
-            if (std::isfinite(a[k]) && std::isfinite(b[k + offset])) sums.add(a[k], b[k + offset]);
-        r.push_back(sums.correlation());
-        n.push_back(sums.n);
-    }
+    // Each lag's correlation on its own (blocks of lags on the workers): the same sums in the
+    // same order whatever the threads.
+    const auto lags = static_cast<std::size_t>(lastLag - firstLag + 1);
+    std::vector<double> r(lags), n(lags);
+    constexpr std::size_t kLagsABlock = 16;
+    forEachBlockInOrder((lags + kLagsABlock - 1) / kLagsABlock, o.threads,
+                        [&](std::size_t block, std::size_t) {
+                            for (std::size_t offset = block * kLagsABlock;
+                                 offset < std::min(lags, (block + 1) * kLagsABlock); ++offset) {
+                                PearsonSums sums;
+                                for (std::size_t k = 0; k < cells; ++k)
+                                    if (std::isfinite(a[k]) && std::isfinite(b[k + offset]))
+                                        sums.add(a[k], b[k + offset]);
+                                r[offset] = sums.correlation();
+                                n[offset] = sums.n;
+                            }
+                        },
+                        [](std::size_t) {});
     // A lag compared over a sliver of the overlap correlates by chance: only lags that compare
     // at least half as many cells as the best covered one compete.
     const double most = *std::max_element(n.begin(), n.end());
@@ -226,17 +237,29 @@ DepthMapping fitDepthMapping(const DepthCurve& c1, const DepthCurve& c2,
     mapping.reference_m = top;
     if (!o.allowStretch || !(bottom - top >= o.minStretchInterval_m)) return mapping;
 
+    // The two tie windows, side by side when there are threads to spare (each then correlates
+    // on half of them).
     const double third = (bottom - top) / 3.0;
-    for (const double windowTop : {top, bottom - third}) {
-        DepthMatchOptions tie = o.match;
-        tie.centre_m = mapping.shift_m;
-        tie.top_m = windowTop;
-        tie.bottom_m = windowTop + third;
-        try {
-            mapping.ties.push_back({windowTop + third / 2.0, matchDepths(c1, c2, tie)});
-        } catch (const std::runtime_error&) {
-            return mapping;  // a window without a match: no stretch
-        }
+    const double windowTops[2] = {top, bottom - third};
+    std::optional<DepthMatch> ties[2];
+    forEachBlockInOrder(
+        2, o.match.threads > 1 ? 2 : 1,
+        [&](std::size_t k, std::size_t) {
+            DepthMatchOptions tie = o.match;
+            tie.centre_m = mapping.shift_m;
+            tie.top_m = windowTops[k];
+            tie.bottom_m = windowTops[k] + third;
+            tie.threads = std::max(1, o.match.threads / 2);
+            try {
+                ties[k] = matchDepths(c1, c2, tie);
+            } catch (const std::runtime_error&) {
+                // a window without a match: no stretch
+            }
+        },
+        [](std::size_t) {});
+    for (std::size_t k = 0; k < 2; ++k) {
+        if (!ties[k]) return mapping;
+        mapping.ties.push_back({windowTops[k] + third / 2.0, *ties[k]});
     }
     const DepthTie& upper = mapping.ties.front();
     const DepthTie& lower = mapping.ties.back();

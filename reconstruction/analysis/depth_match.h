@@ -23,6 +23,9 @@ struct DepthMatchOptions {
     // Only curve 1 between these depths takes part (a tie window); the whole curve by default.
     double top_m = -1.0e300;
     double bottom_m = 1.0e300;
+    // Workers for the correlation at each lag (and, in fitDepthMapping, the two tie windows side
+    // by side); the result does not depend on it.
+    int threads = 1;
 };
 
 // The shift of curve 2 against curve 1 that best aligns them: the feature at depth d of curve 1

@@ -80,6 +80,7 @@ DepthMapping matchRuns(const ComparedRun& run1, const ComparedRun& run2,
     DepthMappingOptions options;
     options.match.maxShift_m = request.maxShift_m;
     options.allowStretch = request.allowStretch;
+    options.match.threads = request.threads;
     mapping = fitDepthMapping(matchCurveOf(t1, *run1.analysis, curve),
                               matchCurveOf(t2, *run2.analysis, curve), options);
     mapping.curve = curve == kEquivalentDiameterCurve ? "equivalent diameter" : curve;
@@ -115,7 +116,9 @@ RunChange measureRunChange(const ComparedRun& drawn, const ComparedRun& other,
                            std::string drawnName, std::string otherName,
                            const RunMatchRequest& match, int threads) {
     RunComparisonOptions options;
-    options.mapping = matchRuns(drawn, other, match);
+    RunMatchRequest request = match;
+    request.threads = std::max(1, threads);
+    options.mapping = matchRuns(drawn, other, request);
     options.repeatability95_mm = repeatabilityLimit_mm(drawn, other);
     options.threads = std::max(1, threads);
     // The wall's movement at each direction, per section of the drawn run, 36 bins of 10

@@ -18,6 +18,7 @@ struct RunMatchRequest {
     double maxShift_m = 2.0;
     std::optional<double> shift_m;  // taken as given: no matching, no stretch
     bool allowStretch = true;
+    int threads = 1;  // DepthMatchOptions::threads
 };
 
 // Where each depth of run 1 lies in run 2, as `caliper3d compare` finds it (chooseMatchCurve,

@@ -113,3 +113,27 @@ TEST(DepthMatchTest, CountersThatAgreeGiveNoStretch) {
     EXPECT_NEAR(mapping.shift_m, 0.5, 0.01);
     for (const DepthTie& t : mapping.ties) EXPECT_NEAR(t.match.shift_m, 0.5, 0.01);
 }
+
+TEST(DepthMatchTest, ThreadsGiveTheSameMatchBitForBit) {
+    // The lags are correlated in blocks on the workers, and the tie windows side by side: each
+    // sum is the same sum in the same order, so the mapping is the one-thread mapping exactly.
+    const auto drift = [](double d2) { return (0.2 + 0.001 * d2) / 1.001; };
+    const DepthCurve run1 = gammaRun(0.0, 1000.0, 0.1);
+    const DepthCurve run2 = gammaRun(0.0, 1002.0, 0.1, drift);
+    DepthMappingOptions options;
+    const DepthMapping one = fitDepthMapping(run1, run2, options);
+    ASSERT_EQ(one.ties.size(), 2u);
+    for (const int threads : {2, 3, 8}) {
+        options.match.threads = threads;
+        const DepthMapping many = fitDepthMapping(run1, run2, options);
+        EXPECT_EQ(many.shift_m, one.shift_m) << threads;
+        EXPECT_EQ(many.stretch, one.stretch) << threads;
+        EXPECT_EQ(many.match.correlation, one.match.correlation) << threads;
+        ASSERT_EQ(many.ties.size(), one.ties.size()) << threads;
+        for (std::size_t k = 0; k < one.ties.size(); ++k) {
+            EXPECT_EQ(many.ties[k].md1_m, one.ties[k].md1_m) << threads;
+            EXPECT_EQ(many.ties[k].match.shift_m, one.ties[k].match.shift_m) << threads;
+            EXPECT_EQ(many.ties[k].match.correlation, one.ties[k].match.correlation) << threads;
+        }
+    }
+}
