@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 
 namespace caliper3d::io {
 
@@ -25,7 +26,7 @@ bool scaledInteger(double value, int decimals, long long& n) {
 
 }  // namespace
 
-void appendFixed(std::string& out, double value, int decimals) {
+char* writeFixed(char* out, double value, int decimals) {
     long long n = 0;
     if (scaledInteger(value, decimals, n)) {
         // Digits from the last, the point put in after `decimals` of them, then the sign.
@@ -41,16 +42,23 @@ void appendFixed(std::string& out, double value, int decimals) {
             ++k;
         } while (k <= decimals || u > 0);
         if (n < 0) *--p = '-';
-        out.append(p, static_cast<std::size_t>(text + sizeof text - p));  // not the iterator form
-        return;
+        const auto length = static_cast<std::size_t>(text + sizeof text - p);
+        std::memcpy(out, p, length);
+        return out + length;
     }
-    char buf[400];
-    const char* end =
-        std::to_chars(buf, buf + sizeof buf, value, std::chars_format::fixed, decimals).ptr;
-    const char* begin = buf;
-    if (*begin == '-' && std::none_of(begin, end, [](char c) { return c >= '1' && c <= '9'; }))
-        ++begin;
-    out.append(begin, static_cast<std::size_t>(end - begin));
+    decimals = std::clamp(decimals, 0, kFixedMaxDecimals);
+    char* end =
+        std::to_chars(out, out + kFixedMaxChars, value, std::chars_format::fixed, decimals).ptr;
+    if (*out == '-' && std::none_of(out, end, [](char c) { return c >= '1' && c <= '9'; })) {
+        std::memmove(out, out + 1, static_cast<std::size_t>(end - out - 1));
+        --end;
+    }
+    return end;
+}
+
+void appendFixed(std::string& out, double value, int decimals) {
+    char text[kFixedMaxChars];
+    out.append(text, static_cast<std::size_t>(writeFixed(text, value, decimals) - text));
 }
 
 }  // namespace caliper3d::io

@@ -13,4 +13,14 @@ namespace caliper3d::io {
 // otherwise.
 void appendFixed(std::string& out, double value, int decimals);
 
+// Decimals are taken from 0 to kFixedMaxDecimals (more are written as that many). The most
+// characters writeFixed writes: the largest double's 309 digits, a sign, the point and the
+// decimals, rounded up.
+inline constexpr int kFixedMaxDecimals = 17;
+inline constexpr int kFixedMaxChars = 330;
+
+// appendFixed's text written at `out` (room for kFixedMaxChars), for a writer that builds a
+// whole line in a buffer of its own; returns the end of what it wrote.
+char* writeFixed(char* out, double value, int decimals);
+
 }  // namespace caliper3d::io

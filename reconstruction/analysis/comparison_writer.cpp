@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <memory>
 #include <string_view>
 #include <thread>
 #include <vector>
@@ -65,32 +66,56 @@ struct RowNotes {
     std::string notCompared[7], unoriented, skipped;
 };
 
-void appendRow(std::string& line, const SectionChange& c, const RowNotes& notes) {
-    io::appendFixed(line, c.md1_m, 4);
-    field(line, c.md2_m, 4);
-    const auto triple = [&line](double a, double b) {
-        field(line, a, 2);
-        field(line, b, 2);
-        field(line, b - a, 2);
+// A row's fields written into a buffer of the row's own (one append a row, not one a field).
+class RowText {
+public:
+    void number(double v, int decimals) {
+        *m_end++ = ',';
+        if (std::isfinite(v)) m_end = io::writeFixed(m_end, v, decimals);
+    }
+    void first(double v, int decimals) { m_end = io::writeFixed(m_end, v, decimals); }
+    void text(std::string_view t) {
+        *m_end++ = ',';
+        m_end = std::copy(t.begin(), t.end(), m_end);
+    }
+    void appendTo(std::string& out) {
+        *m_end++ = '\n';
+        out.append(m_buffer, static_cast<std::size_t>(m_end - m_buffer));
+        m_end = m_buffer;
+    }
+
+private:
+    // 24 numbers, the class names, the significance and the longest note.
+    char m_buffer[24 * (io::kFixedMaxChars + 1) + 512];
+    char* m_end = m_buffer;
+};
+
+void appendRow(std::string& line, RowText& row, const SectionChange& c, const RowNotes& notes) {
+    row.first(c.md1_m, 4);
+    row.number(c.md2_m, 4);
+    const auto triple = [&row](double a, double b) {
+        row.number(a, 2);
+        row.number(b, 2);
+        row.number(b - a, 2);
     };
     triple(c.deq1_mm, c.deq2_mm);
     triple(c.dmin1_mm, c.dmin2_mm);
     triple(c.dmax1_mm, c.dmax2_mm);
-    field(line, className(c.class1));
-    field(line, className(c.class2));
-    field(line, c.majorAzimuth1_deg, 2);
-    field(line, c.majorAzimuth2_deg, 2);
-    field(line, axialDifference(c.majorAzimuth1_deg, c.majorAzimuth2_deg), 2);
-    field(line, c.area1_mm2, 1);
-    field(line, c.area2_mm2, 1);
-    field(line, c.area2_mm2 - c.area1_mm2, 1);
-    field(line, 100.0 * (c.area2_mm2 - c.area1_mm2) / c.area1_mm2, 2);
-    field(line, 100.0 * (c.deq2_mm - c.deq1_mm) / c.deq1_mm, 2);
-    field(line, c.maxGrowth_mm, 2);
-    field(line, c.maxGrowthAzimuth_deg, 1);
-    field(line, c.compared() ? (c.significant ? "yes" : "no") : "");
-    field(line, notes.of(c));
-    line += '\n';
+    row.text(className(c.class1));
+    row.text(className(c.class2));
+    row.number(c.majorAzimuth1_deg, 2);
+    row.number(c.majorAzimuth2_deg, 2);
+    row.number(axialDifference(c.majorAzimuth1_deg, c.majorAzimuth2_deg), 2);
+    row.number(c.area1_mm2, 1);
+    row.number(c.area2_mm2, 1);
+    row.number(c.area2_mm2 - c.area1_mm2, 1);
+    row.number(100.0 * (c.area2_mm2 - c.area1_mm2) / c.area1_mm2, 2);
+    row.number(100.0 * (c.deq2_mm - c.deq1_mm) / c.deq1_mm, 2);
+    row.number(c.maxGrowth_mm, 2);
+    row.number(c.maxGrowthAzimuth_deg, 1);
+    row.text(c.compared() ? (c.significant ? "yes" : "no") : "");
+    row.text(notes.of(c));
+    row.appendTo(line);
 }
 
 // The rows in blocks, `threads` blocks formatted at once and written in order.
@@ -109,7 +134,8 @@ void writeRows(std::ostream& out, const RunComparison& r, int threads) {
             text[k].reserve(kBlockRows * 192);
             const std::size_t from = (first + k) * kBlockRows,
                               to = std::min(rows, from + kBlockRows);
-            for (std::size_t i = from; i < to; ++i) appendRow(text[k], r.sections[i], notes);
+            auto row = std::make_unique<RowText>();
+            for (std::size_t i = from; i < to; ++i) appendRow(text[k], *row, r.sections[i], notes);
         };
         std::vector<std::thread> workers;
         for (std::size_t k = 1; k < count; ++k) workers.emplace_back(format, k);

@@ -2,9 +2,11 @@
 // exactly as to_chars writes it, ties and large values included.
 #include "io/number_format.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <iterator>
 #include <random>
 #include <string>
 
@@ -68,5 +70,24 @@ TEST(NumberFormatTest, AgreesWithToCharsOnRandomValues) {
             const double half = (k + 0.5) / std::pow(10.0, d);
             for (const double v : {half, std::nextafter(half, 1e300), std::nextafter(half, -1e300)})
                 ASSERT_EQ(fixed(v, d), byToChars(v, d)) << v << " with " << d << " decimals";
+        }
+}
+
+TEST(NumberFormatTest, TheBufferFormFitsTheLargestValueAndEndsWhereItsTextEnds) {
+    // writeFixed writes into a caller's buffer of kFixedMaxChars: the longest text, the most
+    // negative double with the most decimals, must fit, and the end it returns must be the
+    // text's own.
+    using caliper3d::io::kFixedMaxChars;
+    using caliper3d::io::kFixedMaxDecimals;
+    using caliper3d::io::writeFixed;
+    for (const double v : {-1.7976931348623157e308, 1e300, -123.456, -0.0001, 0.0, 5e-324})
+        for (const int d : {0, 2, 6, kFixedMaxDecimals}) {
+            char buffer[kFixedMaxChars + 16];
+            std::fill(std::begin(buffer), std::end(buffer), '#');
+            const char* end = writeFixed(buffer, v, d);
+            ASSERT_LE(end - buffer, kFixedMaxChars) << v << " with " << d << " decimals";
+            EXPECT_EQ(std::string(static_cast<const char*>(buffer), end), byToChars(v, d))
+                << v << " with " << d;
+            EXPECT_EQ(buffer[kFixedMaxChars], '#');  // nothing written beyond the room
         }
 }
