@@ -310,9 +310,11 @@ scenegraph::SegmentFeeder::Callbacks WellSession::feederCallbacks(Well& w,
         analyse(w);
         // Signalled from the event loop, not from inside the feeder's tick, so a slot may
         // open other wells (destroying this feeder) safely.
+        ++m_endsQueued;
         QMetaObject::invokeMethod(
             this,
             [this, segments] {
+                --m_endsQueued;
                 emit wellLoaded(static_cast<int>(segments));
                 wellDone();
             },
@@ -323,9 +325,11 @@ scenegraph::SegmentFeeder::Callbacks WellSession::feederCallbacks(Well& w,
         emit status(w.name + ": failed: " + error);
         w.done = true;
         edit(w, [&error](DeskWell& record) { record.error = error; });
+        ++m_endsQueued;
         QMetaObject::invokeMethod(
             this,
             [this, name = w.name, error] {
+                --m_endsQueued;
                 emit wellFailed(name, error);
                 wellDone();
             },
@@ -447,10 +451,13 @@ void WellSession::wellDone() {
     if (loading()) return;
     applyStyleAfterLoad();
     emit allWellsLoaded();
+    // An analysis that ended while this end was queued found the session still loading.
+    if (allAnalysed()) giveBackFreedMemory();
 }
 
 bool WellSession::loading() const {
-    return std::any_of(m_wells.begin(), m_wells.end(), [](const auto& w) { return !w->done; });
+    return m_endsQueued > 0 ||
+           std::any_of(m_wells.begin(), m_wells.end(), [](const auto& w) { return !w->done; });
 }
 
 double WellSession::loadFraction(const Well& well) const {

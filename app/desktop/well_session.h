@@ -111,6 +111,8 @@ public:
     // starts the next. loadsRunning: the loads started and not ended.
     static int loadsAtOnce();
     int loadsRunning() const;
+    // True until every well's load has ended and what follows the last one is done: the
+    // colours and exaggeration the whole set decides (applyStyleAfterLoad), allWellsLoaded.
     bool loading() const;
     LoadProgress progress() const;
     // Writes each loading well's fraction done into its record (DeskWell::loadFraction), where
@@ -219,6 +221,9 @@ private:
     bool m_framed = false;              // firstSegmentsShown sent for this opening
     bool m_exaggerationKept = false;
     unsigned m_annotationGeneration = 0;
+    // Loads that have ended and whose end the event loop has still to take (wellDone):
+    // loading() stays true until it has.
+    int m_endsQueued = 0;
     QString m_loadedText;    // the last load's status line, its exaggeration a %1
     QTimer m_progressTimer;  // publishProgress while wells load
     // What the legend shows (a copy: the colouring's per-row values stay with the geometry).

@@ -3,6 +3,7 @@
 #include "app/desktop/well_session.h"
 
 #include <algorithm>
+#include <chrono>
 #include <fstream>
 
 #include <gtest/gtest.h>
@@ -69,6 +70,28 @@ TEST_F(WellSessionTest, OpensAWellIntoTheModelAndTheScene) {
     // The model's current well is the one loaded, at its first row.
     EXPECT_EQ(model.currentWell(), 0);
     EXPECT_DOUBLE_EQ(model.currentDepth_m(), well.geometry->table().depth_m.front());
+}
+
+TEST_F(WellSessionTest, LoadingEndsOnlyOnceTheWholeSetIsStyled) {
+    // The last load's end is taken from the event loop (wellDone: the colours and exaggeration
+    // the set decides, then allWellsLoaded). Until then the session is still loading: a caller
+    // that waits for loading() to end, and then draws, must find the set's own style.
+    const auto log = test::syntheticLog("example", 60.0, 0.1);
+    app::DeskModel model;
+    app::WellSession session(model, nullptr);
+    QSignalSpy loaded(&session, &app::WellSession::allWellsLoaded);
+    session.openWell(path(log), eightAndAHalfInch());
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(2);
+    // One pass of the event loop at a time, to see every state the session goes through.
+    while (session.loading() && std::chrono::steady_clock::now() < deadline) {
+        EXPECT_EQ(loaded.count(), 0) << "allWellsLoaded while still loading";
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 1);
+    }
+    ASSERT_FALSE(session.loading()) << "the well did not load";
+    EXPECT_EQ(loaded.count(), 1) << "loading ended before the set was styled";
+    ASSERT_NE(model.well(0).geometry, nullptr);
+    EXPECT_DOUBLE_EQ(model.well(0).geometry->options().radialExaggeration,
+                     session.look().radialExaggeration);
 }
 
 TEST_F(WellSessionTest, RestylesAndHidesAWellThroughTheModel) {
