@@ -222,8 +222,8 @@ struct LabelToPlace {
     glm::vec3* labelAt = nullptr;
     glm::vec3 anchor{0.0f};
     glm::vec2 anchorPixel{0.0f};
-    std::vector<ScreenBox> boxes;
-    std::vector<glm::vec2> starts;
+    std::vector<ScreenBox> boxes{};
+    std::vector<glm::vec2> starts{};
 };
 
 // The box of `text` (as drawn: after a space) whose capitals' middle starts at `start`.

@@ -23,13 +23,13 @@ namespace caliper3d::reconstruction {
 // other wells of a scene).
 struct WellSource {
     std::string path;
-    std::string surveyPath;  // empty: the path comes from the log's own DEVI/HAZI
-    std::optional<Wellhead> wellhead;
-    std::string picksPath;  // image-log picks shown beside the caliper (io::readPicks); "" none
+    std::string surveyPath{};  // empty: the path comes from the log's own DEVI/HAZI
+    std::optional<Wellhead> wellhead{};
+    std::string picksPath{};  // image-log picks shown beside the caliper (io::readPicks); "" none
     // This log's casing program (--casing-each), replacing its header's and any program given
     // for all wells; nullopt: those. Runs of one well logged weeks apart each see the casing
     // set when they were logged.
-    std::optional<std::vector<io::CasingString>> casing;
+    std::optional<std::vector<io::CasingString>> casing{};
 };
 inline bool operator==(const WellSource& a, const WellSource& b) {
     return a.path == b.path && a.surveyPath == b.surveyPath && a.wellhead == b.wellhead &&

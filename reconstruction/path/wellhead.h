@@ -18,7 +18,7 @@ struct Wellhead {
     // On a scene origin (sceneOrigin): the field frame the other wells' header
     // coordinates are projected into ("EPSG:32631"; kHeaderGrid; "" when the
     // first well's header gives no location). Empty on a --wellhead.
-    std::string frame;
+    std::string frame{};
     // On a scene origin placed in a named frame: the grid azimuth of true north at the origin
     // (degrees; minus the meridian convergence). Offsets are turned by it, so the scene's
     // north is true north at the first wellhead, as the paths' azimuths are.

@@ -98,9 +98,15 @@ TEST(WellOptionTableTest, NamesAndColumnsAreUniqueAndEveryRowIsDescribed) {
         if (!option.column.empty()) columns.push_back(option.column);
         EXPECT_NE(std::string(option.help), "") << option.name;
         EXPECT_NE(std::string(option.valueName), "") << option.name;
-        if (!option.field.empty()) EXPECT_FALSE(option.blank.empty()) << option.name;
-        if (option.value == app::OptionValue::Choice) EXPECT_FALSE(option.choices.empty());
-        if (option.value == app::OptionValue::Count) EXPECT_LT(option.minCount, option.maxCount);
+        if (!option.field.empty()) {
+            EXPECT_FALSE(option.blank.empty()) << option.name;
+        }
+        if (option.value == app::OptionValue::Choice) {
+            EXPECT_FALSE(option.choices.empty());
+        }
+        if (option.value == app::OptionValue::Count) {
+            EXPECT_LT(option.minCount, option.maxCount);
+        }
         EXPECT_EQ(app::findWellOption(option.name), &option);
     }
     for (auto* list : {&names, &columns}) {

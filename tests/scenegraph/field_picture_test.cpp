@@ -351,7 +351,9 @@ TEST_F(FieldPictureTest, AFieldBuiltFromItsCoarsestLevelDrawsEveryPictureTheSame
         ASSERT_EQ(a.image.rgba.size(), b.image.rgba.size());
         EXPECT_TRUE(a.image.rgba == b.image.rgba);
         // Down the hole the camera needed finer levels, and both built them.
-        if (request.pose) EXPECT_GT(b.refinedSegments, 0u);
+        if (request.pose) {
+            EXPECT_GT(b.refinedSegments, 0u);
+        }
         // Not two empty pictures: the walls fill a good part of each.
         std::size_t drawn = 0;
         for (std::size_t i = 0; i + 3 < b.image.rgba.size(); i += 4)

@@ -175,8 +175,9 @@ TEST_F(LevelOfDetailTest, PartsNearTheEyeDrawEverySectionAndFartherPartsTheReduc
             }
         }
         EXPECT_GE(nearParts, 1u) << depth;      // the part the eye is in
-        if (depth < 1.1f || depth > 1.8f)       // at either end of the segment: the far end
+        if (depth < 1.1f || depth > 1.8f) {     // at either end of the segment: the far end
             EXPECT_LE(nearParts, 2u) << depth;  //   shows the reduced copy
+        }
         EXPECT_EQ(scenegraph::trianglesDrawn(root.get(), 1280, 800), expected) << depth;
     }
     // A part switches where its reduced copy's shape error projects to the pixel tolerance.

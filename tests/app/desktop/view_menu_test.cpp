@@ -166,7 +166,8 @@ TEST_F(ViewMenuTest, ViewAllAndThePresetsLeaveTheHole) {
     EXPECT_FALSE(inside->isChecked()) << "the menu says the camera is out";
     EXPECT_TRUE(framesTheScene()) << "the whole well in view";
 
-    for (const QString& preset : {"Iso", "Looking north", "Looking east", "From top (map)"}) {
+    for (const QString& preset :
+         QStringList{"Iso", "Looking north", "Looking east", "From top (map)"}) {
         inside->trigger();
         ASSERT_TRUE(window.navigator().inside()) << preset.toStdString();
         QAction* from = action(view, preset);

@@ -218,8 +218,9 @@ TEST(CasingAnalysisTest, RealFmiCasingFromItsHeaderLeavesNoUndergaugeInside) {
     // undergauge there, and none is measured against the 251 mm bit of the BS curve.
     EXPECT_EQ(count(w, BoreholeClass::Undergauge, 0.0, 73.2), 0u);
     for (const SectionResult& r : w.sections)
-        if (r.md_m <= 73.2)
+        if (r.md_m <= 73.2) {
             EXPECT_TRUE(r.cls == BoreholeClass::NoData || r.cls == BoreholeClass::Cased) << r.md_m;
+        }
     ASSERT_FALSE(w.armsNotOpen.empty());
     EXPECT_NEAR(w.armsNotOpen[0].top_m, 54.7116, 1e-4);
     EXPECT_GT(w.armsNotOpen[0].bottom_m, 73.2);  // the arms open below the shoe, by 73.8 m

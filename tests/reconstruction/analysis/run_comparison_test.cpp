@@ -341,8 +341,9 @@ TEST(RunComparisonTest, TheOutlineGateSkipsOnlySectionsWhoseOutlinesAreUnchanged
             EXPECT_TRUE(std::isnan(g.maxGrowth_mm));
             EXPECT_TRUE(std::isnan(g.maxGrowthAzimuth_deg));
             EXPECT_LE(std::abs(a.maxGrowth_mm), gated.outlineGate_mm) << g.md1_m;
-            if (!inside(g.md1_m, 39.5, 45.5, -0.1) && !inside(g.md1_m, 99.5, 102.5, -0.1))
+            if (!inside(g.md1_m, 39.5, 45.5, -0.1) && !inside(g.md1_m, 99.5, 102.5, -0.1)) {
                 EXPECT_NEAR(a.maxGrowth_mm, 0.0, 0.05) << g.md1_m;
+            }
         }
     }
     EXPECT_EQ(gated.growth.change, all.growth.change);

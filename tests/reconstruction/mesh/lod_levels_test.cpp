@@ -52,8 +52,9 @@ TEST(LodLevelsTest, EveryRowLeftOutIsInterpolatedWithinTheLevelsTolerance) {
         for (std::size_t i = 1; i < rows.size(); ++i) {
             const std::size_t a = rows[i - 1], b = rows[i];
             ASSERT_LT(a, b);
-            if (level.maxSpacing_m > 0.0 && b > a + 1)
+            if (level.maxSpacing_m > 0.0 && b > a + 1) {
                 EXPECT_LE(depth[b] - depth[a], level.maxSpacing_m + 1e-9);
+            }
             const std::vector<double> ka = knots(g, a), kb = knots(g, b);
             for (std::size_t r = a + 1; r < b; ++r) {
                 const double f = (depth[r] - depth[a]) / (depth[b] - depth[a]);
