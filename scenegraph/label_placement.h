@@ -54,4 +54,57 @@ struct LabelLayoutRequest {
 // boxes taken come within gap_px of each other.
 std::vector<int> placeLabels(const LabelLayoutRequest& request);
 
+// A straight line on the picture, in pixels: a label's leader to the point it names.
+struct ScreenSegment {
+    glm::vec2 a{0.0f};
+    glm::vec2 b{0.0f};
+};
+
+// Whether `line` comes within `gap_px` of `box` (0: whether it meets it, an edge included).
+bool crosses(const ScreenSegment& line, const ScreenBox& box, float gap_px = 0.0f);
+// Whether two lines share a point.
+bool crosses(const ScreenSegment& s, const ScreenSegment& t);
+
+// A label placed apart from its anchor when every place beside it is taken: its box, and the
+// leader drawn from near the anchor to the box's nearest point.
+struct Callout {
+    ScreenBox box;
+    ScreenSegment leader;
+};
+
+// The places apart from `anchor` a label `size` pixels across and high may take, nearest
+// first: at distances from `from_px` to `to_px` (every 8 px) along the ray from the anchor
+// towards `outward` and the rays turned from it by 20, 40, 60, 90, 120, 150 and 180 degrees
+// either way, in that order at each distance. The ray ends on the box's edge that faces the
+// anchor (its left edge for a ray pointing right, its top for one pointing down, a corner
+// between them); the leader runs along the ray from `leaderFrom_px` out to that end. With a
+// zero `outward` the rays turn from the right.
+std::vector<Callout> calloutCandidates(glm::vec2 anchor, glm::vec2 outward, glm::vec2 size,
+                                       float from_px, float to_px, float leaderFrom_px);
+
+// The picture's labels placed one at a time, most important first (what placeLabels does
+// for one request, here in stages: a caller can offer a label further places once the labels
+// that come before it have taken theirs). A box is free when it lies inside the frame and
+// keeps `gap_px` clear of every obstacle, every box taken and every leader drawn; a callout
+// when its box is free and its leader keeps `gap_px` clear of every box taken (obstacles
+// included) and meets no leader drawn.
+class LabelLayout {
+public:
+    LabelLayout(const ScreenBox& frame, std::vector<ScreenBox> obstacles, float gap_px);
+    // Takes the first free box of `boxes` and returns its index; -1 when none is free.
+    int place(const std::vector<ScreenBox>& boxes);
+    // Takes the first free callout of `callouts` (box and leader) and returns its index; -1
+    // when none is free.
+    int place(const std::vector<Callout>& callouts);
+
+private:
+    bool free(const ScreenBox& box) const;
+    bool free(const ScreenSegment& leader) const;
+
+    ScreenBox m_frame;
+    std::vector<ScreenBox> m_taken;  // the obstacles, then every box taken
+    std::vector<ScreenSegment> m_leaders;
+    float m_gap_px;
+};
+
 }  // namespace caliper3d::scenegraph

@@ -19,6 +19,8 @@ constexpr float kNameSize_px = 16.0f;
 constexpr float kLabelColour[3] = {0.92f, 0.92f, 0.86f};
 constexpr float kNameColour[3] = {1.0f, 0.82f, 0.35f};
 constexpr float kTickColour[3] = {0.78f, 0.80f, 0.84f};
+// The leader from a well to its name placed apart: the name's colour, dimmed.
+constexpr float kLeaderColour[3] = {0.72f, 0.59f, 0.25f};
 
 // A bold sans-serif label font. Coin draws SoFont's default font from a thin built-in
 // bitmap; a named font goes through FreeType and fontconfig, which Coin loads at run time

@@ -244,16 +244,18 @@ void addCandidate(LabelToPlace& label, const ScreenBox& box, const std::string& 
 void placeWellLabels(std::vector<WellLabels>& wells, const std::vector<AnnotationView>& views,
                      const std::vector<ScreenBox>& obstacles) {
     if (wells.empty() || views.size() != wells.size() || !views.front().toPixels) return;
-    LabelLayoutRequest request;
     constexpr float kUnbounded = 1.0e9f;
+    constexpr float kGap_px = 2.0f;
     const AnnotationView& first = views.front();
-    request.frame = first.width_px > 0 && first.height_px > 0
-                        ? ScreenBox{0.0f, 0.0f, static_cast<float>(first.width_px),
-                                    static_cast<float>(first.height_px)}
-                        : ScreenBox{-kUnbounded, -kUnbounded, kUnbounded, kUnbounded};
-    request.obstacles = obstacles;
-    std::vector<LabelToPlace> labels;
+    const bool bounded = first.width_px > 0 && first.height_px > 0;
+    const ScreenBox frame = bounded ? ScreenBox{0.0f, 0.0f, static_cast<float>(first.width_px),
+                                                static_cast<float>(first.height_px)}
+                                    : ScreenBox{-kUnbounded, -kUnbounded, kUnbounded, kUnbounded};
+    std::vector<ScreenBox> blocked = obstacles;
     // Names first: a well's name says which well the rest belongs to.
+    std::vector<LabelToPlace> names;
+    std::vector<WellName*> nameOf;
+    std::vector<float> clearanceOf;  // of a name that may move: from its top, pixels
     for (std::size_t w = 0; w < wells.size(); ++w) {
         if (!wells[w].name) continue;
         WellName& name = *wells[w].name;
@@ -261,6 +263,7 @@ void placeWellLabels(std::vector<WellLabels>& wells, const std::vector<Annotatio
         LabelToPlace label{&view, &name.text, &name.labelAt, name.position};
         const std::optional<glm::vec2> head = view.toPixels(name.position);
         const std::optional<glm::vec2> start = view.toPixels(name.labelAt);
+        float clearance = 0.0f;
         if (head && start && !view.pixelSize) {
             // Not to be moved: where it first went, or nowhere.
             label.anchorPixel = *head;
@@ -270,22 +273,95 @@ void placeWellLabels(std::vector<WellLabels>& wells, const std::vector<Annotatio
             label.anchorPixel = *head;
             const float pixel = view.pixelSize(name.position);
             const float radius_px = pixel > 0.0f ? name.drawnRadius_m / pixel : 0.0f;
-            const float clearance = std::max(kNameClearance_px, radius_px + 4.0f);
+            clearance = std::max(kNameClearance_px, radius_px + 4.0f);
             const ScreenBox box = boxFrom(glm::vec2(0.0f), name.text, kNameSize_px);
             const glm::vec2 size(box.width(), box.height());
             for (const LabelSide side : kLabelSides)
                 addCandidate(label, boxBeside(*head, size, side, clearance), name.text,
                              kNameSize_px);
         }
-        labels.push_back(std::move(label));
+        names.push_back(std::move(label));
+        nameOf.push_back(&name);
+        clearanceOf.push_back(clearance);
     }
     // The wellheads' markers stay visible.
     for (std::size_t w = 0; w < wells.size(); ++w)
         if (wells[w].name && wells[w].name->wellhead)
             if (const auto head = views[w].toPixels(wells[w].name->position))
-                request.obstacles.push_back(
-                    {head->x - 4.5f, head->y - 4.5f, head->x + 4.5f, head->y + 4.5f});
+                blocked.push_back({head->x - 4.5f, head->y - 4.5f, head->x + 4.5f, head->y + 4.5f});
+    // The wells' labels in one layout, so that no two wells' labels meet either.
+    const LabelLayout empty(frame, std::move(blocked), kGap_px);
+    // A name with no room beside its well is placed apart, out from the middle of the wells'
+    // tops (so the leaders of a crowded field fan out rather than cross), with a leader.
+    glm::vec2 middle(0.0f);
+    int movable = 0;
+    for (std::size_t i = 0; i < names.size(); ++i)
+        if (clearanceOf[i] > 0.0f) middle += names[i].anchorPixel, ++movable;
+    if (movable > 0) middle /= static_cast<float>(movable);
+    const float reach = bounded ? 0.25f * std::hypot(frame.width(), frame.height()) : 0.0f;
+    std::vector<std::vector<Callout>> apart(names.size());
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        if (clearanceOf[i] <= 0.0f || reach <= 0.0f) continue;
+        const ScreenBox at0 = boxFrom(glm::vec2(0.0f), *names[i].text, kNameSize_px);
+        apart[i] = calloutCandidates(names[i].anchorPixel, names[i].anchorPixel - middle,
+                                     glm::vec2(at0.width(), at0.height()), clearanceOf[i] + 12.0f,
+                                     reach, std::max(clearanceOf[i], 10.0f));
+    }
+    // Every name beside its well where there is room, then the rest apart. A name enclosed by
+    // its neighbours' names (a pad of wells seen from above) has no way out for its leader, so
+    // the names left out go first in the next round, apart from the start; the round that
+    // places the most names is kept (the first of equals: deterministic).
+    struct NameRound {
+        LabelLayout layout;
+        std::vector<int> beside;   // the box taken, -1: none
+        std::vector<int> callout;  // the callout taken, -1: none
+        std::size_t placed = 0;
+    };
+    const auto round = [&](const std::vector<char>& apartFirst) {
+        NameRound r{empty, std::vector<int>(names.size(), -1), std::vector<int>(names.size(), -1)};
+        for (std::size_t i = 0; i < names.size(); ++i)
+            if (apartFirst[i]) r.callout[i] = r.layout.place(apart[i]);
+        for (std::size_t i = 0; i < names.size(); ++i)
+            if (!apartFirst[i]) r.beside[i] = r.layout.place(names[i].boxes);
+        for (std::size_t i = 0; i < names.size(); ++i)
+            if (!apartFirst[i] && r.beside[i] < 0) r.callout[i] = r.layout.place(apart[i]);
+        for (std::size_t i = 0; i < names.size(); ++i)
+            r.placed += r.beside[i] >= 0 || r.callout[i] >= 0 ? 1 : 0;
+        return r;
+    };
+    std::vector<char> apartFirst(names.size(), 0);
+    NameRound best = round(apartFirst);
+    for (int again = 0; again < 3 && best.placed < names.size(); ++again) {
+        bool grew = false;
+        for (std::size_t i = 0; i < names.size(); ++i)
+            if (best.beside[i] < 0 && best.callout[i] < 0 && !apart[i].empty() && !apartFirst[i])
+                apartFirst[i] = 1, grew = true;
+        if (!grew) break;
+        NameRound next = round(apartFirst);
+        if (next.placed > best.placed) best = std::move(next);
+    }
+    LabelLayout& layout = best.layout;
+    std::vector<int>& nameChosen = best.beside;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        if (best.callout[i] < 0) continue;
+        const LabelToPlace& label = names[i];
+        WellName& name = *nameOf[i];
+        const Callout& callout = apart[i][static_cast<std::size_t>(best.callout[i])];
+        const ScreenBox at0 = boxFrom(glm::vec2(0.0f), name.text, kNameSize_px);
+        const AnnotationView& view = *label.view;
+        // Across the view, at the anchor's distance from the eye (as a moved label is).
+        const glm::vec3 up = glm::cross(view.right, view.look);
+        const float pixel = view.pixelSize(label.anchor);
+        const auto toScene = [&](glm::vec2 at) {
+            const glm::vec2 shift = at - label.anchorPixel;
+            return label.anchor + (view.right * shift.x - up * shift.y) * pixel;
+        };
+        name.labelAt = toScene(glm::vec2(callout.box.x0 - at0.x0, callout.box.y0 - at0.y0));
+        name.leader = std::pair(toScene(callout.leader.a), toScene(callout.leader.b));
+        nameChosen[i] = -2;  // placed apart: its place is set
+    }
     // Then the depth labels, down each well: at the mark's end, else just above or below it.
+    std::vector<LabelToPlace> depths;
     for (std::size_t w = 0; w < wells.size(); ++w)
         for (DepthTick& tick : wells[w].ticks) {
             LabelToPlace label{&views[w], &tick.label, &tick.labelAt, tick.end};
@@ -300,26 +376,27 @@ void placeWellLabels(std::vector<WellLabels>& wells, const std::vector<Annotatio
                                      kLabelSize_px);
                 }
             }
-            labels.push_back(std::move(label));
+            depths.push_back(std::move(label));
         }
-    // The wells' labels in one request, so that no two wells' labels meet either.
-    for (const LabelToPlace& label : labels) request.candidates.push_back(label.boxes);
-    const std::vector<int> chosen = placeLabels(request);
-    for (std::size_t i = 0; i < labels.size(); ++i) {
-        LabelToPlace& label = labels[i];
-        if (chosen[i] < 0) {
+    std::vector<int> depthChosen;
+    for (const LabelToPlace& label : depths) depthChosen.push_back(layout.place(label.boxes));
+    const auto settle = [](LabelToPlace& label, int chosen) {
+        if (chosen == -2) return;  // placed apart, already settled
+        if (chosen < 0) {
             label.text->clear();
-            continue;
+            return;
         }
-        const auto k = static_cast<std::size_t>(chosen[i]);
+        const auto k = static_cast<std::size_t>(chosen);
         const AnnotationView& view = *label.view;
-        if (!view.pixelSize) continue;  // where it first went
+        if (!view.pixelSize) return;  // where it first went
         // Moved across the view, at the anchor's distance from the eye.
         const glm::vec2 shift = label.starts[k] - label.anchorPixel;
         const glm::vec3 up = glm::cross(view.right, view.look);
         *label.labelAt =
             label.anchor + (view.right * shift.x - up * shift.y) * view.pixelSize(label.anchor);
-    }
+    };
+    for (std::size_t i = 0; i < names.size(); ++i) settle(names[i], nameChosen[i]);
+    for (std::size_t i = 0; i < depths.size(); ++i) settle(depths[i], depthChosen[i]);
 }
 
 PlacedAnnotations placeAnnotations(const std::vector<AnnotatedWell>& wells, const SoCamera& camera,
@@ -408,6 +485,24 @@ SoSeparator* makeWellAnnotations(const reconstruction::WellGeometry& geometry,
             marker->markerIndex = SoMarkerSet::CIRCLE_FILLED_9_9;
             labels->addChild(at);
             labels->addChild(marker);
+        }
+        if (!name.text.empty() && name.leader) {
+            // A dimmer line than the name, from its well to the name placed apart.
+            auto* leader = new SoSeparator;
+            leader->setName("name_leader");
+            auto* colour = new SoBaseColor;
+            colour->rgb.setValue(kLeaderColour);
+            auto* ends = new SoCoordinate3;
+            ends->point.set1Value(0, name.leader->first.x, name.leader->first.y,
+                                  name.leader->first.z);
+            ends->point.set1Value(1, name.leader->second.x, name.leader->second.y,
+                                  name.leader->second.z);
+            auto* line = new SoLineSet;
+            line->numVertices.setValue(2);
+            leader->addChild(colour);
+            leader->addChild(ends);
+            leader->addChild(line);
+            labels->addChild(leader);
         }
         if (!name.text.empty()) {
             labels->addChild(makeLabelFont(kNameSize_px));

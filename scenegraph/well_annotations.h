@@ -3,6 +3,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -74,6 +75,9 @@ struct WellName {
     glm::vec3 labelAt{0.0f};
     bool wellhead = false;
     float drawnRadius_m = 0.0f;  // of the tube there: a name placed keeps clear of it
+    // A name placed apart from its well (no room beside it) is joined to it by a leader, drawn
+    // from near `position` to the name's box: its two ends in the scene frame.
+    std::optional<std::pair<glm::vec3, glm::vec3>> leader;
 };
 
 // What a well's annotations say and where: its name (with tick marks only: not down the
@@ -87,11 +91,14 @@ struct WellLabels {
 // top of the path on the tick marks' side. Nothing is left out or moved.
 WellLabels wellLabels(const reconstruction::WellGeometry& geometry, const AnnotationView& view);
 
-// The labels of a picture's wells placed together (label_placement.h, placeLabels): every
+// The labels of a picture's wells placed together (label_placement.h, LabelLayout): every
 // well's name first, in the order given, then each well's depth labels down the well; a name
 // may take a place all round the top of its well, a depth label its mark's end or just above or
 // below it; a label with no free room is left out (its tick stays). A name placed goes beside the
-// top of its well (its wellhead in a map), clear of the tube drawn there. `views[i]` is how well i
+// top of its well (its wellhead in a map), clear of the tube drawn there; a name with no room
+// there, once every name has had its turn, is placed apart with a leader to its well
+// (calloutCandidates: out from the middle of the wells' tops first, up to a quarter of the
+// picture's diagonal away), before any depth label. `views[i]` is how well i
 // is seen (toPixels, and pixelSize to move a label; without toPixels nothing is placed);
 // `obstacles` are what the picture draws over the scene (the overlay, a legend).
 void placeWellLabels(std::vector<WellLabels>& wells, const std::vector<AnnotationView>& views,

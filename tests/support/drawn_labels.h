@@ -11,6 +11,7 @@
 #include <Inventor/SbViewVolume.h>
 #include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/nodes/SoCamera.h>
+#include <Inventor/nodes/SoCoordinate3.h>
 #include <Inventor/nodes/SoSeparator.h>
 #include <Inventor/nodes/SoText2.h>
 #include <Inventor/nodes/SoTranslation.h>
@@ -65,6 +66,38 @@ inline std::vector<DrawnLabel> drawnLabels(SoNode* root, const SoCamera& camera,
         }
     }
     return labels;
+}
+
+// The leaders drawn from wells to their names placed apart (separators named "name_leader",
+// their SoCoordinate3 holding the two ends), in pixels as drawnLabels places the labels.
+inline std::vector<scenegraph::ScreenSegment> drawnLeaders(SoNode* root, const SoCamera& camera,
+                                                           int width, int height) {
+    const SbViewVolume volume = scenegraph::shownViewVolume(camera, float(width) / float(height));
+    SoSearchAction search;
+    search.setName("name_leader");
+    search.setInterest(SoSearchAction::ALL);
+    search.setSearchingAll(TRUE);
+    search.apply(root);
+    std::vector<scenegraph::ScreenSegment> leaders;
+    const SoPathList& paths = search.getPaths();
+    for (int i = 0; i < paths.getLength(); ++i) {
+        auto* group = static_cast<SoSeparator*>(paths[i]->getTail());
+        SoCoordinate3* ends = nullptr;
+        for (int c = 0; c < group->getNumChildren() && !ends; ++c)
+            ends = dynamic_cast<SoCoordinate3*>(group->getChild(c));
+        if (!ends || ends->point.getNum() != 2) {
+            ADD_FAILURE() << "leader " << i << " is not a line of two points";
+            continue;
+        }
+        glm::vec2 pixel[2];
+        for (int e = 0; e < 2; ++e) {
+            SbVec3f screen;
+            volume.projectToScreen(ends->point[e], screen);
+            pixel[e] = glm::vec2(screen[0] * float(width), (1.0f - screen[1]) * float(height));
+        }
+        leaders.push_back({pixel[0], pixel[1]});
+    }
+    return leaders;
 }
 
 }  // namespace caliper3d::test
