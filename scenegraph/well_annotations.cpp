@@ -239,31 +239,27 @@ void addCandidate(LabelToPlace& label, const ScreenBox& box, const std::string& 
     label.starts.emplace_back(box.x0 - at0.x0, box.y0 - at0.y0);
 }
 
-}  // namespace
+// A well's name to place, the name itself, and how far from its top it keeps (pixels; 0: a
+// name not to be moved).
+struct NameToPlace {
+    LabelToPlace label;
+    WellName* name = nullptr;
+    float clearance_px = 0.0f;
+    std::vector<Callout> apart{};  // where it may go apart from its well, nearest first
+};
 
-void placeWellLabels(std::vector<WellLabels>& wells, const std::vector<AnnotationView>& views,
-                     const std::vector<ScreenBox>& obstacles) {
-    if (wells.empty() || views.size() != wells.size() || !views.front().toPixels) return;
-    constexpr float kUnbounded = 1.0e9f;
-    constexpr float kGap_px = 2.0f;
-    const AnnotationView& first = views.front();
-    const bool bounded = first.width_px > 0 && first.height_px > 0;
-    const ScreenBox frame = bounded ? ScreenBox{0.0f, 0.0f, static_cast<float>(first.width_px),
-                                                static_cast<float>(first.height_px)}
-                                    : ScreenBox{-kUnbounded, -kUnbounded, kUnbounded, kUnbounded};
-    std::vector<ScreenBox> blocked = obstacles;
-    // Names first: a well's name says which well the rest belongs to.
-    std::vector<LabelToPlace> names;
-    std::vector<WellName*> nameOf;
-    std::vector<float> clearanceOf;  // of a name that may move: from its top, pixels
+// Each well's name with its places beside the top of its well.
+std::vector<NameToPlace> namesToPlace(std::vector<WellLabels>& wells,
+                                      const std::vector<AnnotationView>& views) {
+    std::vector<NameToPlace> names;
     for (std::size_t w = 0; w < wells.size(); ++w) {
         if (!wells[w].name) continue;
         WellName& name = *wells[w].name;
         const AnnotationView& view = views[w];
-        LabelToPlace label{&view, &name.text, &name.labelAt, name.position};
+        NameToPlace place{{&view, &name.text, &name.labelAt, name.position}, &name};
+        LabelToPlace& label = place.label;
         const std::optional<glm::vec2> head = view.toPixels(name.position);
         const std::optional<glm::vec2> start = view.toPixels(name.labelAt);
-        float clearance = 0.0f;
         if (head && start && !view.pixelSize) {
             // Not to be moved: where it first went, or nowhere.
             label.anchorPixel = *head;
@@ -273,94 +269,100 @@ void placeWellLabels(std::vector<WellLabels>& wells, const std::vector<Annotatio
             label.anchorPixel = *head;
             const float pixel = view.pixelSize(name.position);
             const float radius_px = pixel > 0.0f ? name.drawnRadius_m / pixel : 0.0f;
-            clearance = std::max(kNameClearance_px, radius_px + 4.0f);
+            place.clearance_px = std::max(kNameClearance_px, radius_px + 4.0f);
             const ScreenBox box = boxFrom(glm::vec2(0.0f), name.text, kNameSize_px);
             const glm::vec2 size(box.width(), box.height());
             for (const LabelSide side : kLabelSides)
-                addCandidate(label, boxBeside(*head, size, side, clearance), name.text,
+                addCandidate(label, boxBeside(*head, size, side, place.clearance_px), name.text,
                              kNameSize_px);
         }
-        names.push_back(std::move(label));
-        nameOf.push_back(&name);
-        clearanceOf.push_back(clearance);
+        names.push_back(std::move(place));
     }
-    // The wellheads' markers stay visible.
-    for (std::size_t w = 0; w < wells.size(); ++w)
-        if (wells[w].name && wells[w].name->wellhead)
-            if (const auto head = views[w].toPixels(wells[w].name->position))
-                blocked.push_back({head->x - 4.5f, head->y - 4.5f, head->x + 4.5f, head->y + 4.5f});
-    // The wells' labels in one layout, so that no two wells' labels meet either.
-    const LabelLayout empty(frame, std::move(blocked), kGap_px);
-    // A name with no room beside its well is placed apart, out from the middle of the wells'
-    // tops (so the leaders of a crowded field fan out rather than cross), with a leader.
+    return names;
+}
+
+// Where each name that may move can go apart from its well: out from the middle of the wells'
+// tops (so the leaders of a crowded field fan out rather than cross), up to `reach_px` away.
+void addPlacesApart(std::vector<NameToPlace>& names, float reach_px) {
     glm::vec2 middle(0.0f);
     int movable = 0;
-    for (std::size_t i = 0; i < names.size(); ++i)
-        if (clearanceOf[i] > 0.0f) middle += names[i].anchorPixel, ++movable;
-    if (movable > 0) middle /= static_cast<float>(movable);
-    const float reach = bounded ? 0.25f * std::hypot(frame.width(), frame.height()) : 0.0f;
-    std::vector<std::vector<Callout>> apart(names.size());
-    for (std::size_t i = 0; i < names.size(); ++i) {
-        if (clearanceOf[i] <= 0.0f || reach <= 0.0f) continue;
-        const ScreenBox at0 = boxFrom(glm::vec2(0.0f), *names[i].text, kNameSize_px);
-        apart[i] = calloutCandidates(names[i].anchorPixel, names[i].anchorPixel - middle,
-                                     glm::vec2(at0.width(), at0.height()), clearanceOf[i] + 12.0f,
-                                     reach, std::max(clearanceOf[i], 10.0f));
+    for (const NameToPlace& name : names)
+        if (name.clearance_px > 0.0f) middle += name.label.anchorPixel, ++movable;
+    if (movable == 0 || reach_px <= 0.0f) return;
+    middle /= static_cast<float>(movable);
+    for (NameToPlace& name : names) {
+        if (name.clearance_px <= 0.0f) continue;
+        const ScreenBox at0 = boxFrom(glm::vec2(0.0f), name.name->text, kNameSize_px);
+        name.apart =
+            calloutCandidates(name.label.anchorPixel, name.label.anchorPixel - middle,
+                              glm::vec2(at0.width(), at0.height()), name.clearance_px + 12.0f,
+                              reach_px, std::max(name.clearance_px, 10.0f));
     }
-    // Every name beside its well where there is room, then the rest apart. A name enclosed by
-    // its neighbours' names (a pad of wells seen from above) has no way out for its leader, so
-    // the names left out go first in the next round, apart from the start; the round that
-    // places the most names is kept (the first of equals: deterministic).
-    struct NameRound {
-        LabelLayout layout;
-        std::vector<int> beside;   // the box taken, -1: none
-        std::vector<int> callout;  // the callout taken, -1: none
-        std::size_t placed = 0;
-    };
-    const auto round = [&](const std::vector<char>& apartFirst) {
-        NameRound r{empty, std::vector<int>(names.size(), -1), std::vector<int>(names.size(), -1)};
-        for (std::size_t i = 0; i < names.size(); ++i)
-            if (apartFirst[i]) r.callout[i] = r.layout.place(apart[i]);
-        for (std::size_t i = 0; i < names.size(); ++i)
-            if (!apartFirst[i]) r.beside[i] = r.layout.place(names[i].boxes);
-        for (std::size_t i = 0; i < names.size(); ++i)
-            if (!apartFirst[i] && r.beside[i] < 0) r.callout[i] = r.layout.place(apart[i]);
-        for (std::size_t i = 0; i < names.size(); ++i)
-            r.placed += r.beside[i] >= 0 || r.callout[i] >= 0 ? 1 : 0;
-        return r;
-    };
+}
+
+// The names placed in one layout: each name's box beside its well or callout apart from it
+// (-1: none).
+struct NameRound {
+    LabelLayout layout;
+    std::vector<int> beside;
+    std::vector<int> apart;
+    std::size_t placed = 0;
+};
+
+// Every name beside its well where there is room, then the rest apart; the names marked in
+// `apartFirst` apart before any other.
+NameRound placeNames(const LabelLayout& empty, const std::vector<NameToPlace>& names,
+                     const std::vector<char>& apartFirst) {
+    NameRound r{empty, std::vector<int>(names.size(), -1), std::vector<int>(names.size(), -1)};
+    for (std::size_t i = 0; i < names.size(); ++i)
+        if (apartFirst[i]) r.apart[i] = r.layout.place(names[i].apart);
+    for (std::size_t i = 0; i < names.size(); ++i)
+        if (!apartFirst[i]) r.beside[i] = r.layout.place(names[i].label.boxes);
+    for (std::size_t i = 0; i < names.size(); ++i)
+        if (!apartFirst[i] && r.beside[i] < 0) r.apart[i] = r.layout.place(names[i].apart);
+    for (std::size_t i = 0; i < names.size(); ++i)
+        r.placed += r.beside[i] >= 0 || r.apart[i] >= 0 ? 1 : 0;
+    return r;
+}
+
+// A name enclosed by its neighbours' names (a pad of wells seen from above) has no way out for
+// its leader, so the names left out go first in the next round, apart from the start; the round
+// that places the most names is kept (the first of equals: deterministic).
+NameRound placeNamesInRounds(const LabelLayout& empty, const std::vector<NameToPlace>& names) {
     std::vector<char> apartFirst(names.size(), 0);
-    NameRound best = round(apartFirst);
+    NameRound best = placeNames(empty, names, apartFirst);
     for (int again = 0; again < 3 && best.placed < names.size(); ++again) {
         bool grew = false;
         for (std::size_t i = 0; i < names.size(); ++i)
-            if (best.beside[i] < 0 && best.callout[i] < 0 && !apart[i].empty() && !apartFirst[i])
+            if (best.beside[i] < 0 && best.apart[i] < 0 && !names[i].apart.empty() &&
+                !apartFirst[i])
                 apartFirst[i] = 1, grew = true;
         if (!grew) break;
-        NameRound next = round(apartFirst);
+        NameRound next = placeNames(empty, names, apartFirst);
         if (next.placed > best.placed) best = std::move(next);
     }
-    LabelLayout& layout = best.layout;
-    std::vector<int>& nameChosen = best.beside;
-    for (std::size_t i = 0; i < names.size(); ++i) {
-        if (best.callout[i] < 0) continue;
-        const LabelToPlace& label = names[i];
-        WellName& name = *nameOf[i];
-        const Callout& callout = apart[i][static_cast<std::size_t>(best.callout[i])];
-        const ScreenBox at0 = boxFrom(glm::vec2(0.0f), name.text, kNameSize_px);
-        const AnnotationView& view = *label.view;
-        // Across the view, at the anchor's distance from the eye (as a moved label is).
-        const glm::vec3 up = glm::cross(view.right, view.look);
-        const float pixel = view.pixelSize(label.anchor);
-        const auto toScene = [&](glm::vec2 at) {
-            const glm::vec2 shift = at - label.anchorPixel;
-            return label.anchor + (view.right * shift.x - up * shift.y) * pixel;
-        };
-        name.labelAt = toScene(glm::vec2(callout.box.x0 - at0.x0, callout.box.y0 - at0.y0));
-        name.leader = std::pair(toScene(callout.leader.a), toScene(callout.leader.b));
-        nameChosen[i] = -2;  // placed apart: its place is set
-    }
-    // Then the depth labels, down each well: at the mark's end, else just above or below it.
+    return best;
+}
+
+// A name placed apart: where its text starts and its leader, across the view at its well's
+// top's distance from the eye (as a moved label is).
+void setApart(const NameToPlace& place, const Callout& callout) {
+    const LabelToPlace& label = place.label;
+    const AnnotationView& view = *label.view;
+    const ScreenBox at0 = boxFrom(glm::vec2(0.0f), place.name->text, kNameSize_px);
+    const glm::vec3 up = glm::cross(view.right, view.look);
+    const float pixel = view.pixelSize(label.anchor);
+    const auto toScene = [&](glm::vec2 at) {
+        const glm::vec2 shift = at - label.anchorPixel;
+        return label.anchor + (view.right * shift.x - up * shift.y) * pixel;
+    };
+    place.name->labelAt = toScene(glm::vec2(callout.box.x0 - at0.x0, callout.box.y0 - at0.y0));
+    place.name->leader = std::pair(toScene(callout.leader.a), toScene(callout.leader.b));
+}
+
+// Each well's depth labels, down the well: at the mark's end, else just above or below it.
+std::vector<LabelToPlace> depthLabelsToPlace(std::vector<WellLabels>& wells,
+                                             const std::vector<AnnotationView>& views) {
     std::vector<LabelToPlace> depths;
     for (std::size_t w = 0; w < wells.size(); ++w)
         for (DepthTick& tick : wells[w].ticks) {
@@ -378,25 +380,56 @@ void placeWellLabels(std::vector<WellLabels>& wells, const std::vector<Annotatio
             }
             depths.push_back(std::move(label));
         }
-    std::vector<int> depthChosen;
-    for (const LabelToPlace& label : depths) depthChosen.push_back(layout.place(label.boxes));
-    const auto settle = [](LabelToPlace& label, int chosen) {
-        if (chosen == -2) return;  // placed apart, already settled
-        if (chosen < 0) {
-            label.text->clear();
-            return;
-        }
-        const auto k = static_cast<std::size_t>(chosen);
-        const AnnotationView& view = *label.view;
-        if (!view.pixelSize) return;  // where it first went
-        // Moved across the view, at the anchor's distance from the eye.
-        const glm::vec2 shift = label.starts[k] - label.anchorPixel;
-        const glm::vec3 up = glm::cross(view.right, view.look);
-        *label.labelAt =
-            label.anchor + (view.right * shift.x - up * shift.y) * view.pixelSize(label.anchor);
-    };
-    for (std::size_t i = 0; i < names.size(); ++i) settle(names[i], nameChosen[i]);
-    for (std::size_t i = 0; i < depths.size(); ++i) settle(depths[i], depthChosen[i]);
+    return depths;
+}
+
+// A label at the candidate it took, or cleared when it took none.
+void settle(LabelToPlace& label, int chosen) {
+    if (chosen < 0) {
+        label.text->clear();
+        return;
+    }
+    const auto k = static_cast<std::size_t>(chosen);
+    const AnnotationView& view = *label.view;
+    if (!view.pixelSize) return;  // where it first went
+    // Moved across the view, at the anchor's distance from the eye.
+    const glm::vec2 shift = label.starts[k] - label.anchorPixel;
+    const glm::vec3 up = glm::cross(view.right, view.look);
+    *label.labelAt =
+        label.anchor + (view.right * shift.x - up * shift.y) * view.pixelSize(label.anchor);
+}
+
+}  // namespace
+
+void placeWellLabels(std::vector<WellLabels>& wells, const std::vector<AnnotationView>& views,
+                     const std::vector<ScreenBox>& obstacles) {
+    if (wells.empty() || views.size() != wells.size() || !views.front().toPixels) return;
+    constexpr float kUnbounded = 1.0e9f;
+    constexpr float kGap_px = 2.0f;
+    const AnnotationView& first = views.front();
+    const bool bounded = first.width_px > 0 && first.height_px > 0;
+    const ScreenBox frame = bounded ? ScreenBox{0.0f, 0.0f, static_cast<float>(first.width_px),
+                                                static_cast<float>(first.height_px)}
+                                    : ScreenBox{-kUnbounded, -kUnbounded, kUnbounded, kUnbounded};
+    // Names first: a well's name says which well the rest belongs to.
+    std::vector<NameToPlace> names = namesToPlace(wells, views);
+    addPlacesApart(names, bounded ? 0.25f * std::hypot(frame.width(), frame.height()) : 0.0f);
+    // The wellheads' markers stay visible.
+    std::vector<ScreenBox> blocked = obstacles;
+    for (std::size_t w = 0; w < wells.size(); ++w)
+        if (wells[w].name && wells[w].name->wellhead)
+            if (const auto head = views[w].toPixels(wells[w].name->position))
+                blocked.push_back({head->x - 4.5f, head->y - 4.5f, head->x + 4.5f, head->y + 4.5f});
+    // The wells' labels in one layout, so that no two wells' labels meet either.
+    NameRound placed = placeNamesInRounds(LabelLayout(frame, std::move(blocked), kGap_px), names);
+    for (std::size_t i = 0; i < names.size(); ++i)
+        if (placed.apart[i] >= 0)
+            setApart(names[i], names[i].apart[static_cast<std::size_t>(placed.apart[i])]);
+        else
+            settle(names[i].label, placed.beside[i]);
+    // Then the depth labels.
+    std::vector<LabelToPlace> depths = depthLabelsToPlace(wells, views);
+    for (LabelToPlace& label : depths) settle(label, placed.layout.place(label.boxes));
 }
 
 PlacedAnnotations placeAnnotations(const std::vector<AnnotatedWell>& wells, const SoCamera& camera,
