@@ -149,7 +149,12 @@ int renderPicture(const std::vector<WellSource>& sources, const RenderSettings& 
     // needs only its coarsest segment level up front.
     const int firstLevel = sources.size() > 1 ? reconstruction::kFieldFirstCoarseLevel
                                               : reconstruction::kFirstCoarseLevel;
-    AssembledScene scene = assembleScene(sources, r.options, std::ref(plan), firstLevel);
+    // A large field is held lean unless every row is wanted: an interval cut from each well,
+    // a pick (the analysis of every well), or colour by change (a field held lean reads each
+    // well again; the comparison needs the whole log).
+    FieldRows rows;
+    if (!plan.depth && !r.pick) rows = {kFieldRowBudget, r.downHole};
+    AssembledScene scene = assembleScene(sources, r.options, std::ref(plan), firstLevel, rows);
     inputs = scene.inputs;
     if (scene.wells == 0) return kExitBadInput;
     scenegraph::PictureRequest request;

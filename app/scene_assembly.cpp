@@ -8,6 +8,7 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <thread>
 #include <tuple>
 #include <utility>
@@ -19,6 +20,7 @@
 #include "app/change_colouring.h"
 #include "io/parse_error.h"
 #include "io/picks_reader.h"
+#include "reconstruction/analysis/wall_colour_request.h"
 #include "reconstruction/load/load_well.h"
 #include "reconstruction/mesh/lod_levels.h"
 #include "reconstruction/mesh/lod_tree.h"
@@ -51,6 +53,23 @@ struct LoadSlot {
     std::exception_ptr error;
 };
 
+// One well loaded with its picks, or the exception that stopped it.
+LoadSlot loadOne(const WellSource& well, const LoadOptions& options,
+                 const reconstruction::Wellhead& origin) {
+    LoadSlot slot;
+    try {
+        slot.well = reconstruction::loadWell(well, options, origin);
+        if (!well.picksPath.empty()) {
+            io::PickFile picks = io::readPicks(well.picksPath);
+            slot.well.diagnostics.merge(picks.diagnostics);
+            slot.picks = std::move(picks.picks);
+        }
+    } catch (...) {
+        slot.error = std::current_exception();
+    }
+    return slot;
+}
+
 // Loads every well, side by side when there are several: each on one of the machine's threads
 // with a one-thread read (a small log's read does not split well in two, and two wells at once
 // keep both cores busy through the path and the placement too). One well reads on its own
@@ -66,19 +85,7 @@ std::vector<LoadSlot> loadAll(const std::vector<WellSource>& wells, const LoadOp
     }
     reconstruction::forEachBlockInOrder(
         wells.size(), threads,
-        [&](std::size_t w, std::size_t) {
-            LoadSlot& slot = loads[w];
-            try {
-                slot.well = reconstruction::loadWell(wells[w], each, origin);
-                if (!wells[w].picksPath.empty()) {
-                    io::PickFile picks = io::readPicks(wells[w].picksPath);
-                    slot.well.diagnostics.merge(picks.diagnostics);
-                    slot.picks = std::move(picks.picks);
-                }
-            } catch (...) {
-                slot.error = std::current_exception();
-            }
-        },
+        [&](std::size_t w, std::size_t) { loads[w] = loadOne(wells[w], each, origin); },
         [](std::size_t) {});
     return loads;
 }
@@ -90,40 +97,117 @@ struct Loaded {
     std::vector<io::Diagnostics> diagnostics;
     std::vector<std::size_t> inputs;           // each loaded well's place in out.inputs
     std::vector<std::vector<io::Pick>> picks;  // each loaded well's image-log picks
+    std::vector<std::size_t> sources;          // each loaded well's place in `wells`
+    // A field held lean (FieldRows): the geometries are samples, but where kept whole; each
+    // well's own colouring's legend, taken while it held every row.
+    bool lean = false;
+    std::vector<char> whole;
+    std::vector<reconstruction::ColourLegend> legends;
 };
 
-// Each well's line of out.inputs, in order: its rows and warnings, or why it failed (said
-// on stderr as well). The slots are emptied: the geometry holds the table.
+// Well `w`'s line of out.inputs: its rows and warnings, or why it failed (said on stderr as
+// well); a well that loaded joins `kept`. The slot is emptied: the geometry holds the table.
+void takeOne(const std::vector<WellSource>& wells, std::size_t w, LoadSlot& slot,
+             AssembledScene& out, Loaded& kept) {
+    const WellSource& well = wells[w];
+    InputSummary& input = out.inputs.emplace_back();
+    input.file = well.path;
+    try {
+        if (slot.error) std::rethrow_exception(slot.error);
+        reconstruction::LoadedWell& one = slot.well;
+        kept.picks.push_back(std::move(slot.picks));
+        kept.geometries.push_back(one.geometry);
+        kept.files.push_back(well.path);
+        kept.sources.push_back(w);
+        const std::vector<double>& md = one.table->depth_m;
+        input.rows = md.size();
+        if (!md.empty()) std::tie(input.top_m, input.bottom_m) = std::pair(md.front(), md.back());
+        input.addWarnings(one.diagnostics);
+        kept.inputs.push_back(out.inputs.size() - 1);
+        kept.diagnostics.push_back(std::move(one.diagnostics));
+    } catch (const std::exception& e) {
+        ++out.failures;
+        std::fprintf(stderr, "caliper3d: %s\n", e.what());
+        input.error = inputErrorFrom(e, well.path);
+    }
+    slot = LoadSlot{};
+}
+
+// Each well's line of out.inputs, in order (takeOne).
 Loaded takeLoaded(const std::vector<WellSource>& wells, std::vector<LoadSlot> loads,
                   AssembledScene& out) {
     Loaded kept;
-    for (std::size_t w = 0; w < wells.size(); ++w) {
-        const WellSource& well = wells[w];
-        LoadSlot& slot = loads[w];
-        InputSummary& input = out.inputs.emplace_back();
-        input.file = well.path;
-        try {
-            if (slot.error) std::rethrow_exception(slot.error);
-            reconstruction::LoadedWell& one = slot.well;
-            kept.picks.push_back(std::move(slot.picks));
-            kept.geometries.push_back(one.geometry);
-            kept.files.push_back(well.path);
-            const std::vector<double>& md = one.table->depth_m;
-            input.rows = md.size();
-            if (!md.empty())
-                std::tie(input.top_m, input.bottom_m) = std::pair(md.front(), md.back());
-            input.addWarnings(one.diagnostics);
-            kept.inputs.push_back(out.inputs.size() - 1);
-            kept.diagnostics.push_back(std::move(one.diagnostics));
-        } catch (const std::exception& e) {
-            ++out.failures;
-            std::fprintf(stderr, "caliper3d: %s\n", e.what());
-            input.error = inputErrorFrom(e, well.path);
-        }
-        slot = LoadSlot{};
-    }
+    for (std::size_t w = 0; w < wells.size(); ++w) takeOne(wells, w, loads[w], out, kept);
     return kept;
 }
+
+// A well of a field held lean keeps this many rows (WellGeometry::sampled): about what the
+// picture's scale and framing sample of it (scenegraph/picture_scale.cpp), and a row every
+// 0.25 m of a kilometre for its labels.
+constexpr std::size_t kLeanRows = 4096;
+
+// Loads every well as loadAll does, taking each in order as it arrives (takeOne); once the
+// wells taken hold more rows than `rows.budget`, every well taken from then on, and those
+// before, is kept by a sample of its rows (its own colouring's legend taken first).
+Loaded loadLean(const std::vector<WellSource>& wells, const LoadOptions& options,
+                const reconstruction::Wellhead& origin, const FieldRows& rows,
+                AssembledScene& out) {
+    Loaded kept;
+    std::vector<LoadSlot> loads(wells.size());
+    LoadOptions each = options;
+    each.readThreads = 1;
+    const int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    std::size_t held = 0;
+    const auto sample = [&](std::size_t k) {
+        kept.legends[k] =
+            reconstruction::makeWallColouring(*kept.geometries[k], options.colour)->legend();
+        if (rows.keepFirstWhole && kept.sources[k] == 0) return;
+        kept.whole[k] = 0;
+        kept.geometries[k] = std::make_shared<const reconstruction::WellGeometry>(
+            kept.geometries[k]->sampled(kLeanRows));
+    };
+    reconstruction::forEachBlockInOrder(
+        wells.size(), threads,
+        [&](std::size_t w, std::size_t) { loads[w] = loadOne(wells[w], each, origin); },
+        [&](std::size_t w) {
+            const std::size_t before = kept.geometries.size();
+            takeOne(wells, w, loads[w], out, kept);
+            if (kept.geometries.size() == before) return;  // failed
+            kept.whole.push_back(1);
+            kept.legends.emplace_back();
+            held += kept.geometries.back()->table().rowCount();
+            if (kept.lean) {
+                sample(before);
+            } else if (held > rows.budget) {
+                kept.lean = true;
+                for (std::size_t k = 0; k < kept.geometries.size(); ++k) sample(k);
+            }
+        });
+    return kept;
+}
+
+// Reads a well of a field held lean again, as drawn: its colouring shared with the field's
+// (or its own) and the field's exaggeration. Copies what it needs: a picture keeps it.
+struct WellReader {
+    WellSource source;
+    LoadOptions options;
+    reconstruction::Wellhead origin;
+    double exaggeration = 1.0;
+    std::optional<reconstruction::ColourRequest> shared;
+    reconstruction::ColourLegend own;
+    std::size_t wells = 1;
+
+    std::shared_ptr<const reconstruction::WellGeometry> operator()() const {
+        const reconstruction::LoadedWell one = reconstruction::loadWell(source, options, origin);
+        return std::make_shared<const reconstruction::WellGeometry>(
+            one.geometry->restyled(exaggeration, colouring(*one.geometry)));
+    }
+    std::shared_ptr<const reconstruction::WallColouring> colouring(
+        const reconstruction::WellGeometry& whole) const {
+        return shared ? reconstruction::sharedWallColouring(whole, *shared, own, wells)
+                      : reconstruction::makeWallColouring(whole, options.colour);
+    }
+};
 
 // Each well's drawn geometry and coarse meshes, built on a worker up to two wells ahead of
 // the main thread, which makes their nodes in order (Coin nodes are made on the main thread
@@ -193,16 +277,90 @@ private:
     std::thread m_worker;  // last: started once the rest is in place
 };
 
+// A well's scene from its coarse meshes, added to `out` and announced: `drawn` is the geometry
+// the meshes were built from, `kept` what the scene keeps of it (a sample, or `drawn`).
+void addWell(AssembledScene& out, MeshesAhead::Built& built,
+             std::shared_ptr<const reconstruction::WellGeometry> kept,
+             std::function<std::shared_ptr<const reconstruction::WellGeometry>()> rows,
+             const std::vector<io::Pick>& picks, double exaggeration, const std::string& file,
+             const io::Diagnostics& diagnostics) {
+    const reconstruction::WellGeometry& drawn = *built.geometry;
+    auto scene = std::make_shared<scenegraph::WellScene>();
+    scene->attachAll(drawn, built.meshes);
+    built.meshes = {};
+    out.geometries.push_back(std::move(kept));
+    out.rows.push_back(std::move(rows));
+    out.scenes.push_back(scene);
+    out.root->addChild(scene->root());
+    if (!picks.empty()) out.root->addChild(scenegraph::makePickMarkers(drawn, picks, exaggeration));
+    ++out.wells;
+    std::printf("%s: %zu sections, %zu segments, %zu triangles at full detail, %zu warnings\n",
+                file.c_str(), drawn.table().rowCount(), scene->segmentCount(),
+                scene->fullDetailTriangles(), diagnostics.warningCount);
+    printWarnings(diagnostics);
+}
+
+// The scene of a field held lean: the exaggeration planned over the samples, the colours shared
+// from each well's own legend, each well read again (a worker ahead of the nodes, as
+// MeshesAhead does) to build its coarse meshes, then let go of but for its sample.
+void buildLean(const std::vector<WellSource>& wells, const LoadOptions& options,
+               const reconstruction::Wellhead& origin, const ScenePlan& plan, int firstCoarseLevel,
+               Loaded& loaded, AssembledScene& out) {
+    double exaggeration = options.radialExaggeration;
+    if (plan) plan(loaded.geometries, exaggeration);
+    const std::size_t count = loaded.geometries.size();
+    const std::optional<reconstruction::ColourRequest> shared =
+        reconstruction::sharedColourRequest(loaded.legends, options.colour);
+    std::vector<WellReader> readers;
+    readers.reserve(count);
+    for (std::size_t k = 0; k < count; ++k)
+        readers.push_back({wells[loaded.sources[k]], options, origin, exaggeration, shared,
+                           loaded.legends[k], count});
+    MeshesAhead ahead(count, [&](std::size_t k) {
+        MeshesAhead::Built built;
+        const auto& sample = loaded.geometries[k];
+        built.geometry = loaded.whole[k]
+                             ? std::make_shared<const reconstruction::WellGeometry>(
+                                   sample->restyled(exaggeration, readers[k].colouring(*sample)))
+                             : readers[k]();
+        built.meshes = reconstruction::buildCoarseMeshes(*built.geometry, firstCoarseLevel);
+        return built;
+    });
+    for (std::size_t k = 0; k < count; ++k) {
+        MeshesAhead::Built built = ahead.take(k);
+        if (built.error) std::rethrow_exception(built.error);
+        if (k == 0) out.legendColouring = built.geometry->options().colouring;
+        std::shared_ptr<const reconstruction::WellGeometry> kept = built.geometry;
+        std::function<std::shared_ptr<const reconstruction::WellGeometry>()> rows;
+        if (!loaded.whole[k]) {
+            kept = std::make_shared<const reconstruction::WellGeometry>(
+                loaded.geometries[k]->restyled(exaggeration, nullptr));
+            rows = readers[k];
+        }
+        addWell(out, built, std::move(kept), std::move(rows), loaded.picks[k], exaggeration,
+                loaded.files[k], loaded.diagnostics[k]);
+    }
+}
+
 }  // namespace
 
 AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOptions& options,
-                             const ScenePlan& plan, int firstCoarseLevel) {
+                             const ScenePlan& plan, int firstCoarseLevel, const FieldRows& rows) {
     const auto start = std::chrono::steady_clock::now();
     AssembledScene out;
     out.root = scenegraph::NodeRef<SoSeparator>(new SoSeparator);
     out.root->setName("caliper3d_scene");
     const reconstruction::Wellhead origin = reconstruction::sceneOrigin(wells);
-    Loaded wellsLoaded = takeLoaded(wells, loadAll(wells, options, origin), out);
+    const bool mayHoldLean = rows.budget > 0 && wells.size() > 1 && !coloursByChange(options);
+    Loaded wellsLoaded = mayHoldLean ? loadLean(wells, options, origin, rows, out)
+                                     : takeLoaded(wells, loadAll(wells, options, origin), out);
+    if (wellsLoaded.lean) {
+        buildLean(wells, options, origin, plan, firstCoarseLevel, wellsLoaded, out);
+        out.load_ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count();
+        return out;
+    }
     // (References, not a structured binding: the lambdas below capture them.)
     auto& loaded = wellsLoaded.geometries;
     const auto& files = wellsLoaded.files;
@@ -257,20 +415,8 @@ AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOpt
     for (std::size_t w = 0; w < loaded.size(); ++w) {
         MeshesAhead::Built built = ahead.take(w);
         if (built.error) std::rethrow_exception(built.error);
-        const std::shared_ptr<const reconstruction::WellGeometry>& geometry = built.geometry;
-        auto scene = std::make_shared<scenegraph::WellScene>();
-        scene->attachAll(*geometry, built.meshes);
-        built.meshes = {};
-        out.geometries.push_back(geometry);
-        out.scenes.push_back(scene);
-        out.root->addChild(scene->root());
-        if (!picks[w].empty())
-            out.root->addChild(scenegraph::makePickMarkers(*geometry, picks[w], exaggeration));
-        ++out.wells;
-        std::printf("%s: %zu sections, %zu segments, %zu triangles at full detail, %zu warnings\n",
-                    files[w].c_str(), geometry->table().rowCount(), scene->segmentCount(),
-                    scene->fullDetailTriangles(), diagnostics[w].warningCount);
-        printWarnings(diagnostics[w]);
+        std::shared_ptr<const reconstruction::WellGeometry> kept = built.geometry;
+        addWell(out, built, std::move(kept), {}, picks[w], exaggeration, files[w], diagnostics[w]);
     }
     out.load_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -278,13 +424,15 @@ AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOpt
 }
 
 const reconstruction::ColourLegend* AssembledScene::legend() const {
+    if (legendColouring) return &legendColouring->legend();
     if (geometries.empty() || !geometries.front()->options().colouring) return nullptr;
     return &geometries.front()->options().colouring->legend();
 }
 
 std::vector<scenegraph::PictureWell> AssembledScene::pictureWells() const {
     std::vector<scenegraph::PictureWell> wells;
-    for (std::size_t w = 0; w < geometries.size(); ++w) wells.push_back({geometries[w], scenes[w]});
+    for (std::size_t w = 0; w < geometries.size(); ++w)
+        wells.push_back({geometries[w], scenes[w], w < rows.size() ? rows[w] : nullptr});
     return wells;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <memory>
 #include <string>
@@ -27,8 +28,13 @@ struct AssembledScene {
     scenegraph::NodeRef<SoSeparator> root;
     int wells = 0;
     int failures = 0;
+    // As drawn; a well of a field held lean (FieldRows) by a sample of its rows.
     std::vector<std::shared_ptr<const reconstruction::WellGeometry>> geometries;
     std::vector<std::shared_ptr<scenegraph::WellScene>> scenes;  // one per geometry
+    // One per geometry: reads a well held lean again, as drawn (null for a well held whole).
+    std::vector<std::function<std::shared_ptr<const reconstruction::WellGeometry>()>> rows;
+    // The first well's colouring, where its geometry is a sample without one (the legend).
+    std::shared_ptr<const reconstruction::WallColouring> legendColouring;
     double load_ms = 0.0;  // reading, geometry and the coarse levels of every well
     // One per well asked for, in order: rows, depths and warnings, or why it failed (the
     // verb's name, outputs and cost are the caller's to add).
@@ -51,12 +57,25 @@ AssembledScene assembleScene(const std::vector<std::string>& files, const LoadOp
 using ScenePlan =
     std::function<void(std::vector<std::shared_ptr<const reconstruction::WellGeometry>>& wells,
                        double& radialExaggeration)>;
+// How many of a field's rows a scene holds (docs/architecture.md, "A field held lean"). With a
+// budget, once the wells read hold more rows than it, every well is kept by a sample of its
+// rows (WellGeometry::sampled: enough for its labels, framing and scale), read again to build
+// its nodes, and again when a picture's camera wants its finer levels. The plan then sees the
+// samples: it may choose the exaggeration, not cut an interval. Colour by change holds every row.
+struct FieldRows {
+    std::size_t budget = 0;       // rows; 0: every well holds every row
+    bool keepFirstWhole = false;  // the first well keeps every row (a picture down its hole)
+};
+// What `render` holds of a field before it holds it lean: about 330 MB of tables and paths.
+inline constexpr std::size_t kFieldRowBudget = 2'000'000;
+
 // Each well's segments come with their levels from `firstCoarseLevel` on (a picture of a field
 // needs fewer up front: reconstruction::kFieldFirstCoarseLevel). Several wells are read side by
 // side, one on each of the machine's threads, and each well's meshes are built on a worker
 // while the nodes of the one before are made here.
 AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOptions& options,
                              const ScenePlan& plan,
-                             int firstCoarseLevel = reconstruction::kFirstCoarseLevel);
+                             int firstCoarseLevel = reconstruction::kFirstCoarseLevel,
+                             const FieldRows& rows = {});
 
 }  // namespace caliper3d::app

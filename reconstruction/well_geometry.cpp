@@ -353,6 +353,36 @@ WellGeometry WellGeometry::restyled(double radialExaggeration,
     return out;
 }
 
+WellGeometry WellGeometry::sampled(std::size_t maxRows) const {
+    const std::size_t rows = m_table->rowCount();
+    WellGeometry out(*this);
+    out.m_options.colouring.reset();
+    out.m_options.cancel = nullptr;
+    if (rows <= std::max<std::size_t>(maxRows, 2)) return out;
+    const std::size_t stride = std::max<std::size_t>(1, rows / std::max<std::size_t>(maxRows, 1));
+    std::vector<std::size_t> keep;
+    keep.reserve(rows / stride + 2);
+    for (std::size_t row = 0; row < rows; row += stride) keep.push_back(row);
+    if (keep.back() != rows - 1) keep.push_back(rows - 1);
+    auto table = std::make_shared<io::SectionTable>(m_table->rows(0, 0));
+    table->reserve(keep.size());
+    auto placed = std::make_shared<Placement>();
+    placed->path.reserve(keep.size());
+    placed->orientation.reserve(keep.size());
+    placed->measured.reserve(keep.size());
+    for (const std::size_t row : keep) {
+        table->appendRows(*m_table, row, row + 1);
+        placed->path.push_back(m_placed->path[row]);
+        placed->orientation.push_back(m_placed->orientation[row]);
+        placed->measured.push_back(m_placed->measured[row]);
+        placed->measuredRows += m_placed->measured[row];
+    }
+    out.m_table = std::move(table);
+    out.m_placed = std::move(placed);
+    out.cutSegments();
+    return out;
+}
+
 SegmentMesh WellGeometry::buildSegment(std::size_t segment) const {
     return buildSegmentMesh(*this, segment);
 }

@@ -107,6 +107,14 @@ public:
     WellGeometry restyled(double radialExaggeration,
                           std::shared_ptr<const WallColouring> colouring) const;
 
+    // The same well held by about `maxRows` of its rows (every k-th, the first and the last),
+    // each placed, oriented and marked measured exactly as here, its segments cut anew and
+    // coloured by departure from bit size (the colouring is not carried): what a field picture
+    // keeps of a well for its labels, framing and scale once its nodes are built, the rows read
+    // again when the camera wants finer levels (docs/architecture.md, "A field held lean").
+    // The whole well when it has no more rows than that.
+    WellGeometry sampled(std::size_t maxRows) const;
+
     // Whether a row has enough valid arms to define its section's shape; a
     // row without is drawn as a gap and analysed as no_data.
     bool measured(std::size_t row) const { return m_placed->measured[row] != 0; }

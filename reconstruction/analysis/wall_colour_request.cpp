@@ -245,29 +245,44 @@ std::shared_ptr<const WallColouring> makeWallColouring(const WellGeometry& g,
         std::move(values), ColourMapKind::Sequential, lo, hi, std::move(legend)));
 }
 
+std::optional<ColourRequest> sharedColourRequest(const std::vector<ColourLegend>& own,
+                                                 const ColourRequest& request) {
+    if (own.size() < 2 || request.range || own.front().kind != ColourMapKind::Sequential)
+        return std::nullopt;
+    double lo = own.front().lo, hi = own.front().hi;
+    for (const ColourLegend& legend : own) {
+        lo = std::min(lo, legend.lo);
+        hi = std::max(hi, legend.hi);
+    }
+    ColourRequest shared = request;
+    shared.range = std::make_pair(lo, hi);
+    return shared;
+}
+
+std::shared_ptr<const WallColouring> sharedWallColouring(const WellGeometry& well,
+                                                         const ColourRequest& shared,
+                                                         const ColourLegend& own, std::size_t wells,
+                                                         const SectionValues* values) {
+    auto colouring = makeWallColouring(well, shared, values);
+    ColourLegend legend = colouring->legend();
+    legend.range = own.range + ", over all " + std::to_string(wells) + " wells";
+    return std::make_shared<const WallColouring>(colouring->withLegend(std::move(legend)));
+}
+
 std::vector<std::shared_ptr<const WallColouring>> wallColourings(
     const std::vector<std::shared_ptr<const WellGeometry>>& wells, const ColourRequest& request,
     const std::vector<const SectionValues*>& values) {
     auto valuesOf = [&values](std::size_t w) { return w < values.size() ? values[w] : nullptr; };
     std::vector<std::shared_ptr<const WallColouring>> out;
-    for (std::size_t w = 0; w < wells.size(); ++w)
-        out.push_back(makeWallColouring(*wells[w], request, valuesOf(w)));
-    if (out.size() < 2 || request.range || out.front()->legend().kind != ColourMapKind::Sequential)
-        return out;
-    double lo = out.front()->legend().lo, hi = out.front()->legend().hi;
-    for (const auto& colouring : out) {
-        lo = std::min(lo, colouring->legend().lo);
-        hi = std::max(hi, colouring->legend().hi);
-    }
-    ColourRequest shared = request;
-    shared.range = std::make_pair(lo, hi);
+    std::vector<ColourLegend> own;
     for (std::size_t w = 0; w < wells.size(); ++w) {
-        auto colouring = makeWallColouring(*wells[w], shared, valuesOf(w));
-        ColourLegend legend = colouring->legend();
-        legend.range =
-            out[w]->legend().range + ", over all " + std::to_string(wells.size()) + " wells";
-        out[w] = std::make_shared<const WallColouring>(colouring->withLegend(std::move(legend)));
+        out.push_back(makeWallColouring(*wells[w], request, valuesOf(w)));
+        own.push_back(out.back()->legend());
     }
+    const std::optional<ColourRequest> shared = sharedColourRequest(own, request);
+    if (!shared) return out;
+    for (std::size_t w = 0; w < wells.size(); ++w)
+        out[w] = sharedWallColouring(*wells[w], *shared, own[w], wells.size(), valuesOf(w));
     return out;
 }
 

@@ -68,6 +68,18 @@ std::vector<std::shared_ptr<const WallColouring>> wallColourings(
     const std::vector<std::shared_ptr<const WellGeometry>>& wells, const ColourRequest& request,
     const std::vector<const SectionValues*>& values = {});
 
+// The two steps of wallColourings, for a caller that holds one well at a time (a field held
+// lean, app/scene_assembly.cpp): from each well's own colouring's legend, the request every
+// well is then coloured with (their ranges' union, for a sequential quantity whose range comes
+// from the data; nullopt: each keeps its own colouring); and one well's colouring under it,
+// its legend's range saying it spans all `wells` wells.
+std::optional<ColourRequest> sharedColourRequest(const std::vector<ColourLegend>& own,
+                                                 const ColourRequest& request);
+std::shared_ptr<const WallColouring> sharedWallColouring(const WellGeometry& well,
+                                                         const ColourRequest& shared,
+                                                         const ColourLegend& own, std::size_t wells,
+                                                         const SectionValues* values = nullptr);
+
 // The report's classes, from the Okabe-Ito palette (told apart with any colour vision).
 std::uint32_t classColour(BoreholeClass c);
 

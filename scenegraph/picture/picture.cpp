@@ -118,9 +118,13 @@ std::size_t refineForView(const std::vector<PictureWell>& wells, const glm::vec3
     std::size_t refined = 0;
     for (const PictureWell& picture : wells) {
         WellScene& well = *picture.scene;
-        const reconstruction::WellGeometry& geometry = *picture.geometry;
         well.setLodView(view);
         const std::vector<DetailRequest> wanted = well.wantedDetail(eye);
+        if (wanted.empty()) continue;
+        // A well held lean is read again for its finer levels, and let go after.
+        const std::shared_ptr<const reconstruction::WellGeometry> whole =
+            picture.rows ? picture.rows() : picture.geometry;
+        const reconstruction::WellGeometry& geometry = *whole;
         std::vector<reconstruction::SegmentMesh> meshes(wanted.size());
         // Meshes on two threads (they read the immutable geometry only); nodes on this one.
         auto build = [&](std::size_t from) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -30,6 +31,9 @@ class WellScene;
 struct PictureWell {
     std::shared_ptr<const reconstruction::WellGeometry> geometry;
     std::shared_ptr<WellScene> scene;
+    // A well held lean (`geometry` sampled: WellGeometry::sampled): reads its rows again, as
+    // drawn, when the camera wants finer levels of it. Null: `geometry` holds every row.
+    std::function<std::shared_ptr<const reconstruction::WellGeometry>()> rows{};
 };
 
 // Scenes for `geometries`, every segment's coarse levels built here (main thread).

@@ -1,6 +1,8 @@
 #include "app/scene_assembly.h"
 
+#include <cstring>
 #include <fstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -10,6 +12,8 @@
 #include "reconstruction/mesh/lod_levels.h"
 #include "reconstruction/synthetic/synthetic_well.h"
 #include "scenegraph/main_thread.h"
+#include "scenegraph/picture/picture.h"
+#include "scenegraph/picture_scale.h"
 #include "test_support.h"
 
 using namespace caliper3d;
@@ -148,4 +152,83 @@ TEST(SceneAssemblyTest, AFieldPictureHoldsOnlyItsCoarsestSegmentLevelUpFront) {
             EXPECT_EQ(usual.scenes[w]->heldFrom(s), reconstruction::kFirstCoarseLevel);
             EXPECT_EQ(field.scenes[w]->heldFrom(s), reconstruction::kFieldFirstCoarseLevel);
         }
+}
+
+// A field held lean (FieldRows) keeps a sample of each well's rows and reads the well again to
+// build its nodes and its finer levels: its scene and its picture are the field held whole's.
+TEST(SceneAssemblyTest, AFieldHeldLeanDrawsWhatTheFieldHeldWholeDraws) {
+    scenegraph::initCoin();
+    const auto log = test::scratch("assembly_lean_field.txt");
+    io::writeColumnTextFile(log.string(),
+                            reconstruction::makeSyntheticWell(
+                                reconstruction::syntheticProfile("example", 1000.0, 0.05)));
+    std::vector<app::WellSource> wells;
+    for (const double east : {0.0, 30.0, 60.0})
+        wells.push_back({log.string(), {}, reconstruction::Wellhead{east, 0.0, 0.0}, {}});
+    // As render plans a picture 480 pixels high: the exaggeration chosen over the wells given.
+    const app::ScenePlan plan = [](auto& geometries, double& exaggeration) {
+        exaggeration = scenegraph::chooseExaggeration(geometries, 0.0, 1.0e300, 480);
+    };
+    const app::AssembledScene whole =
+        app::assembleScene(wells, {}, plan, reconstruction::kFieldFirstCoarseLevel);
+    // Lean from the first well on: the budget is below one well's rows.
+    const app::AssembledScene lean = app::assembleScene(
+        wells, {}, plan, reconstruction::kFieldFirstCoarseLevel, app::FieldRows{1000, false});
+    ASSERT_EQ(whole.wells, 3);
+    ASSERT_EQ(lean.wells, 3);
+    ASSERT_NE(whole.legend(), nullptr);
+    ASSERT_NE(lean.legend(), nullptr);
+    EXPECT_EQ(lean.legend()->range, whole.legend()->range);
+    EXPECT_EQ(lean.legend()->lo, whole.legend()->lo);
+    EXPECT_EQ(lean.legend()->hi, whole.legend()->hi);
+    const std::size_t rows = whole.geometries.front()->table().rowCount();
+    ASSERT_EQ(rows, 20001u);
+    for (std::size_t w = 0; w < 3; ++w) {
+        SCOPED_TRACE("well " + std::to_string(w));
+        EXPECT_FALSE(whole.rows[w]);
+        ASSERT_TRUE(lean.rows[w]);
+        // A sample: the first and last rows, every fourth between.
+        const reconstruction::WellGeometry& sample = *lean.geometries[w];
+        EXPECT_EQ(sample.table().rowCount(), 5001u);
+        EXPECT_EQ(sample.table().depth_m.back(), whole.geometries[w]->table().depth_m.back());
+        EXPECT_EQ(sample.options().radialExaggeration,
+                  whole.geometries[w]->options().radialExaggeration);
+        // Read again, the well is the one held whole, coloured the same.
+        const auto again = lean.rows[w]();
+        ASSERT_EQ(again->table().rowCount(), rows);
+        EXPECT_EQ(again->options().radialExaggeration,
+                  whole.geometries[w]->options().radialExaggeration);
+        ASSERT_TRUE(again->options().colouring);
+        EXPECT_EQ(again->options().colouring->legend().range, whole.legend()->range);
+        EXPECT_EQ(again->path().back().north, whole.geometries[w]->path().back().north);
+        EXPECT_EQ(lean.scenes[w]->segmentCount(), whole.scenes[w]->segmentCount());
+        EXPECT_EQ(lean.scenes[w]->fullDetailTriangles(), whole.scenes[w]->fullDetailTriangles());
+    }
+    // The same pictures, pixel for pixel: of the whole field, from above, and from inside the
+    // first well (whose finer levels are built from its rows read again).
+    for (int view = 0; view < 3; ++view) {
+        scenegraph::PictureRequest request;
+        request.width = 640;
+        request.height = 480;
+        request.view = view == 0 ? scenegraph::ViewDirection::Iso : scenegraph::ViewDirection::Map;
+        if (view == 2) {
+            request.pose = scenegraph::downHolePose(*whole.geometries.front(), 100.0);
+            request.tickMarks = false;
+        }
+        request.unloggedPath = view < 2;
+        request.radialExaggeration = whole.geometries.front()->options().radialExaggeration;
+        request.legend = whole.legend();
+        scenegraph::Picture a, b;
+        try {
+            a = scenegraph::drawPicture(whole.pictureWells(), request);
+            request.legend = lean.legend();
+            b = scenegraph::drawPicture(lean.pictureWells(), request);
+        } catch (const std::runtime_error& e) {
+            GTEST_SKIP() << e.what();
+        }
+        EXPECT_EQ(b.refinedSegments, a.refinedSegments);
+        if (view == 2) EXPECT_GT(a.refinedSegments, 0u);
+        ASSERT_EQ(a.image.rgba.size(), b.image.rgba.size());
+        EXPECT_TRUE(a.image.rgba == b.image.rgba) << "view " << view;
+    }
 }

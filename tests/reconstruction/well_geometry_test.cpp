@@ -231,3 +231,54 @@ TEST(WellGeometryTest, ACancelStopsThePathAndFramesWithGeometryCancelled) {
     cancel = false;
     EXPECT_EQ(WellGeometry(circleWell(20.0, 0.01), options).path().size(), 2001u);
 }
+
+// A well held by a sample of its rows: every k-th row, the first and the last, each exactly
+// where, how oriented and whether measured as in the whole well; a small well whole.
+TEST(WellGeometryTest, ASampleKeepsItsRowsPlacedExactlyAsTheWholeWell) {
+    auto table = std::make_shared<caliper3d::io::SectionTable>(
+        makeSyntheticWell(syntheticProfile("example", 300.0, 0.01)));
+    // A stretch without data, which the sample must say too.
+    for (std::size_t row = 10000; row < 12000; ++row)
+        for (int a = 0; a < table->armCount; ++a) table->radii(row)[a] = caliper3d::io::kNaN;
+    const WellGeometry whole(table, GeometryOptions{});
+    const std::size_t rows = whole.table().rowCount();
+    ASSERT_EQ(rows, 30001u);
+    const WellGeometry sample = whole.sampled(1000);
+    const std::size_t stride = 30;                // 30001 / 1000
+    ASSERT_EQ(sample.table().rowCount(), 1001u);  // rows 0, 30, ... 30000 (the last)
+    EXPECT_EQ(sample.table().depth_m.back(), whole.table().depth_m.back());
+    EXPECT_EQ(sample.table().armCount, whole.table().armCount);
+    EXPECT_EQ(sample.table().source, whole.table().source);
+    std::size_t measured = 0;
+    for (std::size_t k = 0; k < sample.table().rowCount(); ++k) {
+        const std::size_t row = std::min(k * stride, rows - 1);
+        EXPECT_EQ(sample.table().depth_m[k], whole.table().depth_m[row]) << k;
+        EXPECT_EQ(sample.path()[k].north, whole.path()[row].north) << k;
+        EXPECT_EQ(sample.path()[k].east, whole.path()[row].east) << k;
+        EXPECT_EQ(sample.path()[k].tvd, whole.path()[row].tvd) << k;
+        EXPECT_EQ(sample.path()[k].inc_deg, whole.path()[row].inc_deg) << k;
+        EXPECT_EQ(sample.orientation(k), whole.orientation(row)) << k;
+        EXPECT_EQ(sample.measured(k), whole.measured(row)) << k;
+        for (int a = 0; a < whole.table().armCount; ++a) {
+            const double r = whole.table().radii(row)[a];
+            if (std::isnan(r))
+                EXPECT_TRUE(std::isnan(sample.table().radii(k)[a]));
+            else
+                EXPECT_EQ(sample.table().radii(k)[a], r);
+        }
+        measured += sample.measured(k) ? 1 : 0;
+    }
+    EXPECT_EQ(sample.measuredRows(), measured);
+    EXPECT_LT(measured, sample.table().rowCount());  // the stretch without data is sampled too
+    // Its segments cover the sample as a well's do; its colouring is not carried.
+    EXPECT_EQ(sample.segmentRows(0).first, 0u);
+    EXPECT_EQ(sample.segmentRows(sample.segmentCount() - 1).second, sample.table().rowCount() - 1);
+    EXPECT_FALSE(sample.options().colouring);
+    // Where the stride does not reach the last row, the last row ends the sample all the same.
+    const WellGeometry seven = whole.sampled(7);  // rows 0, 4285, ... 29995, then 30000
+    ASSERT_EQ(seven.table().rowCount(), 9u);
+    EXPECT_EQ(seven.table().depth_m[7], whole.table().depth_m[29995]);
+    EXPECT_EQ(seven.path().back().tvd, whole.path().back().tvd);
+    // A well of no more rows than asked is kept whole.
+    EXPECT_EQ(whole.sampled(rows).table().rowCount(), rows);
+}
