@@ -152,6 +152,29 @@ bool joins(const ScreenSegment& leader, glm::vec2 head, const ScreenBox& box) {
            distanceToBox(leader.b, box) < 1.5f;
 }
 
+// `wells` (of `field`) drawn from `view` as render draws them, written to
+// $FIELD_PICTURE_DUMP/NAME.png when set; without a root when no offscreen context could be
+// made (the failure said).
+Picture drawField(const std::vector<PictureWell>& wells, const Geometries& field,
+                  ViewDirection view, int width, int height, const std::string& name) {
+    PictureRequest request;
+    request.width = width;
+    request.height = height;
+    request.view = view;
+    request.unloggedPath = true;
+    request.radialExaggeration = field.front()->options().radialExaggeration;
+    Picture picture;
+    try {
+        picture = drawPicture(wells, request);
+    } catch (const std::runtime_error& e) {
+        ADD_FAILURE() << e.what();
+        return picture;
+    }
+    if (const char* dump = std::getenv("FIELD_PICTURE_DUMP"))
+        writePng(picture.image, std::string(dump) + "/" + name + ".png");
+    return picture;
+}
+
 class FieldPictureTest : public CoinTest {};
 
 TEST_F(FieldPictureTest, NoTwoLabelsOfAFieldOverlapInAnyView) {
@@ -161,21 +184,9 @@ TEST_F(FieldPictureTest, NoTwoLabelsOfAFieldOverlapInAnyView) {
     for (const ViewDirection view :
          {ViewDirection::Iso, ViewDirection::North, ViewDirection::East, ViewDirection::Top}) {
         SCOPED_TRACE("view " + std::to_string(int(view)));
-        PictureRequest request;
-        request.width = width;
-        request.height = height;
-        request.view = view;
-        request.unloggedPath = true;
-        request.radialExaggeration = field.front()->options().radialExaggeration;
-        Picture picture;
-        try {
-            picture = drawPicture(wells, request);
-        } catch (const std::runtime_error& e) {
-            FAIL() << e.what();
-        }
-        if (const char* dump = std::getenv("FIELD_PICTURE_DUMP"))
-            writePng(picture.image,
-                     std::string(dump) + "/view" + std::to_string(int(view)) + ".png");
+        const Picture picture =
+            drawField(wells, field, view, width, height, "view" + std::to_string(int(view)));
+        ASSERT_NE(picture.root.get(), nullptr);
         const SoCamera* camera = findCamera(picture.root.get());
         ASSERT_NE(camera, nullptr);
         const std::vector<DrawnLabel> labels =
@@ -216,20 +227,8 @@ TEST_F(FieldPictureTest, AMapNamesEveryWellBesideItsWellhead) {
     const Geometries field = syntheticField(16, 300.0, 0.5);
     const std::vector<PictureWell> wells = pictureWells(field);
     const int width = 1024, height = 768;
-    PictureRequest request;
-    request.width = width;
-    request.height = height;
-    request.view = ViewDirection::Map;
-    request.unloggedPath = true;
-    request.radialExaggeration = field.front()->options().radialExaggeration;
-    Picture picture;
-    try {
-        picture = drawPicture(wells, request);
-    } catch (const std::runtime_error& e) {
-        FAIL() << e.what();
-    }
-    if (const char* dump = std::getenv("FIELD_PICTURE_DUMP"))
-        writePng(picture.image, std::string(dump) + "/map.png");
+    const Picture picture = drawField(wells, field, ViewDirection::Map, width, height, "map");
+    ASSERT_NE(picture.root.get(), nullptr);
     const SoCamera* camera = findCamera(picture.root.get());
     ASSERT_NE(camera, nullptr);
     // Looking straight down, north up the picture.
@@ -284,20 +283,8 @@ TEST_F(FieldPictureTest, APadSeenFromAboveNamesEveryWellWithLeadersThatCrossNoth
     const Geometries field = syntheticField(8, 300.0, 0.5, 5.0);
     const std::vector<PictureWell> wells = pictureWells(field);
     const int width = 800, height = 600;
-    PictureRequest request;
-    request.width = width;
-    request.height = height;
-    request.view = ViewDirection::Map;
-    request.unloggedPath = true;
-    request.radialExaggeration = field.front()->options().radialExaggeration;
-    Picture picture;
-    try {
-        picture = drawPicture(wells, request);
-    } catch (const std::runtime_error& e) {
-        FAIL() << e.what();
-    }
-    if (const char* dump = std::getenv("FIELD_PICTURE_DUMP"))
-        writePng(picture.image, std::string(dump) + "/pad.png");
+    const Picture picture = drawField(wells, field, ViewDirection::Map, width, height, "pad");
+    ASSERT_NE(picture.root.get(), nullptr);
     const SoCamera* camera = findCamera(picture.root.get());
     ASSERT_NE(camera, nullptr);
     const std::vector<glm::vec2> heads = projectedWellheads(field, *camera, width, height);
