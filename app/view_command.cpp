@@ -1,3 +1,4 @@
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -7,6 +8,10 @@
 
 #include <QApplication>
 #include <QTimer>
+
+#include <Inventor/actions/SoGLRenderAction.h>
+#include <Inventor/nodes/SoCallback.h>
+#include <Inventor/nodes/SoSeparator.h>
 
 #include "app/batch_manifest.h"
 #include "app/commands.h"
@@ -27,6 +32,7 @@
 #include "scenegraph/offscreen_renderer.h"
 #include "scenegraph/picture/picture.h"
 #include "scenegraph/picture/png_file.h"
+#include "scenegraph/render_stats.h"
 #include "scenegraph/well_scene.h"
 
 namespace caliper3d::app {
@@ -39,14 +45,75 @@ struct WellToOpen {
     LoadOptions options;
 };
 
+// view --stats: when the window first drew a frame with a well in it and when every well was
+// loaded, from the start of the verb, and the peak memory; printed on one line once both are
+// known, then the window closes (a benchmark's run). The frame is caught by a callback node
+// at the end of the scene, traversed by every render of the viewer.
+class WindowTimings {
+public:
+    WindowTimings(const WellSession& session, std::chrono::steady_clock::time_point start)
+        : m_session(session), m_start(start) {}
+
+    // Hangs the callback at the end of `root` (after the wells it shows are opened).
+    void watch(SoSeparator* root) {
+        auto* probe = new SoCallback;
+        probe->setCallback(&WindowTimings::traversed, this);
+        root->addChild(probe);
+    }
+    void loaded() {
+        if (!m_complete_ms) m_complete_ms = msSinceStart();
+        reportWhenKnown();
+    }
+
+private:
+    static void traversed(void* self, SoAction* action) {
+        if (action->isOfType(SoGLRenderAction::getClassTypeId()))
+            static_cast<WindowTimings*>(self)->drawn();
+    }
+    void drawn() {
+        if (m_firstPicture_ms) return;
+        for (std::size_t i = 0; i < m_session.wellCount(); ++i)
+            if (const scenegraph::WellScene* scene = m_session.scene(i);
+                scene && scene->segmentCount() > 0) {
+                m_firstPicture_ms = msSinceStart();
+                // Not from inside the render: once it has ended.
+                QTimer::singleShot(0, [this] { reportWhenKnown(); });
+                return;
+            }
+    }
+    void reportWhenKnown() {
+        if (!m_firstPicture_ms || !m_complete_ms || m_reported) return;
+        m_reported = true;
+        std::printf("first_picture_ms=%.0f complete_ms=%.0f rss_mb=%.0f\n", *m_firstPicture_ms,
+                    *m_complete_ms, scenegraph::peakRss_mb());
+        std::fflush(stdout);
+        QTimer::singleShot(0, [] { QApplication::quit(); });
+    }
+    double msSinceStart() const {
+        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - m_start)
+            .count();
+    }
+
+    const WellSession& m_session;
+    std::chrono::steady_clock::time_point m_start;
+    std::optional<double> m_firstPicture_ms, m_complete_ms;
+    bool m_reported = false;
+};
+
 int showWindow(int argc, char** argv, const std::vector<WellToOpen>& wells,
                std::optional<double> at_m = std::nullopt, bool exaggerationGiven = false,
-               int status = kExitOk, bool runs = false) {
+               int status = kExitOk, bool runs = false,
+               std::optional<std::chrono::steady_clock::time_point> statsFrom = std::nullopt) {
     QApplication application(argc, argv);
     initGui();
     MainWindow window;
     window.show();
     WellSession& session = window.session();
+    std::optional<WindowTimings> timings;
+    if (statsFrom) {
+        timings.emplace(session, *statsFrom);
+        QObject::connect(&session, &WellSession::allWellsLoaded, [&timings] { timings->loaded(); });
+    }
     if (exaggerationGiven) session.keepExaggeration();
     QObject::connect(&session, &WellSession::wellFailed,
                      [&](const QString&, const QString& message) {
@@ -64,6 +131,7 @@ int showWindow(int argc, char** argv, const std::vector<WellToOpen>& wells,
         else
             session.addWell(wells[i].source, wells[i].options);
     }
+    if (timings) timings->watch(session.sceneRoot());
     // The first frame can stay black until something changes: redraw once shown.
     QTimer::singleShot(100, &window, [&window] { window.update(); });
     const int rc = application.exec();
@@ -95,6 +163,7 @@ LoadOptions exampleOptions() {
 }  // namespace
 
 int runView(int argc, char** argv, const QStringList& args) {
+    const auto start = std::chrono::steady_clock::now();
     return guardedVerb("view", [&]() -> int {
         VerbParser verb("view", "FILE... | --manifest MANIFEST [FILE...]",
                         "Open wells in the 3D viewer: the FILEs, and every row of a batch\n"
@@ -115,6 +184,11 @@ int runView(int argc, char** argv, const QStringList& args) {
                                  "A batch manifest (CSV or JSON, docs/formats.md): open the well "
                                  "of every row, after the FILEs.",
                                  "MANIFEST"});
+        verb.parser().addOption(
+            {"stats",
+             "For benchmarks: print one line, first_picture_ms (the first frame drawn with a "
+             "well in it) complete_ms (every well loaded), both from the start, and rss_mb "
+             "(peak), then close the window."});
         if (!verb.parse(args, 0)) return kExitOk;
         if (verb.positional().empty() && !verb.isSet("manifest"))
             throw UsageError("caliper3d view: give FILE... or --manifest MANIFEST");
@@ -181,7 +255,9 @@ int runView(int argc, char** argv, const QStringList& args) {
                 "caliper3d view: no display; use 'caliper3d render' or 'caliper3d export'\n");
             return kExitUsage;
         }
-        return showWindow(argc, argv, wells, at, verb.isSet("exaggerate"), status, runs);
+        std::optional<std::chrono::steady_clock::time_point> statsFrom;
+        if (verb.isSet("stats")) statsFrom = start;
+        return showWindow(argc, argv, wells, at, verb.isSet("exaggerate"), status, runs, statsFrom);
     });
 }
 

@@ -1,6 +1,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -354,4 +355,27 @@ TEST(CommandLineTest, SynthFieldNamesEveryWell) {
                   std::string::npos)
             << info.output;
     }
+}
+
+// view --stats, for benchmarks: the window opens the wells, draws them, loads them, says when
+// and how much memory it took, and closes itself.
+TEST(CommandLineTest, ViewStatsTimesTheFirstPictureAndTheLoadThenCloses) {
+    if (!std::getenv("DISPLAY")) GTEST_SKIP() << "no display (run under xvfb-run)";
+    const auto folder = caliper3d::test::scratch("view_stats");
+    std::filesystem::remove_all(folder);
+    ASSERT_EQ(run("synth --field 2 -o " + folder.string() + "/ --length 100 --step 0.1").status, 0);
+    const CommandRun r = run("view --stats " + (folder / "well-000.las").string() + " " +
+                             (folder / "well-001.las").string());
+    EXPECT_EQ(r.status, 0) << r.output;
+    const auto line = r.output.find("first_picture_ms=");
+    ASSERT_NE(line, std::string::npos) << r.output;
+    double first = -1.0, complete = -1.0, rss = -1.0;
+    ASSERT_EQ(
+        std::sscanf(r.output.c_str() + line, "first_picture_ms=%lf complete_ms=%lf rss_mb=%lf",
+                    &first, &complete, &rss),
+        3)
+        << r.output;
+    EXPECT_GT(first, 0.0);
+    EXPECT_GT(complete, 0.0);
+    EXPECT_GT(rss, 1.0);
 }
