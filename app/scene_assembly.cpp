@@ -9,6 +9,7 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <stdexcept>
 #include <thread>
 #include <tuple>
 #include <utility>
@@ -101,6 +102,7 @@ struct Loaded {
     // A field held lean (FieldRows): the geometries are samples, but where kept whole; each
     // well's own colouring's legend, taken while it held every row.
     bool lean = false;
+    std::exception_ptr colourError;  // why a well could not be coloured as asked
     std::vector<char> whole;
     std::vector<reconstruction::ColourLegend> legends;
 };
@@ -133,6 +135,16 @@ void takeOne(const std::vector<WellSource>& wells, std::size_t w, LoadSlot& slot
     slot = LoadSlot{};
 }
 
+// Every well loaded fails for one reason (a colouring they share cannot be made): said once on
+// stderr and on each well's line; none is drawn.
+void failWells(Loaded& loaded, const std::exception& e, AssembledScene& out) {
+    out.failures += static_cast<int>(loaded.geometries.size());
+    std::fprintf(stderr, "caliper3d: %s\n", e.what());
+    for (const std::size_t input : loaded.inputs)
+        out.inputs[input].error = inputErrorFrom(e, out.inputs[input].file);
+    loaded.geometries.clear();
+}
+
 // Each well's line of out.inputs, in order (takeOne).
 Loaded takeLoaded(const std::vector<WellSource>& wells, std::vector<LoadSlot> loads,
                   AssembledScene& out) {
@@ -159,8 +171,14 @@ Loaded loadLean(const std::vector<WellSource>& wells, const LoadOptions& options
     const int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     std::size_t held = 0;
     const auto sample = [&](std::size_t k) {
-        kept.legends[k] =
-            reconstruction::makeWallColouring(*kept.geometries[k], options.colour)->legend();
+        if (kept.colourError) return;  // the field fails as a whole (failWells)
+        try {
+            kept.legends[k] =
+                reconstruction::makeWallColouring(*kept.geometries[k], options.colour)->legend();
+        } catch (const std::invalid_argument&) {
+            kept.colourError = std::current_exception();
+            return;
+        }
         if (rows.keepFirstWhole && kept.sources[k] == 0) return;
         kept.whole[k] = 0;
         kept.geometries[k] = std::make_shared<const reconstruction::WellGeometry>(
@@ -355,7 +373,13 @@ AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOpt
     Loaded wellsLoaded = mayHoldLean ? loadLean(wells, options, origin, rows, out)
                                      : takeLoaded(wells, loadAll(wells, options, origin), out);
     if (wellsLoaded.lean) {
-        buildLean(wells, options, origin, plan, firstCoarseLevel, wellsLoaded, out);
+        try {
+            if (wellsLoaded.colourError) std::rethrow_exception(wellsLoaded.colourError);
+            buildLean(wells, options, origin, plan, firstCoarseLevel, wellsLoaded, out);
+        } catch (const std::invalid_argument& e) {
+            if (!wellsLoaded.colourError) throw;
+            failWells(wellsLoaded, e, out);
+        }
         out.load_ms =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                 .count();
@@ -369,13 +393,7 @@ AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOpt
     const auto& picks = wellsLoaded.picks;
     double exaggeration = options.radialExaggeration;
     // A well that cannot be coloured as asked fails them all: they share one legend.
-    const auto failAll = [&](const std::exception& e) {
-        out.failures += static_cast<int>(loaded.size());
-        std::fprintf(stderr, "caliper3d: %s\n", e.what());
-        for (const std::size_t input : loadedInput)
-            out.inputs[input].error = inputErrorFrom(e, out.inputs[input].file);
-        loaded.clear();
-    };
+    const auto failAll = [&](const std::exception& e) { failWells(wellsLoaded, e, out); };
     // Colour by change: each whole log against the other run, before a plan cuts an interval
     // out of it (the depth match wants the whole overlap).
     std::vector<reconstruction::RunChange> changes;

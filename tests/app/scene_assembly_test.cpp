@@ -232,3 +232,32 @@ TEST(SceneAssemblyTest, AFieldHeldLeanDrawsWhatTheFieldHeldWholeDraws) {
         EXPECT_TRUE(a.image.rgba == b.image.rgba) << "view " << view;
     }
 }
+
+// A colouring the wells cannot have fails every well of a field held lean as it fails a field
+// held whole: each well's line says why, and none is drawn.
+TEST(SceneAssemblyTest, AColouringAFieldCannotHaveFailsItsWellsHeldLeanOrWhole) {
+    scenegraph::initCoin();
+    const auto log = test::scratch("assembly_lean_colour.txt");
+    io::writeColumnTextFile(log.string(),
+                            reconstruction::makeSyntheticWell(
+                                reconstruction::syntheticProfile("example", 200.0, 0.05)));
+    std::vector<app::WellSource> wells;
+    for (const double east : {0.0, 30.0, 60.0})
+        wells.push_back({log.string(), {}, reconstruction::Wellhead{east, 0.0, 0.0}, {}});
+    app::LoadOptions options;
+    options.colour.quantity = "no-such-curve";
+    for (const std::size_t budget : {std::size_t{0}, std::size_t{1000}}) {
+        SCOPED_TRACE("budget " + std::to_string(budget));
+        const app::AssembledScene scene = app::assembleScene(
+            wells, options, {}, reconstruction::kFieldFirstCoarseLevel, app::FieldRows{budget});
+        EXPECT_EQ(scene.wells, 0);
+        EXPECT_EQ(scene.failures, 3);
+        ASSERT_EQ(scene.inputs.size(), 3u);
+        for (const app::InputSummary& input : scene.inputs) {
+            ASSERT_TRUE(input.error);
+            EXPECT_NE(input.error->reason.find("cannot colour by 'no-such-curve'"),
+                      std::string::npos)
+                << input.error->reason;
+        }
+    }
+}
