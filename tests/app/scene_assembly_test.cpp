@@ -154,17 +154,25 @@ TEST(SceneAssemblyTest, AFieldPictureHoldsOnlyItsCoarsestSegmentLevelUpFront) {
         }
 }
 
+// Three wells 30 m apart, each the "example" log `length_m` long every 0.05 m, written to
+// `name` in the scratch folder.
+std::vector<app::WellSource> threeWellsOfOneLog(const std::string& name, double length_m) {
+    const auto log = test::scratch(name);
+    io::writeColumnTextFile(log.string(),
+                            reconstruction::makeSyntheticWell(
+                                reconstruction::syntheticProfile("example", length_m, 0.05)));
+    std::vector<app::WellSource> wells;
+    for (const double east : {0.0, 30.0, 60.0})
+        wells.push_back({log.string(), {}, reconstruction::Wellhead{east, 0.0, 0.0}, {}});
+    return wells;
+}
+
 // A field held lean (FieldRows) keeps a sample of each well's rows and reads the well again to
 // build its nodes and its finer levels: its scene and its picture are the field held whole's.
 TEST(SceneAssemblyTest, AFieldHeldLeanDrawsWhatTheFieldHeldWholeDraws) {
     scenegraph::initCoin();
-    const auto log = test::scratch("assembly_lean_field.txt");
-    io::writeColumnTextFile(log.string(),
-                            reconstruction::makeSyntheticWell(
-                                reconstruction::syntheticProfile("example", 1000.0, 0.05)));
-    std::vector<app::WellSource> wells;
-    for (const double east : {0.0, 30.0, 60.0})
-        wells.push_back({log.string(), {}, reconstruction::Wellhead{east, 0.0, 0.0}, {}});
+    const std::vector<app::WellSource> wells =
+        threeWellsOfOneLog("assembly_lean_field.txt", 1000.0);
     // As render plans a picture 480 pixels high: the exaggeration chosen over the wells given.
     const app::ScenePlan plan = [](auto& geometries, double& exaggeration) {
         exaggeration = scenegraph::chooseExaggeration(geometries, 0.0, 1.0e300, 480);
@@ -227,7 +235,9 @@ TEST(SceneAssemblyTest, AFieldHeldLeanDrawsWhatTheFieldHeldWholeDraws) {
             GTEST_SKIP() << e.what();
         }
         EXPECT_EQ(b.refinedSegments, a.refinedSegments);
-        if (view == 2) EXPECT_GT(a.refinedSegments, 0u);
+        if (view == 2) {
+            EXPECT_GT(a.refinedSegments, 0u);
+        }
         ASSERT_EQ(a.image.rgba.size(), b.image.rgba.size());
         EXPECT_TRUE(a.image.rgba == b.image.rgba) << "view " << view;
     }
@@ -237,13 +247,8 @@ TEST(SceneAssemblyTest, AFieldHeldLeanDrawsWhatTheFieldHeldWholeDraws) {
 // held whole: each well's line says why, and none is drawn.
 TEST(SceneAssemblyTest, AColouringAFieldCannotHaveFailsItsWellsHeldLeanOrWhole) {
     scenegraph::initCoin();
-    const auto log = test::scratch("assembly_lean_colour.txt");
-    io::writeColumnTextFile(log.string(),
-                            reconstruction::makeSyntheticWell(
-                                reconstruction::syntheticProfile("example", 200.0, 0.05)));
-    std::vector<app::WellSource> wells;
-    for (const double east : {0.0, 30.0, 60.0})
-        wells.push_back({log.string(), {}, reconstruction::Wellhead{east, 0.0, 0.0}, {}});
+    const std::vector<app::WellSource> wells =
+        threeWellsOfOneLog("assembly_lean_colour.txt", 200.0);
     app::LoadOptions options;
     options.colour.quantity = "no-such-curve";
     for (const std::size_t budget : {std::size_t{0}, std::size_t{1000}}) {
