@@ -51,6 +51,9 @@ private:
 class BlockReader {
 public:
     BlockReader(TextSource& source, std::size_t blockBytes);
+    ~BlockReader();
+    BlockReader(const BlockReader&) = delete;
+    BlockReader& operator=(const BlockReader&) = delete;
     // The next run; valid until the following call.
     std::string_view next();
     bool done() const { return m_eof && m_begin == m_end; }

@@ -9,6 +9,7 @@
 
 #include "io/log_reader.h"
 #include "io/parse_error.h"
+#include "io/stream/text_source.h"
 
 using namespace caliper3d::io;
 
@@ -172,4 +173,44 @@ TEST(LogStreamTest, AnUpwardLogWhoseFirstTwoRowsGoDownIsStillSortedWhole) {
         warned = warned || w.message.find("log recorded upwards with 1 rows out of order") !=
                                std::string::npos;
     EXPECT_TRUE(warned);
+}
+
+namespace {
+// The runs a BlockReader hands out for `text`, checked to end at line ends but the last.
+std::string readInRuns(const std::string& text, std::size_t blockBytes, std::size_t& runs) {
+    MemorySource source(text);
+    BlockReader reader(source, blockBytes);
+    std::string out;
+    runs = 0;
+    while (!reader.done()) {
+        const std::string_view run = reader.next();
+        ++runs;
+        if (!reader.done()) {
+            EXPECT_EQ(run.back(), '\n') << "run " << runs;
+        }
+        out += run;
+    }
+    return out;
+}
+}  // namespace
+
+TEST(LogStreamTest, ABlockKeptForTheNextFileOnItsThreadReadsThatFileExactly) {
+    // One thread reads, in turn: a text of many blocks, a short one, one whose line is longer
+    // than a block (the block grows), and the first again. Each block is the last one's kept
+    // (text_source.cpp), so what a file leaves in it must never show in the next.
+    const std::string many = columnText(500);  // about 40 kB: ten blocks of 4 kB
+    const std::string shortText = "1000.0 1 2 3\n1000.5 1 2 3";
+    const std::string longLine = std::string(10000, '7') + "\n" + many.substr(0, 800);
+    std::thread reader([&] {
+        std::size_t runs = 0;
+        EXPECT_EQ(readInRuns(many, 4096, runs), many);
+        EXPECT_GE(runs, 9u);
+        EXPECT_EQ(readInRuns(shortText, 4096, runs), shortText);
+        EXPECT_EQ(runs, 1u);
+        EXPECT_EQ(readInRuns(longLine, 4096, runs), longLine);
+        EXPECT_EQ(readInRuns(many, 4096, runs), many);
+        EXPECT_GE(runs, 9u);
+        EXPECT_EQ(readInRuns(shortText, 4096, runs), shortText);
+    });
+    reader.join();
 }
