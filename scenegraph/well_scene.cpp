@@ -69,8 +69,13 @@ void WellScene::extendPath(const std::vector<glm::vec3>& points) {
         m_pathGroup->addChild(m_pathCoords);
         m_pathGroup->addChild(m_pathLine);
     }
-    int n = m_pathCoords->point.getNum();
-    for (const glm::vec3& p : points) m_pathCoords->point.set1Value(n++, p.x, p.y, p.z);
+    // Grown once for the stretch (set1Value a point at a time reallocated as it grew).
+    const int before = m_pathCoords->point.getNum();
+    const int n = before + static_cast<int>(points.size());
+    m_pathCoords->point.setNum(n);
+    SbVec3f* to = m_pathCoords->point.startEditing() + before;
+    for (const glm::vec3& p : points) (to++)->setValue(p.x, p.y, p.z);
+    m_pathCoords->point.finishEditing();
     m_pathLine->numVertices.setValue(n);
 }
 

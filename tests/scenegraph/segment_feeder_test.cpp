@@ -4,6 +4,7 @@
 #include <memory>
 #include <stdexcept>
 #include <thread>
+#include <variant>
 
 #include <Inventor/SoDB.h>
 #include <Inventor/sensors/SoSensorManager.h>
@@ -95,4 +96,54 @@ TEST_F(SegmentFeederTest, CancelledPipelineStopsEarly) {
         ASSERT_FALSE(std::holds_alternative<reconstruction::LoadFailed>(*event));
     }
     EXPECT_LT(segments, 40u);  // 400 m is 40 segments; cancelled long before the end
+}
+
+namespace {
+// Waits until `pipeline` has queued `count` events (it has sent them all), at most a minute.
+bool waitForQueued(reconstruction::WellLoadPipeline& pipeline, std::size_t count) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (pipeline.events().size() < count && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    return pipeline.events().size() == count;
+}
+}  // namespace
+
+TEST_F(SegmentFeederTest, ATickTakesBatchesUntilItsBudgetIsSpent) {
+    const auto load = [] {
+        return reconstruction::makeSyntheticWell(
+            reconstruction::syntheticProfile("example", 80.0, 0.1));
+    };
+    // Every event the load sends, counted on a first pipeline.
+    std::size_t events = 0;
+    {
+        reconstruction::WellLoadPipeline counted(load, tenMetreSegments());
+        counted.start();
+        for (bool end = false; !end;) {
+            const auto event = counted.events().waitPop();
+            ++events;
+            end = std::holds_alternative<reconstruction::LoadFinished>(*event) ||
+                  std::holds_alternative<reconstruction::LoadFailed>(*event);
+        }
+    }
+    ASSERT_GE(events, 11u);  // started, 8 segments, a span, finished
+
+    // No budget: a tick takes one batch, and no more.
+    reconstruction::WellLoadPipeline sparing(load, tenMetreSegments());
+    sparing.start();
+    ASSERT_TRUE(waitForQueued(sparing, events));
+    scenegraph::WellScene sparingScene;
+    scenegraph::SegmentFeeder sparingFeeder(sparing, sparingScene, {}, 2, 0.0);
+    EXPECT_FALSE(sparingFeeder.drainOnce());
+    EXPECT_EQ(sparing.events().size(), events - 2);
+
+    // A budget the tick cannot spend: one tick takes every batch, to the load's end.
+    reconstruction::WellLoadPipeline generous(load, tenMetreSegments());
+    generous.start();
+    ASSERT_TRUE(waitForQueued(generous, events));
+    scenegraph::WellScene generousScene;
+    scenegraph::SegmentFeeder generousFeeder(generous, generousScene, {}, 2, 600000.0);
+    EXPECT_TRUE(generousFeeder.drainOnce());
+    EXPECT_EQ(generousFeeder.attached(), 8u);
+    EXPECT_EQ(generous.events().size(), 0u);
+    EXPECT_EQ(generousScene.mergedSpans(), 1u);
 }
