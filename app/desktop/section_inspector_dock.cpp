@@ -119,7 +119,13 @@ SectionInspectorDock::SectionInspectorDock(DeskModel* model, QWidget* parent)
     m_layout->addWidget(m_numbers, 0);
     setWidget(body);
     connect(m_model, &DeskModel::currentChanged, this, &SectionInspectorDock::refresh);
-    connect(m_model, &DeskModel::wellChanged, this, &SectionInspectorDock::refresh);
+    // The current well's section, and its other run's: another well's change leaves them.
+    connect(m_model, &DeskModel::wellChanged, this, [this](int well) {
+        const int current = m_model->currentWell();
+        if (current < 0 || well == current) return refresh();
+        const std::vector<int> others = m_model->otherRuns(current);
+        if (std::find(others.begin(), others.end(), well) != others.end()) refresh();
+    });
     connect(m_model, &DeskModel::wellsChanged, this, &SectionInspectorDock::refresh);
     refresh();
 }

@@ -100,7 +100,10 @@ UnrolledImageDock::UnrolledImageDock(DeskModel* model, QWidget* parent)
     connect(m_reference, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
             [this](int) { drawImage(); });
     connect(m_model, &DeskModel::currentChanged, this, &UnrolledImageDock::refresh);
-    connect(m_model, &DeskModel::wellChanged, this, &UnrolledImageDock::refresh);
+    // The image is the current well's: another well's change (a field's progress) leaves it.
+    connect(m_model, &DeskModel::wellChanged, this, [this](int well) {
+        if (well == m_model->currentWell()) refresh();
+    });
     connect(m_model, &DeskModel::wellsChanged, this, &UnrolledImageDock::refresh);
     refresh();
 }

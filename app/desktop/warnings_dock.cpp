@@ -20,7 +20,9 @@ WarningsDock::WarningsDock(const DeskModel& model, QWidget* parent)
     m_list->setFont(QFontDatabase::systemFont(QFontDatabase::FixedFont));
     setWidget(m_list);
     connect(&model, &DeskModel::wellsChanged, this, &WarningsDock::refresh);
-    connect(&model, &DeskModel::wellChanged, this, &WarningsDock::refresh);
+    // A field's wells change often while they load (their progress): most leave the text as
+    // it was, and 100 wells' warnings written again for each was most of a field's load.
+    connect(&model, &DeskModel::wellChanged, this, &WarningsDock::refreshWell);
     refresh();
 }
 
@@ -28,14 +30,28 @@ QString WarningsDock::text() const {
     return m_list->toPlainText();
 }
 
+QString WarningsDock::wellText(int well) const {
+    const DeskWell& record = m_model.well(well);
+    QString text;
+    if (!record.error.isEmpty()) text += "error: " + record.error + "\n";
+    return text + QString::fromStdString(io::formatWarnings(record.diagnostics));
+}
+
+void WarningsDock::refreshWell(int well) {
+    if (well < 0 || static_cast<std::size_t>(well) >= m_texts.size() ||
+        m_texts.size() != static_cast<std::size_t>(m_model.wellCount()))
+        return refresh();
+    if (wellText(well) != m_texts[static_cast<std::size_t>(well)]) refresh();
+}
+
 void WarningsDock::refresh() {
     QString text;
     std::size_t count = 0;
+    m_texts.clear();
     for (int i = 0; i < m_model.wellCount(); ++i) {
-        const DeskWell& well = m_model.well(i);
-        if (!well.error.isEmpty()) text += "error: " + well.error + "\n";
-        text += QString::fromStdString(io::formatWarnings(well.diagnostics));
-        count += well.diagnostics.warningCount;
+        m_texts.push_back(wellText(i));
+        text += m_texts.back();
+        count += m_model.well(i).diagnostics.warningCount;
     }
     if (text.isEmpty()) text = m_model.wellCount() > 0 ? "No warnings." : "No well loaded.";
     m_list->setPlainText(text);

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <vector>
+
 #include <QDockWidget>
 
 class QPlainTextEdit;
@@ -19,9 +21,13 @@ public:
 
 private:
     void refresh();
+    // Well `well`'s part changed: the text is shown again only when that part's did.
+    void refreshWell(int well);
+    QString wellText(int well) const;
 
     const DeskModel& m_model;
     QPlainTextEdit* m_list = nullptr;
+    std::vector<QString> m_texts;  // each well's part of the text, as shown
 };
 
 }  // namespace caliper3d::app

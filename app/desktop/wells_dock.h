@@ -3,6 +3,7 @@
 #include <vector>
 
 #include <QDockWidget>
+#include <QTimer>
 
 class QTreeWidget;
 class QTreeWidgetItem;
@@ -34,6 +35,7 @@ signals:
 private:
     void rebuild();
     void refresh(int well);
+    void addColourChoice(int well);  // well `well`'s "Colour by" box, in its row
     void fill(QTreeWidgetItem* item, int well);
 
     int wellOf(const QTreeWidgetItem* item) const;
@@ -41,6 +43,7 @@ private:
     DeskModel& m_model;
     QTreeWidget* m_tree = nullptr;
     std::vector<QTreeWidgetItem*> m_items;  // by well
+    QTimer m_fit;  // the columns fitted to their texts, at most every kFit_ms while rows change
 };
 
 }  // namespace caliper3d::app

@@ -8,11 +8,13 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <QComboBox>
 #include <QSignalSpy>
 #include <QTreeWidget>
 #include <glm/geometric.hpp>
 
 #include "app/desktop/desk_model.h"
+#include "app/desktop/warnings_dock.h"
 #include "app/desktop/well_session.h"
 #include "app/desktop/wells_dock.h"
 #include "desktop_test_support.h"
@@ -135,6 +137,72 @@ TEST_F(ManifestWellsTest, TheWellsDockSaysHowFarEachLoadHasGot) {
     failed.error = "A.las line 3: expected a number";
     model.updateWell(0, failed);
     EXPECT_EQ(dock.tree()->topLevelItem(0)->text(app::WellsDock::State), "failed");
+}
+
+TEST_F(ManifestWellsTest, WellsAddedOneByOneGetTheirOwnRowsAndColourBoxes) {
+    // A field's wells come one at a time: each is one row more, at the end, whose "Colour by"
+    // box speaks for its own well; grouping two as runs of one well puts the run under it.
+    app::DeskModel model;
+    app::WellsDock dock(model);
+    QSignalSpy chosen(&dock, &app::WellsDock::colourChosen);
+    const QStringList names{"A", "B", "C"};
+    for (int i = 0; i < names.size(); ++i) {
+        app::DeskWell well;
+        well.name = names[i];
+        well.id = 10 + i;
+        model.addWell(well);
+        ASSERT_EQ(dock.tree()->topLevelItemCount(), i + 1);
+        for (int k = 0; k <= i; ++k) {
+            ASSERT_EQ(dock.tree()->topLevelItem(k), dock.item(k));
+            EXPECT_EQ(dock.item(k)->text(app::WellsDock::Name), names[k]);
+        }
+    }
+    for (int i = 0; i < names.size(); ++i) {
+        auto* box =
+            qobject_cast<QComboBox*>(dock.tree()->itemWidget(dock.item(i), app::WellsDock::Colour));
+        ASSERT_NE(box, nullptr) << i;
+        emit box->activated(0);
+        ASSERT_EQ(chosen.count(), i + 1);
+        EXPECT_EQ(chosen.back().at(0).toInt(), i);
+    }
+    model.setRunOf(0, 10);
+    model.setRunOf(2, 10);
+    EXPECT_EQ(dock.tree()->topLevelItemCount(), 2);
+    EXPECT_EQ(dock.item(2)->parent(), dock.item(0));
+    app::DeskWell later;
+    later.name = "D";
+    later.id = 13;
+    model.addWell(later);
+    EXPECT_EQ(dock.tree()->topLevelItemCount(), 3);
+    EXPECT_EQ(dock.tree()->topLevelItem(2), dock.item(3));
+    EXPECT_EQ(dock.item(2)->parent(), dock.item(0));
+}
+
+TEST_F(ManifestWellsTest, TheWarningsDockFollowsEachWellsWarningsAsTheyChange) {
+    app::DeskModel model;
+    app::WarningsDock dock(model);
+    EXPECT_EQ(dock.text(), "No well loaded.");
+    app::DeskWell a;
+    a.name = "A";
+    a.diagnostics.warn("A.las", 7, "a null value in DEVI");
+    model.addWell(a);
+    app::DeskWell b;
+    b.name = "B";
+    model.addWell(b);
+    EXPECT_NE(dock.text().indexOf("A.las:7"), -1) << dock.text().toStdString();
+    const QString before = dock.text();
+    // Progress leaves the text; a new warning of B's, or its failure, shows.
+    b.loadFraction = 0.5;
+    model.updateWell(1, b);
+    EXPECT_EQ(dock.text(), before);
+    b.diagnostics.warn("B.las", 12, "an arm past the tool's reach");
+    model.updateWell(1, b);
+    EXPECT_NE(dock.text().indexOf("A.las:7"), -1);
+    EXPECT_NE(dock.text().indexOf("B.las:12"), -1) << dock.text().toStdString();
+    b.error = "B.las line 40: expected a number";
+    model.updateWell(1, b);
+    EXPECT_NE(dock.text().indexOf("error: B.las line 40"), -1) << dock.text().toStdString();
+    EXPECT_TRUE(dock.windowTitle().startsWith("Warnings (2)")) << dock.windowTitle().toStdString();
 }
 
 TEST_F(ManifestWellsTest, CancelStopsAFieldStillLoading) {
