@@ -230,6 +230,7 @@ double typicalRadius_m(const reconstruction::WellGeometry& geometry, double top_
     const auto [first, last] = rowsIn(table.depth_m, top_m, bottom_m);
     const std::size_t stride = std::max<std::size_t>(1, (last - first) / kSampledRows);
     std::vector<double> radii;
+    radii.reserve(((last - first) / stride + 1) * static_cast<std::size_t>(table.armCount));
     for (std::size_t row = first; row < last; row += stride) {
         if (!geometry.measured(row)) continue;
         const double* r = table.radii(row);

@@ -72,10 +72,9 @@ glm::vec3 sideOf(const reconstruction::PathSample& at, const AnnotationView& vie
     return side;
 }
 
-double standOffOf(const reconstruction::WellGeometry& geometry, const AnnotationView& view,
-                  const Span& span) {
+// `radius`: the span's typical radius (typicalRadius_m), NaN for none.
+double standOffOf(double radius, const AnnotationView& view, const Span& span) {
     if (!view.tickMarks) return 0.0;
-    double radius = typicalRadius_m(geometry, span.top, span.bottom);
     if (!std::isfinite(radius)) radius = 0.0;
     return radius * view.radialExaggeration + kTickLength * (span.bottom - span.top);
 }
@@ -183,7 +182,8 @@ WellLabels wellLabels(const reconstruction::WellGeometry& geometry, const Annota
     WellLabels labels;
     if (geometry.table().rowCount() == 0) return labels;
     const Span span = annotatedSpan(geometry, view);
-    const double standOff = standOffOf(geometry, view, span);
+    const double radius = view.tickMarks ? typicalRadius_m(geometry, span.top, span.bottom) : 0.0;
+    const double standOff = standOffOf(radius, view, span);
     if (view.tickMarks) {
         const reconstruction::PathSample top = reconstruction::pathAt(geometry, span.top);
         WellName name;
@@ -191,7 +191,6 @@ WellLabels wellLabels(const reconstruction::WellGeometry& geometry, const Annota
         name.position = toScene(top.position);
         name.labelAt = name.position + sideOf(top, view) * static_cast<float>(standOff);
         name.wellhead = span.top <= 0.0;
-        const double radius = typicalRadius_m(geometry, span.top, span.bottom);
         name.drawnRadius_m =
             std::isfinite(radius) ? static_cast<float>(radius * view.radialExaggeration) : 0.0f;
         labels.name = name;
