@@ -2,12 +2,10 @@
 
 #include <algorithm>
 #include <chrono>
-#include <condition_variable>
 #include <cstdio>
 #include <exception>
 #include <functional>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <thread>
@@ -25,6 +23,7 @@
 #include "reconstruction/load/load_well.h"
 #include "reconstruction/mesh/lod_levels.h"
 #include "reconstruction/mesh/lod_tree.h"
+#include "reconstruction/parallel/built_ahead.h"
 #include "reconstruction/parallel/ordered_blocks.h"
 #include "reconstruction/well_geometry.h"
 #include "scenegraph/colour_legend.h"
@@ -229,75 +228,16 @@ struct WellReader {
 
 // Each well's drawn geometry and coarse meshes, built on a worker up to two wells ahead of
 // the main thread, which makes their nodes in order (Coin nodes are made on the main thread
-// only: docs/threading.md). The worker stops, and is joined, when this goes.
-class MeshesAhead {
-public:
-    struct Built {
-        std::shared_ptr<const reconstruction::WellGeometry> geometry;
-        reconstruction::CoarseMeshes meshes;
-        std::exception_ptr error;
-    };
-    MeshesAhead(std::size_t count, std::function<Built(std::size_t)> build)
-        : m_slots(count), m_worker([this, build = std::move(build)] { run(build); }) {}
-    ~MeshesAhead() {
-        {
-            const std::lock_guard<std::mutex> lock(m_mutex);
-            m_stop = true;
-        }
-        m_changed.notify_all();
-        m_worker.join();
-    }
-    MeshesAhead(const MeshesAhead&) = delete;
-    MeshesAhead& operator=(const MeshesAhead&) = delete;
-
-    // Well `w`'s, once built; wells are taken in order.
-    Built take(std::size_t w) {
-        std::unique_lock<std::mutex> lock(m_mutex);
-        m_changed.wait(lock, [&] { return m_built > w; });
-        Built out = std::move(m_slots[w]);
-        m_taken = w + 1;
-        lock.unlock();
-        m_changed.notify_all();
-        return out;
-    }
-
-private:
-    static constexpr std::size_t kAhead = 2;
-
-    void run(const std::function<Built(std::size_t)>& build) {
-        for (std::size_t w = 0; w < m_slots.size(); ++w) {
-            {
-                std::unique_lock<std::mutex> lock(m_mutex);
-                m_changed.wait(lock, [&] { return m_stop || w < m_taken + kAhead; });
-                if (m_stop) return;
-            }
-            Built built;
-            try {
-                built = build(w);
-            } catch (...) {
-                built.error = std::current_exception();
-            }
-            {
-                const std::lock_guard<std::mutex> lock(m_mutex);
-                m_slots[w] = std::move(built);
-                m_built = w + 1;
-            }
-            m_changed.notify_all();
-        }
-    }
-
-    std::mutex m_mutex;  // guards everything below but the worker
-    std::condition_variable m_changed;
-    std::vector<Built> m_slots;
-    std::size_t m_built = 0;  // wells [0, m_built) are in their slots
-    std::size_t m_taken = 0;  // wells [0, m_taken) have been taken
-    bool m_stop = false;
-    std::thread m_worker;  // last: started once the rest is in place
+// only: docs/threading.md).
+struct BuiltWell {
+    std::shared_ptr<const reconstruction::WellGeometry> geometry;
+    reconstruction::CoarseMeshes meshes;
 };
+using MeshesAhead = reconstruction::BuiltAhead<BuiltWell>;
 
 // A well's scene from its coarse meshes, added to `out` and announced: `drawn` is the geometry
 // the meshes were built from, `kept` what the scene keeps of it (a sample, or `drawn`).
-void addWell(AssembledScene& out, MeshesAhead::Built& built,
+void addWell(AssembledScene& out, BuiltWell& built,
              std::shared_ptr<const reconstruction::WellGeometry> kept,
              std::function<std::shared_ptr<const reconstruction::WellGeometry>()> rows,
              const std::vector<io::Pick>& picks, double exaggeration, const std::string& file,
@@ -335,7 +275,7 @@ void buildLean(const std::vector<WellSource>& wells, const LoadOptions& options,
         readers.push_back({wells[loaded.sources[k]], options, origin, exaggeration, shared,
                            loaded.legends[k], count});
     MeshesAhead ahead(count, [&](std::size_t k) {
-        MeshesAhead::Built built;
+        BuiltWell built;
         const auto& sample = loaded.geometries[k];
         built.geometry = loaded.whole[k]
                              ? std::make_shared<const reconstruction::WellGeometry>(
@@ -345,8 +285,7 @@ void buildLean(const std::vector<WellSource>& wells, const LoadOptions& options,
         return built;
     });
     for (std::size_t k = 0; k < count; ++k) {
-        MeshesAhead::Built built = ahead.take(k);
-        if (built.error) std::rethrow_exception(built.error);
+        BuiltWell built = ahead.take(k);
         if (k == 0) out.legendColouring = built.geometry->options().colouring;
         std::shared_ptr<const reconstruction::WellGeometry> kept = built.geometry;
         std::function<std::shared_ptr<const reconstruction::WellGeometry>()> rows;
@@ -424,15 +363,14 @@ AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOpt
         failAll(e);
     }
     MeshesAhead ahead(loaded.size(), [&](std::size_t w) {
-        MeshesAhead::Built built;
+        BuiltWell built;
         built.geometry = std::make_shared<const reconstruction::WellGeometry>(
             loaded[w]->restyled(exaggeration, colourings[w]));
         built.meshes = reconstruction::buildCoarseMeshes(*built.geometry, firstCoarseLevel);
         return built;
     });
     for (std::size_t w = 0; w < loaded.size(); ++w) {
-        MeshesAhead::Built built = ahead.take(w);
-        if (built.error) std::rethrow_exception(built.error);
+        BuiltWell built = ahead.take(w);
         std::shared_ptr<const reconstruction::WellGeometry> kept = built.geometry;
         addWell(out, built, std::move(kept), {}, picks[w], exaggeration, files[w], diagnostics[w]);
     }
