@@ -18,6 +18,7 @@
 #include "app/batch_manifest.h"
 #include "app/child_process.h"
 #include "app/commands.h"
+#include "app/huge_pages.h"
 #include "app/input_options.h"
 #include "app/input_summary.h"
 #include "app/progress_display.h"
@@ -341,9 +342,10 @@ int runBatch(const QStringList& args) {
         if (positional.size() != 1)
             throw UsageError("caliper3d batch: give one MANIFEST (found " +
                              std::to_string(positional.size()) + ")");
-        std::vector<std::string> restartArgs = {"batch"};
+        // Its wells' arrays in huge pages, however small the manifest (app/huge_pages.h).
+        std::vector<std::string> restartArgs = {"caliper3d", "batch"};
         for (const QString& arg : args) restartArgs.push_back(arg.toStdString());
-        restartWithHugePageMalloc(restartArgs);
+        restartWithHugePageMalloc(hugePageContext(0, 0), restartArgs);
         BatchSettings settings;
         settings.manifest = positional.front();
         settings.folder = verb.isSet("output") ? verb.value("output") : "";

@@ -47,34 +47,6 @@ pid_t forkChild(const std::function<int()>& body, const std::string& stdoutPath,
     _exit(status);
 }
 
-void restartWithHugePageMalloc(const std::vector<std::string>& args) {
-    if (std::getenv("CALIPER3D_HUGE_PAGES") != nullptr) return;  // restarted, or the user's say
-    const char* given = std::getenv("GLIBC_TUNABLES");
-    std::string tunables = given ? given : "";
-    if (tunables.find("glibc.malloc.hugetlb") != std::string::npos) return;
-    char path[4096];
-    const ssize_t size = readlink("/proc/self/exe", path, sizeof path - 1);
-    if (size <= 0) return;
-    path[size] = '\0';
-    tunables += std::string(tunables.empty() ? "" : ":") + "glibc.malloc.hugetlb=1";
-    setenv("GLIBC_TUNABLES", tunables.c_str(), 1);
-    setenv("CALIPER3D_HUGE_PAGES", "1", 1);
-    std::vector<std::string> all = {"caliper3d"};
-    all.insert(all.end(), args.begin(), args.end());
-    std::vector<char*> argv;
-    argv.reserve(all.size() + 1);
-    for (std::string& arg : all) argv.push_back(arg.data());
-    argv.push_back(nullptr);
-    std::cout.flush();
-    std::fflush(nullptr);
-    execv(path, argv.data());
-    // No restart: go on as we are, with the environment as it was.
-    if (given)
-        setenv("GLIBC_TUNABLES", given, 1);
-    else
-        unsetenv("GLIBC_TUNABLES");
-}
-
 std::string describeEnd(int waitStatus) {
     if (WIFEXITED(waitStatus)) {
         const int code = WEXITSTATUS(waitStatus);

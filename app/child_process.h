@@ -16,13 +16,6 @@ namespace caliper3d::app {
 pid_t forkChild(const std::function<int()>& body, const std::string& stdoutPath,
                 const std::string& stderrPath);
 
-// glibc reads its tunables once, as a program starts: restarts this program (the same
-// arguments: "caliper3d" then `args`) with glibc.malloc.hugetlb=1 added to GLIBC_TUNABLES, so
-// that malloc asks for transparent huge pages and each well's large arrays fault in 2 MiB at
-// a time, not 4 KiB. Returns (and changes nothing) when already restarted, when the tunable
-// is set either way, when CALIPER3D_HUGE_PAGES=0 says no, or when the restart fails.
-void restartWithHugePageMalloc(const std::vector<std::string>& args);
-
 // How a child ended, from waitpid's status: "" for exit status 0, else "exit status N" or
 // "stopped by signal N (NAME)".
 std::string describeEnd(int waitStatus);
