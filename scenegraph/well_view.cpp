@@ -60,15 +60,9 @@ void WellView::show(SoSeparator* annotations, const reconstruction::WellGeometry
 }
 
 void WellView::rebuild(const reconstruction::WellGeometry& geometry, double radialExaggeration) {
-    rebuild(geometry, radialExaggeration,
-            reconstruction::buildCoarseMeshes(geometry, m_firstCoarseLevel));
-}
-
-void WellView::rebuild(const reconstruction::WellGeometry& geometry, double radialExaggeration,
-                       const reconstruction::CoarseMeshes& meshes) {
     assertMainThread("WellView");
     auto scene = std::make_unique<WellScene>();
-    scene->attachAll(geometry, meshes);
+    scene->buildAll(geometry, m_firstCoarseLevel);
     m_shown->replaceChild(m_scene->root(), scene->root());
     m_scene = std::move(scene);
     annotate(geometry, radialExaggeration);  // the tick marks stand off the wall as now drawn

@@ -6,7 +6,6 @@
 
 #include "io/picks_reader.h"
 #include "reconstruction/mesh/lod_levels.h"
-#include "reconstruction/mesh/lod_tree.h"
 #include "scenegraph/node_ref.h"
 
 class SoGroup;
@@ -62,11 +61,6 @@ public:
     // A new scene in place of the one shown, every segment's coarse levels built here (a
     // restyled geometry), and its annotations.
     void rebuild(const reconstruction::WellGeometry& geometry, double radialExaggeration);
-    // The same from `meshes`, built from `geometry` elsewhere (another thread) from
-    // firstCoarseLevel() on.
-    void rebuild(const reconstruction::WellGeometry& geometry, double radialExaggeration,
-                 const reconstruction::CoarseMeshes& meshes);
-    int firstCoarseLevel() const { return m_firstCoarseLevel; }
 
 private:
     // Shows `annotations` (the well's, made for `radialExaggeration`) with the picks.

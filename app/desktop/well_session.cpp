@@ -5,8 +5,6 @@
 #include <limits>
 #include <stdexcept>
 #include <thread>
-#include <utility>
-#include <vector>
 
 #ifdef __GLIBC__
 #include <malloc.h>
@@ -27,7 +25,6 @@
 #include "reconstruction/analysis/run_change.h"
 #include "reconstruction/analysis/wall_colour_request.h"
 #include "reconstruction/load/well_load_pipeline.h"
-#include "reconstruction/parallel/built_ahead.h"
 #include "scenegraph/picture_scale.h"
 #include "scenegraph/section_pick.h"
 #include "scenegraph/segment_feeder.h"
@@ -669,40 +666,23 @@ void WellSession::applyColourings(double radialExaggeration,
                                   const std::vector<ColouredWell>& coloured,
                                   const QElapsedTimer& clock) {
     m_detail->removeAll();
-    // Each well restyled (null: a well closed, or loaded again, since its colours were made
-    // keeps its own), its coarse meshes built on a worker a well or two ahead of this thread,
-    // which makes their nodes (a field of 100 wells is drawn again in about half the time).
-    std::vector<std::shared_ptr<const reconstruction::WellGeometry>> restyled(m_wells.size());
-    std::vector<std::pair<std::size_t, int>> redrawn;  // (well, its first coarse level)
-    for (std::size_t w = 0; w < m_wells.size(); ++w) {
-        const Well& well = *m_wells[w];
-        const DeskWell& record = m_model.well(modelIndex(well));
+    for (auto& well : m_wells) {
+        const DeskWell& record = m_model.well(modelIndex(*well));
+        // A well closed, or loaded again, since its colours were made keeps its own.
         const auto it = std::find_if(coloured.begin(), coloured.end(), [&](const ColouredWell& c) {
-            return c.id == well.id && c.geometry == record.geometry;
+            return c.id == well->id && c.geometry == record.geometry;
         });
-        if (it == coloured.end()) continue;
-        restyled[w] = std::make_shared<const reconstruction::WellGeometry>(
-            record.geometry->restyled(radialExaggeration, it->colouring));
-        redrawn.emplace_back(w, well.view->firstCoarseLevel());
-    }
-    reconstruction::BuiltAhead<reconstruction::CoarseMeshes> meshes(
-        redrawn.size(), [&restyled, &redrawn](std::size_t k) {
-            return reconstruction::buildCoarseMeshes(*restyled[redrawn[k].first],
-                                                     redrawn[k].second);
-        });
-    std::size_t next = 0;
-    for (std::size_t w = 0; w < m_wells.size(); ++w) {
-        Well& well = *m_wells[w];
-        if (!restyled[w]) {
-            const auto& geometry = m_model.well(modelIndex(well)).geometry;
-            if (geometry) m_detail->addWell(well.view->scene(), geometry);
+        if (it == coloured.end()) {
+            if (record.geometry) m_detail->addWell(well->view->scene(), record.geometry);
             continue;
         }
-        well.view->rebuild(*restyled[w], radialExaggeration, meshes.take(next++));
+        const auto restyled = std::make_shared<const reconstruction::WellGeometry>(
+            record.geometry->restyled(radialExaggeration, it->colouring));
+        well->view->rebuild(*restyled, radialExaggeration);
         ++m_annotationGeneration;
-        m_detail->addWell(well.view->scene(), restyled[w]);
-        edit(well, [&](DeskWell& r) {
-            r.geometry = restyled[w];
+        m_detail->addWell(well->view->scene(), restyled);
+        edit(*well, [&](DeskWell& r) {
+            r.geometry = restyled;
             r.options.radialExaggeration = radialExaggeration;
             r.options.colour = colour;
         });
