@@ -25,7 +25,7 @@ std::string environment(const char* name) {
 std::optional<std::string> hugePageTunables(const HugePageContext& context) {
     const bool always = context.setting == "always";
     if (!context.setting.empty() && !always) return std::nullopt;
-    if (!always && context.inputBytes < context.threshold) return std::nullopt;
+    if (!always && (context.window || context.inputBytes < context.threshold)) return std::nullopt;
     if (context.tunables.find("glibc.malloc.hugetlb") != std::string::npos) return std::nullopt;
     if (context.thpMode.find("[madvise]") == std::string::npos) return std::nullopt;
     return context.tunables.empty() ? std::string(kHugeHeap) : context.tunables + ":" + kHugeHeap;
@@ -84,10 +84,13 @@ void preferHugePages(int argc, char** argv) {
         if (std::filesystem::is_regular_file(argv[i], error))
             bytes += std::filesystem::file_size(argv[i], error);
     }
+    const bool window = argc > 1 && std::string(argv[1]) == "view";
     // Most commands stop here, with nothing read but their arguments' sizes.
-    if (bytes < kHugePagesFrom_bytes && environment("CALIPER3D_HUGE_PAGES") != "always") return;
-    restartWithHugePageMalloc(hugePageContext(bytes, kHugePagesFrom_bytes),
-                              std::vector<std::string>(argv, argv + argc));
+    if ((window || bytes < kHugePagesFrom_bytes) && environment("CALIPER3D_HUGE_PAGES") != "always")
+        return;
+    HugePageContext context = hugePageContext(bytes, kHugePagesFrom_bytes);
+    context.window = window;
+    restartWithHugePageMalloc(context, std::vector<std::string>(argv, argv + argc));
 }
 
 }  // namespace caliper3d::app

@@ -84,6 +84,12 @@ TEST(HugePagesTest, AskedForFromTheThresholdWhereTheKernelGivesThemOnRequest) {
         set.setting = no;
         EXPECT_FALSE(hugePageTunables(set)) << no;
     }
+    // The window: only when told "always".
+    HugePageContext window = fieldOf(200 * kMiB);
+    window.window = true;
+    EXPECT_FALSE(hugePageTunables(window));
+    window.setting = "always";
+    EXPECT_TRUE(hugePageTunables(window));
     // batch: from no input at all.
     HugePageContext batch = fieldOf(0);
     batch.threshold = 0;
