@@ -27,13 +27,15 @@ HugePageContext fieldOf(std::uintmax_t bytes) {
 }
 
 // How many times the dynamic linker started the program for `arguments` (glibc's LD_DEBUG
-// statistics, once a start), and what it wrote on stdout.
+// statistics, once a start), and what it wrote on stdout. `name`: the scratch file its
+// stderr goes to, a test's own (ctest runs the tests side by side).
 struct Started {
     int starts = 0;
     std::string output;
 };
-Started startsOf(const std::string& environment, const std::string& arguments) {
-    const std::string err = caliper3d::test::scratch("huge_pages_err.txt").string();
+Started startsOf(const std::string& name, const std::string& environment,
+                 const std::string& arguments) {
+    const std::string err = caliper3d::test::scratch(name + "_err.txt").string();
     const std::string command = "env " + environment + " LD_DEBUG=statistics " +
                                 std::string(CALIPER3D_BINARY) + " " + arguments + " 2>" + err;
     Started out;
@@ -102,11 +104,13 @@ TEST(HugePagesTest, ACommandAskingForThemStartsOnceMoreWithTheSameResult) {
     ASSERT_EQ(caliper3d::test::runCaliper3d("synth -o " + log + " --length 20 --step 0.1").status,
               0);
     const std::string arguments = "info '" + log + "'";
-    const Started asked = startsOf("CALIPER3D_HUGE_PAGES=always", arguments);
-    const Started no = startsOf("CALIPER3D_HUGE_PAGES=0", arguments);
+    const Started asked = startsOf("huge_pages_asked", "CALIPER3D_HUGE_PAGES=always", arguments);
+    const Started no = startsOf("huge_pages_no", "CALIPER3D_HUGE_PAGES=0", arguments);
     const Started theirs =
-        startsOf("CALIPER3D_HUGE_PAGES=always GLIBC_TUNABLES=glibc.malloc.hugetlb=0", arguments);
-    const Started small = startsOf("-u CALIPER3D_HUGE_PAGES", arguments);  // far below 64 MiB
+        startsOf("huge_pages_theirs",
+                 "CALIPER3D_HUGE_PAGES=always GLIBC_TUNABLES=glibc.malloc.hugetlb=0", arguments);
+    const Started small =
+        startsOf("huge_pages_small", "-u CALIPER3D_HUGE_PAGES", arguments);  // far below 64 MiB
     EXPECT_EQ(asked.starts, 2);
     EXPECT_EQ(no.starts, 1);
     EXPECT_EQ(theirs.starts, 1);
@@ -124,6 +128,6 @@ TEST(HugePagesTest, BatchAsksForThemWhateverItsManifest) {
     std::ofstream(manifest) << "file,verb\n" << log << ",report\n";
     const std::string out = caliper3d::test::scratch("huge_pages_batch_out").string();
     const std::string arguments = "batch '" + manifest + "' -o '" + out + "/'";
-    EXPECT_EQ(startsOf("-u CALIPER3D_HUGE_PAGES", arguments).starts, 2);
-    EXPECT_EQ(startsOf("CALIPER3D_HUGE_PAGES=0", arguments).starts, 1);
+    EXPECT_EQ(startsOf("huge_pages_batch_asked", "-u CALIPER3D_HUGE_PAGES", arguments).starts, 2);
+    EXPECT_EQ(startsOf("huge_pages_batch_no", "CALIPER3D_HUGE_PAGES=0", arguments).starts, 1);
 }
