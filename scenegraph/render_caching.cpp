@@ -59,11 +59,29 @@ bool renderCachingWanted() {
     return !g_renderer.empty() && !isSoftwareRenderer(g_renderer);
 }
 
+int separatorRenderCaches(const std::string& glRenderer) {
+    constexpr int kCoinsOwn = 2;  // SoSeparator's default
+    switch (setting()) {
+        case Setting::On:
+            return kCoinsOwn;
+        case Setting::Off:
+            return 0;
+        case Setting::Auto:
+            break;
+    }
+    return isSoftwareRenderer(glRenderer) ? 0 : kCoinsOwn;
+}
+
 void noteCurrentGlRenderer() {
-    const std::lock_guard<std::mutex> lock(g_mutex);
-    if (!g_renderer.empty()) return;
-    const auto* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    if (name && *name) g_renderer = name;
+    std::string noted;
+    {
+        const std::lock_guard<std::mutex> lock(g_mutex);
+        if (!g_renderer.empty()) return;
+        const auto* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+        if (!name || !*name) return;
+        g_renderer = noted = name;
+    }
+    SoSeparator::setNumRenderCaches(separatorRenderCaches(noted));
 }
 
 std::string notedGlRenderer() {
@@ -79,6 +97,7 @@ SoNode* makeRendererProbe() {
 }
 
 void probeOffscreenRenderer() {
+    if (setting() == Setting::Off) SoSeparator::setNumRenderCaches(0);
     if (setting() != Setting::Auto || !notedGlRenderer().empty()) return;
     try {
         OffscreenRenderer renderer;

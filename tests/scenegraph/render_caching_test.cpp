@@ -25,6 +25,16 @@ TEST(RenderCachingTest, SoftwareRasterisersAreToldFromHardwareDrivers) {
     EXPECT_FALSE(isSoftwareRenderer(""));
 }
 
+// Coin compiles separators' caches by itself (renderCaching AUTO): not on a software rasteriser.
+TEST(RenderCachingTest, SeparatorsCacheByThemselvesOnlyOnAHardwareDriver) {
+    if (std::getenv("CALIPER3D_RENDER_CACHING"))
+        GTEST_SKIP() << "CALIPER3D_RENDER_CACHING is set: the driver does not decide";
+    EXPECT_EQ(separatorRenderCaches("llvmpipe (LLVM 15.0.6, 256 bits)"), 0);
+    EXPECT_EQ(separatorRenderCaches("Mesa X11 / swrast"), 0);
+    EXPECT_EQ(separatorRenderCaches("NVIDIA H200/PCIe/SSE2"), 2);
+    EXPECT_EQ(separatorRenderCaches("Mesa Intel(R) UHD Graphics 620 (KBL GT2)"), 2);
+}
+
 class RenderCachingSceneTest : public CoinTest {};
 
 // Before any context nothing is cached; once the probe has drawn, a static mesh is cached
@@ -43,6 +53,7 @@ TEST_F(RenderCachingSceneTest, MeshesAreCachedOnlyOnceAHardwareDriverHasBeenSeen
     const std::string renderer = notedGlRenderer();
     ASSERT_FALSE(renderer.empty()) << "no offscreen context was made";
     EXPECT_EQ(renderCachingWanted(), !isSoftwareRenderer(renderer)) << renderer;
+    EXPECT_EQ(SoSeparator::getNumRenderCaches(), separatorRenderCaches(renderer)) << renderer;
     auto* shape = new SoIndexedTriangleStripSet;
     shape->ref();
     SoNode* drawn = cacheableShape(shape);
