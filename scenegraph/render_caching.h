@@ -21,7 +21,7 @@ bool isSoftwareRenderer(const std::string& glRenderer);
 // How many render caches each SoSeparator may compile (SoSeparator::setNumRenderCaches) with
 // `glRenderer` drawing: Coin's own 2, but none on a software rasteriser (CALIPER3D_RENDER_CACHING
 // =on or off says so outright). Coin caches a separator by itself once it has drawn it
-// unchanged (renderCaching AUTO); on llvmpipe the frame that compiles the caches took 40-44 ms
+// unchanged (renderCaching AUTO); on llvmpipe the frame that compiles the caches took 39-44 ms
 // against 27-28 ms for every other frame, cached or not (docs/benchmarks.md, "Render caching").
 int separatorRenderCaches(const std::string& glRenderer);
 
