@@ -84,12 +84,9 @@ void preferHugePages(int argc, char** argv) {
         if (std::filesystem::is_regular_file(argv[i], error))
             bytes += std::filesystem::file_size(argv[i], error);
     }
-    const bool window = argc > 1 && std::string(argv[1]) == "view";
-    // Most commands stop here, with nothing read but their arguments' sizes.
-    if ((window || bytes < kHugePagesFrom_bytes) && environment("CALIPER3D_HUGE_PAGES") != "always")
-        return;
+    // hugePageTunables decides: one small file read at start-up, the rule in one place.
     HugePageContext context = hugePageContext(bytes, kHugePagesFrom_bytes);
-    context.window = window;
+    context.window = argc > 1 && std::string(argv[1]) == "view";
     restartWithHugePageMalloc(context, std::vector<std::string>(argv, argv + argc));
 }
 
