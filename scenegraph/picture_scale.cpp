@@ -77,27 +77,58 @@ double boxDistance(const Bounds& a, const Bounds& b) {
     return glm::length(gap);
 }
 
+// Runs of kChunkSegments segments of a polyline, each with the box around its points: whole
+// runs of segments farther apart than the closest approach found so far are passed over.
+constexpr std::size_t kChunkSegments = 16;
+
+struct Chunk {
+    std::size_t begin, end;  // segments [begin, end): segment i runs from point i to i + 1
+    Bounds box;
+};
+
+// A single point is a segment of no length.
+std::size_t segmentCount(const std::vector<glm::dvec3>& p) {
+    return std::max<std::size_t>(1, p.size() - 1);
+}
+
+const glm::dvec3& segmentEnd(const std::vector<glm::dvec3>& p, std::size_t i) {
+    return p[std::min(i + 1, p.size() - 1)];
+}
+
+std::vector<Chunk> chunksOf(const std::vector<glm::dvec3>& p) {
+    std::vector<Chunk> chunks;
+    const std::size_t n = segmentCount(p);
+    for (std::size_t begin = 0; begin < n; begin += kChunkSegments) {
+        Chunk& chunk = chunks.emplace_back(Chunk{begin, std::min(begin + kChunkSegments, n), {}});
+        for (std::size_t i = chunk.begin; i < chunk.end; ++i) chunk.box.add(p[i]);
+        chunk.box.add(segmentEnd(p, chunk.end - 1));
+    }
+    return chunks;
+}
+
 // The closest approach of polylines `a` and `b` where it is under `limit` (some distance at
-// least `limit` otherwise): a segment of `a` that far from the box around `b` is passed over.
+// least `limit` otherwise). A segment is never nearer than its box is, so pairs of runs, and
+// then segments of `a`, whose boxes lie at least the closest approach found so far apart are
+// passed over: 100 wells of 512 points each took 70 ms a field when every pair of segments of
+// two neighbours was measured.
 double polylineDistance(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& b,
                         double limit = std::numeric_limits<double>::infinity()) {
     if (a.empty() || b.empty()) return std::numeric_limits<double>::infinity();
-    Bounds around;
-    for (const glm::dvec3& q : b) around.add(q);
+    const std::vector<Chunk> ca = chunksOf(a), cb = chunksOf(b);
     double best = limit;
-    // A single point is a segment of no length.
-    const std::size_t na = std::max<std::size_t>(1, a.size() - 1);
-    const std::size_t nb = std::max<std::size_t>(1, b.size() - 1);
-    for (std::size_t i = 0; i < na; ++i) {
-        const glm::dvec3& p1 = a[std::min(i + 1, a.size() - 1)];
-        Bounds segment;
-        segment.add(a[i]);
-        segment.add(p1);
-        if (boxDistance(segment, around) >= best) continue;
-        for (std::size_t j = 0; j < nb; ++j)
-            best =
-                std::min(best, segmentDistance(a[i], p1, b[j], b[std::min(j + 1, b.size() - 1)]));
-    }
+    for (const Chunk& x : ca)
+        for (const Chunk& y : cb) {
+            if (boxDistance(x.box, y.box) >= best) continue;
+            for (std::size_t i = x.begin; i < x.end; ++i) {
+                const glm::dvec3& p1 = segmentEnd(a, i);
+                Bounds segment;
+                segment.add(a[i]);
+                segment.add(p1);
+                if (boxDistance(segment, y.box) >= best) continue;
+                for (std::size_t j = y.begin; j < y.end; ++j)
+                    best = std::min(best, segmentDistance(a[i], p1, b[j], segmentEnd(b, j)));
+            }
+        }
     return best;
 }
 }  // namespace

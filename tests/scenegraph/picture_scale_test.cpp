@@ -3,6 +3,8 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -127,6 +129,34 @@ TEST(PictureScaleTest, ClosestApproachOfTwoVerticalWells) {
     EXPECT_NEAR(closestApproach_m(*a, *wellAt("circle", 6.0, 8.0), 0.0, 1000.0), 10.0, 1e-6);
     EXPECT_NEAR(closestApproach_m(*a, *a, 0.0, 1000.0), 0.0, 1e-9);
     EXPECT_NEAR(maxRadius_m(*a, 0.0, 1000.0), 0.10795, 1e-9);
+}
+
+// A well that kicks off at 200 m from 40 m north and 5 m east of the origin and builds south
+// passes 5 m beside a vertical well at the origin, some 500 m down: the closest approach found
+// over the sampled paths is, within the sampling, the least distance between two rows' centres.
+TEST(PictureScaleTest, ClosestApproachOfAWellBuildingTowardsAnotherIsFoundDeepDown) {
+    const auto a = wellAt("circle", 0.0);
+    reconstruction::SyntheticWellSpec spec = reconstruction::syntheticProfile("circle", 1000, 0.5);
+    spec.kickoff_m = 200.0;
+    spec.buildRate_degPer30m = 1.5;
+    spec.endOfBuild_m = 1000.0;
+    spec.holeAzimuth_deg = 180.0;
+    reconstruction::GeometryOptions options;
+    options.wellheadOffset = {40.0, 5.0, 0.0};
+    const reconstruction::WellGeometry b(
+        std::make_shared<const io::SectionTable>(reconstruction::makeSyntheticWell(spec)), options);
+    double least = std::numeric_limits<double>::infinity();
+    std::size_t deepest = 0;
+    for (std::size_t i = 0; i < a->table().rowCount(); ++i)
+        for (std::size_t j = 0; j < b.table().rowCount(); ++j) {
+            const double d = glm::length(a->centre(i) - b.centre(j));
+            if (d < least) std::tie(least, deepest) = std::pair(d, j);
+        }
+    ASSERT_NEAR(least, 5.0, 0.1);                  // it passes beside the other well
+    ASSERT_GT(b.table().depth_m[deepest], 400.0);  // deep down, not at the top
+    const double found = closestApproach_m(*a, b, 0.0, 1000.0);
+    EXPECT_NEAR(found, least, 0.05);  // rows 0.5 m apart, 1.5 m between the sampled points
+    EXPECT_NEAR(closestApproach_m(b, *a, 0.0, 1000.0), found, 1e-9);
 }
 
 TEST(PictureScaleTest, TwoWellsTenMetresApartGetAFactorThatKeepsThemApart) {
