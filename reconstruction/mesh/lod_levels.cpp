@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -127,17 +128,31 @@ Mesh buildLevel(const WellGeometry& g, const std::vector<std::size_t>& rows, int
     return mesh;
 }
 
+// The unit vectors at `points` equal angles from arm 1 (cos, sin), kept per thread for each
+// count asked: a field's coarse meshes draw millions of rings of a few counts, and the sines
+// and cosines took a fifth of their time.
+const std::vector<glm::dvec2>& unitRing(std::size_t points) {
+    thread_local std::map<std::size_t, std::vector<glm::dvec2>> rings;
+    std::vector<glm::dvec2>& unit = rings[points];
+    if (unit.size() != points) {
+        unit.resize(points);
+        for (std::size_t j = 0; j < points; ++j) {
+            const double phi =
+                glm::two_pi<double>() * static_cast<double>(j) / static_cast<double>(points);
+            unit[j] = glm::dvec2(std::cos(phi), std::sin(phi));
+        }
+    }
+    return unit;
+}
+
 }  // namespace
 
 void drawnRing(const std::vector<double>& radii_mm, double exaggeration,
                std::vector<glm::dvec2>& out) {
     const std::size_t points = radii_mm.size();
+    const std::vector<glm::dvec2>& unit = unitRing(points);
     out.resize(points);
-    for (std::size_t j = 0; j < points; ++j) {
-        const double phi =
-            glm::two_pi<double>() * static_cast<double>(j) / static_cast<double>(points);
-        out[j] = glm::dvec2(radii_mm[j] * std::cos(phi), radii_mm[j] * std::sin(phi));
-    }
+    for (std::size_t j = 0; j < points; ++j) out[j] = radii_mm[j] * unit[j];
     if (exaggeration == 1.0) return;
     // Polygon centroid (shoelace); the tool axis when the ring has no area.
     double area2 = 0.0;
