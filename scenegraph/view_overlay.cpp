@@ -254,6 +254,14 @@ void ViewOverlay::setCaption(const std::vector<std::string>& lines) {
         m_caption->string.set1Value(static_cast<int>(i), lines[i].c_str());
 }
 
+std::vector<std::string> ViewOverlay::caption() const {
+    std::vector<std::string> lines;
+    lines.reserve(static_cast<std::size_t>(m_caption->string.getNum()));
+    for (int i = 0; i < m_caption->string.getNum(); ++i)
+        lines.emplace_back(m_caption->string[i].getString());
+    return lines;
+}
+
 std::vector<ScreenBox> ViewOverlay::occupied(int height) const {
     const float h = static_cast<float>(height);
     // The arrow's arms and letters lie within its length and a letter of its centre.

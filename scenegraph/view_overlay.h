@@ -36,6 +36,7 @@ public:
 
     SoSeparator* root() const { return m_root.get(); }
     void setCaption(const std::vector<std::string>& lines);
+    std::vector<std::string> caption() const;
     // What the overlay covers in a picture `height` pixels high (from its top-left corner):
     // the arrow with its letters, and the caption. Labels keep clear of it.
     std::vector<ScreenBox> occupied(int height) const;

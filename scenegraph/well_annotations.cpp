@@ -447,6 +447,29 @@ PlacedAnnotations placeAnnotations(const std::vector<AnnotatedWell>& wells, cons
     return placed;
 }
 
+NamesInView namesInView(const PlacedAnnotations& placed) {
+    NamesInView names;
+    for (std::size_t i = 0; i < placed.labels.size() && i < placed.views.size(); ++i) {
+        const std::optional<WellName>& name = placed.labels[i].name;
+        const AnnotationView& view = placed.views[i];
+        if (!name || !view.toPixels) continue;
+        const std::optional<glm::vec2> at = view.toPixels(name->position);
+        if (!at || at->x < 0.0f || at->y < 0.0f ||
+            (view.width_px > 0 && at->x > static_cast<float>(view.width_px)) ||
+            (view.height_px > 0 && at->y > static_cast<float>(view.height_px)))
+            continue;
+        ++names.inView;
+        if (name->text.empty()) ++names.leftOut;
+    }
+    return names;
+}
+
+std::string namesLeftOutCaption(const NamesInView& names) {
+    if (names.leftOut == 0) return {};
+    return std::to_string(names.leftOut) + " of " + std::to_string(names.inView) +
+           (names.inView == 1 ? " name" : " names") + " left out: no room";
+}
+
 std::vector<DepthTick> depthTicks(const reconstruction::WellGeometry& geometry,
                                   const AnnotationView& view) {
     std::vector<WellLabels> labels{wellLabels(geometry, view)};

@@ -126,6 +126,19 @@ PlacedAnnotations placeAnnotations(const std::vector<AnnotatedWell>& wells, cons
                                    int width, int height, double bottom_m, bool tickMarks,
                                    const std::vector<ScreenBox>& obstacles);
 
+// The wells of `placed` whose name is anchored inside the picture (its wellhead or the top of
+// its log in view), and how many of those had no room for their name and went unnamed.
+struct NamesInView {
+    std::size_t inView = 0;
+    std::size_t leftOut = 0;
+};
+NamesInView namesInView(const PlacedAnnotations& placed);
+
+// The caption's line for names left out: "48 of 100 names left out: no room"; empty
+// when none is. namesLeftOutCaption({n, n}) is the widest the line can be for n wells: a
+// picture reserves its room before placing the names.
+std::string namesLeftOutCaption(const NamesInView& names);
+
 // The ticks of `geometry` every spacing (AnnotationView::tickSpacing_m) over the annotated
 // depths, MD 0 (the wellhead, which carries the well's name) left out; with view.toPixels,
 // placed with the well's name as placeWellLabels places one well's.

@@ -129,10 +129,21 @@ void MainWindow::placeLabelsWhenStill() {
     m_labelsSeen = key;
     if (!resting || key == m_labelsPlaced) return;  // moving, or placed for this already
     const SbVec2s size = m_viewer->getViewportRegion().getViewportSizePixels();
-    std::vector<scenegraph::ScreenBox> obstacles = m_overlay->occupied(size[1]);
-    if (const std::optional<scenegraph::ScreenBox> legend = m_viewer->legendPanel())
-        obstacles.push_back(*legend);
-    m_session->placeLabels(*camera, size[0], size[1], !m_navigator->inside(), obstacles);
+    const auto place = [&](const std::string& namesLine) {
+        setCaption(namesLine);
+        std::vector<scenegraph::ScreenBox> obstacles = m_overlay->occupied(size[1]);
+        if (const std::optional<scenegraph::ScreenBox> legend = m_viewer->legendPanel())
+            obstacles.push_back(*legend);
+        return m_session->placeLabels(*camera, size[0], size[1], !m_navigator->inside(), obstacles);
+    };
+    scenegraph::NamesInView names = place({});
+    if (names.leftOut > 0) {
+        // The caption says how many: placed again clear of the line, at its widest.
+        const std::size_t wells = m_session->wellCount();
+        names = place(scenegraph::namesLeftOutCaption({wells, wells}));
+    }
+    m_namesLine = scenegraph::namesLeftOutCaption(names);
+    setCaption(m_namesLine);
     m_labelsPlaced = key;
 }
 
@@ -251,8 +262,19 @@ void MainWindow::updateTitle() {
 
 // The caption says the radial exaggeration the wells are drawn with; the legend what the
 // wall's colours mean.
+std::vector<std::string> MainWindow::caption() const {
+    return m_overlay->caption();
+}
+
+void MainWindow::setCaption(const std::string& namesLine) {
+    std::vector<std::string> lines{
+        scenegraph::exaggerationCaption(m_session->look().radialExaggeration)};
+    if (!namesLine.empty()) lines.push_back(namesLine);
+    m_overlay->setCaption(lines);
+}
+
 void MainWindow::updateLook() {
-    m_overlay->setCaption({scenegraph::exaggerationCaption(m_session->look().radialExaggeration)});
+    setCaption(m_namesLine);
     m_viewer->setLegend(m_session->legend());
     // The legend's panel, in the view's lower half, and the depth labels right of the wells
     // beside it (the names are at the top).

@@ -2,6 +2,8 @@
 
 #include <array>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include <QMainWindow>
 #include <QSize>
@@ -59,6 +61,9 @@ public:
     // Whether the wells' labels are placed for the camera, view size and wells as they are now
     // (they are once the camera has rested a poll or two; tests wait for it).
     bool labelsPlaced() const;
+    // The view's caption lines: the radial exaggeration, then how many names the labels
+    // placed last left out for want of room (when any were).
+    std::vector<std::string> caption() const;
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -71,6 +76,8 @@ private:
     void updateWarningsButton();
     void updateTitle();
     void updateLook();
+    // The caption: the radial exaggeration, and `namesLine` below it when not empty.
+    void setCaption(const std::string& namesLine);
     // Places the wells' labels for the camera once it has rested a tick of m_labelTimer
     // (polled: the viewer moves the camera on its own as it spins, a resize changes what it
     // sees, and the session re-annotates wells as they load).
@@ -95,6 +102,7 @@ private:
     LabelKey labelKey() const;  // null camera: all zeros
     LabelKey m_labelsSeen{};
     LabelKey m_labelsPlaced{};
+    std::string m_namesLine;  // how many names the last placement left out (namesLeftOutCaption)
     FileMenu* m_files = nullptr;
     ViewMenu* m_views = nullptr;
     WarningsDock* m_warningsDock = nullptr;

@@ -101,8 +101,9 @@ void WellSession::annotate(Well& well, const reconstruction::WellGeometry& geome
     ++m_annotationGeneration;
 }
 
-void WellSession::placeLabels(const SoCamera& camera, int width, int height, bool tickMarks,
-                              const std::vector<scenegraph::ScreenBox>& obstacles) {
+scenegraph::NamesInView WellSession::placeLabels(
+    const SoCamera& camera, int width, int height, bool tickMarks,
+    const std::vector<scenegraph::ScreenBox>& obstacles) {
     std::vector<Well*> shown;
     std::vector<scenegraph::AnnotatedWell> annotated;
     for (const auto& well : m_wells) {
@@ -114,12 +115,13 @@ void WellSession::placeLabels(const SoCamera& camera, int width, int height, boo
         annotated.push_back({record.geometry.get(), 0.0, record.options.radialExaggeration,
                              well->view->depthTicks()});
     }
-    if (shown.empty() || width <= 0 || height <= 0) return;
+    if (shown.empty() || width <= 0 || height <= 0) return {};
     const scenegraph::PlacedAnnotations placed =
         scenegraph::placeAnnotations(annotated, camera, width, height,
                                      std::numeric_limits<double>::infinity(), tickMarks, obstacles);
     for (std::size_t i = 0; i < shown.size(); ++i)
         shown[i]->view->annotate(*annotated[i].geometry, placed.views[i], placed.labels[i]);
+    return scenegraph::namesInView(placed);
 }
 
 WellSession::~WellSession() {

@@ -19,6 +19,7 @@
 #include "scenegraph/label_placement.h"
 #include "scenegraph/node_ref.h"
 #include "scenegraph/segment_feeder.h"
+#include "scenegraph/well_annotations.h"
 
 class SbVec2s;
 class SbViewportRegion;
@@ -144,8 +145,10 @@ public:
     // hole): no label over another nor over `obstacles` (the caption, the legend). The window
     // calls it once its camera rests; a well loaded, ticked, shown or restyled after it has its
     // labels where they first go until the next call (annotationGeneration).
-    void placeLabels(const SoCamera& camera, int width, int height, bool tickMarks,
-                     const std::vector<scenegraph::ScreenBox>& obstacles);
+    // Returns how many of the wells named in view had no room for their name.
+    scenegraph::NamesInView placeLabels(const SoCamera& camera, int width, int height,
+                                        bool tickMarks,
+                                        const std::vector<scenegraph::ScreenBox>& obstacles);
     // Counts the times a well's labels went back to where they first go.
     unsigned annotationGeneration() const { return m_annotationGeneration; }
 

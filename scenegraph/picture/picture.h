@@ -12,6 +12,7 @@
 #include "scenegraph/node_ref.h"
 #include "scenegraph/offscreen_renderer.h"
 #include "scenegraph/segment_node_builder.h"
+#include "scenegraph/well_annotations.h"
 
 class SoCamera;
 class SoSeparator;
@@ -79,6 +80,7 @@ struct Picture {
     NodeRef<SoSeparator> root;
     std::unique_ptr<ViewOverlay> overlay;  // lives as long as the root it is drawn in
     std::size_t refinedSegments = 0;       // finer levels built for this camera
+    NamesInView names;                     // wells named in view, and those with no room
     double render_ms = 0.0;  // from the call to the first frame read back (scene, detail, draw)
     // With PictureRequest::stats: the mean of 5 frames drawn after it, and the triangles drawn.
     double frame_ms = std::numeric_limits<double>::quiet_NaN();

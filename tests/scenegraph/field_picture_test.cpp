@@ -198,6 +198,16 @@ TEST_F(FieldPictureTest, NoTwoLabelsOfAFieldOverlapInAnyView) {
         // upper, vertical part is foreshortened).
         EXPECT_GE(names, 6);
         EXPECT_GE(depths, 3);
+        // Every wellhead is in the picture; the caption's last line counts the names left out.
+        EXPECT_EQ(picture.names.inView, field.size());
+        EXPECT_EQ(picture.names.inView - picture.names.leftOut, std::size_t(names));
+        const std::vector<std::string> caption = picture.overlay->caption();
+        ASSERT_FALSE(caption.empty());
+        if (picture.names.leftOut > 0)
+            EXPECT_EQ(caption.back(), std::to_string(picture.names.leftOut) + " of 16 names " +
+                                          "left out: no room");
+        else
+            EXPECT_EQ(caption.back().rfind("radii", 0), 0u) << caption.back();
         const ScreenBox frame{0.0f, 0.0f, float(width), float(height)};
         std::vector<ScreenBox> boxes;
         for (std::size_t i = 0; i < labels.size(); ++i) {

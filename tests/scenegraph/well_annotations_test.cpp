@@ -1,5 +1,7 @@
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -107,6 +109,41 @@ TEST(WellAnnotationsTest, LabelsThatWouldOverlapAreLeftOut) {
     };
     ticks = depthTicks(g, view);
     for (const DepthTick& tick : ticks) EXPECT_FALSE(tick.label.empty()) << tick.md_m;
+}
+
+// Names counted by where their anchors land in a 200 x 100 picture (x pixels = scene x,
+// y pixels = scene y): one named, two left out in view, one left out outside the picture, one
+// behind the eye, one well without a name.
+TEST(WellAnnotationsTest, NamesLeftOutAreCountedAmongThoseAnchoredInThePicture) {
+    PlacedAnnotations placed;
+    const auto well = [&placed](const std::string& text, glm::vec3 at, bool hasName = true) {
+        AnnotationView view;
+        view.width_px = 200;
+        view.height_px = 100;
+        view.toPixels = [](const glm::vec3& p) -> std::optional<glm::vec2> {
+            if (p.z < 0.0f) return std::nullopt;  // behind the eye
+            return glm::vec2(p.x, p.y);
+        };
+        WellLabels labels;
+        if (hasName) labels.name = WellName{text, at, at, true, 0.1f, std::nullopt};
+        placed.views.push_back(view);
+        placed.labels.push_back(labels);
+    };
+    well("A", {10.0f, 10.0f, 1.0f});
+    well("", {150.0f, 90.0f, 1.0f});
+    well("", {200.0f, 100.0f, 1.0f});  // on the corner: in
+    well("", {250.0f, 50.0f, 1.0f});   // right of the picture
+    well("", {50.0f, 50.0f, -1.0f});   // behind the eye
+    well("", {50.0f, 50.0f, 1.0f}, false);
+    const NamesInView names = namesInView(placed);
+    EXPECT_EQ(names.inView, 3u);
+    EXPECT_EQ(names.leftOut, 2u);
+    EXPECT_EQ(namesLeftOutCaption(names), "2 of 3 names left out: no room");
+    EXPECT_EQ(namesLeftOutCaption({1, 1}), "1 of 1 name left out: no room");
+    EXPECT_EQ(namesLeftOutCaption({3, 0}), "");
+    // Without a projection (a window's labels before its camera rests) nothing is counted.
+    for (AnnotationView& view : placed.views) view.toPixels = nullptr;
+    EXPECT_EQ(namesInView(placed).inView, 0u);
 }
 
 TEST(WellAnnotationsTest, DepthLabelsCarryTheDecimalsTheSpacingNeeds) {

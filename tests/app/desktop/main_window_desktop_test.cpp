@@ -349,6 +349,15 @@ TEST_F(DesktopWindowTest, ThePadsWellNamesArePlacedApartForTheCameraOnceItRests)
     int names = 0;
     for (const test::DrawnLabel& label : labels) names += label.name ? 1 : 0;
     EXPECT_GE(names, 2);
+    // The caption counts the names left out, or has no line for them.
+    const std::vector<std::string> caption = window.caption();
+    ASSERT_FALSE(caption.empty());
+    EXPECT_EQ(caption.front().rfind("radii", 0), 0u) << caption.front();
+    if (names < int(profiles.size()))
+        EXPECT_EQ(caption.back(), std::to_string(profiles.size() - std::size_t(names)) + " of " +
+                                      std::to_string(profiles.size()) + " names left out: no room");
+    else
+        EXPECT_EQ(caption.size(), 1u) << caption.back();
 
     // Seen from the east: placed again for this camera (they move from where the labels
     // placed for the last one are seen from here).
