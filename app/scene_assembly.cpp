@@ -17,6 +17,7 @@
 #include <Inventor/nodes/SoSeparator.h>
 
 #include "app/change_colouring.h"
+#include "io/parked_rows.h"
 #include "io/parse_error.h"
 #include "io/picks_reader.h"
 #include "reconstruction/analysis/wall_colour_request.h"
@@ -104,6 +105,8 @@ struct Loaded {
     std::exception_ptr colourError;  // why a well could not be coloured as asked
     std::vector<char> whole;
     std::vector<reconstruction::ColourLegend> legends;
+    // Each sampled well's rows, parked whole as they were read (null: read the log again).
+    std::vector<std::shared_ptr<const io::ParkedRows>> parked;
 };
 
 // Well `w`'s line of out.inputs: its rows and warnings, or why it failed (said on stderr as
@@ -180,6 +183,11 @@ Loaded loadLean(const std::vector<WellSource>& wells, const LoadOptions& options
         }
         if (rows.keepFirstWhole && kept.sources[k] == 0) return;
         kept.whole[k] = 0;
+        try {
+            kept.parked[k] = std::make_shared<const io::ParkedRows>(kept.geometries[k]->table());
+        } catch (const std::runtime_error& e) {
+            std::fprintf(stderr, "%s; %s is read again\n", e.what(), kept.files[k].c_str());
+        }
         kept.geometries[k] = std::make_shared<const reconstruction::WellGeometry>(
             kept.geometries[k]->sampled(kLeanRows));
     };
@@ -192,6 +200,7 @@ Loaded loadLean(const std::vector<WellSource>& wells, const LoadOptions& options
             if (kept.geometries.size() == before) return;  // failed
             kept.whole.push_back(1);
             kept.legends.emplace_back();
+            kept.parked.emplace_back();
             held += kept.geometries.back()->table().rowCount();
             if (kept.lean) {
                 sample(before);
@@ -204,7 +213,9 @@ Loaded loadLean(const std::vector<WellSource>& wells, const LoadOptions& options
 }
 
 // Reads a well of a field held lean again, as drawn: its colouring shared with the field's
-// (or its own) and the field's exaggeration. Copies what it needs: a picture keeps it.
+// (or its own) and the field's exaggeration. Its rows come back from where they were parked
+// (the sample gives the table's curves and the geometry's options, which are the whole well's),
+// else from the log. Copies what it needs: a picture keeps it.
 struct WellReader {
     WellSource source;
     LoadOptions options;
@@ -213,11 +224,19 @@ struct WellReader {
     std::optional<reconstruction::ColourRequest> shared;
     reconstruction::ColourLegend own;
     std::size_t wells = 1;
+    std::shared_ptr<const io::ParkedRows> parked;
+    std::shared_ptr<const reconstruction::WellGeometry> sample;
 
     std::shared_ptr<const reconstruction::WellGeometry> operator()() const {
-        const reconstruction::LoadedWell one = reconstruction::loadWell(source, options, origin);
+        std::shared_ptr<const reconstruction::WellGeometry> whole;
+        if (parked && sample)
+            whole = std::make_shared<const reconstruction::WellGeometry>(
+                std::make_shared<const io::SectionTable>(parked->read(sample->table())),
+                sample->options());
+        else
+            whole = reconstruction::loadWell(source, options, origin).geometry;
         return std::make_shared<const reconstruction::WellGeometry>(
-            one.geometry->restyled(exaggeration, colouring(*one.geometry)));
+            whole->restyled(exaggeration, colouring(*whole)));
     }
     std::shared_ptr<const reconstruction::WallColouring> colouring(
         const reconstruction::WellGeometry& whole) const {
@@ -273,7 +292,7 @@ void buildLean(const std::vector<WellSource>& wells, const LoadOptions& options,
     readers.reserve(count);
     for (std::size_t k = 0; k < count; ++k)
         readers.push_back({wells[loaded.sources[k]], options, origin, exaggeration, shared,
-                           loaded.legends[k], count});
+                           loaded.legends[k], count, loaded.parked[k], loaded.geometries[k]});
     MeshesAhead ahead(count, [&](std::size_t k) {
         BuiltWell built;
         const auto& sample = loaded.geometries[k];

@@ -243,6 +243,38 @@ TEST(SceneAssemblyTest, AFieldHeldLeanDrawsWhatTheFieldHeldWholeDraws) {
     }
 }
 
+// A field held lean reads each well's rows back from where they were parked as it was loaded
+// (io::ParkedRows), not from its log: the log rewritten after the load, a well read again is
+// still the well that was loaded, row for row.
+TEST(SceneAssemblyTest, AFieldHeldLeanReadsItsWellsBackFromTheRowsItParked) {
+    scenegraph::initCoin();
+    const std::vector<app::WellSource> wells =
+        threeWellsOfOneLog("assembly_lean_parked.txt", 300.0);
+    const app::AssembledScene whole =
+        app::assembleScene(wells, {}, {}, reconstruction::kFieldFirstCoarseLevel);
+    const app::AssembledScene lean = app::assembleScene(
+        wells, {}, {}, reconstruction::kFieldFirstCoarseLevel, app::FieldRows{1000, false});
+    ASSERT_EQ(lean.wells, 3);
+    io::writeColumnTextFile(
+        wells.front().path,
+        reconstruction::makeSyntheticWell(reconstruction::syntheticProfile("circle", 50.0, 0.5)));
+    for (std::size_t w = 0; w < 3; ++w) {
+        SCOPED_TRACE("well " + std::to_string(w));
+        ASSERT_TRUE(lean.rows[w]);
+        const auto again = lean.rows[w]();
+        const io::SectionTable& a = again->table();
+        const io::SectionTable& b = whole.geometries[w]->table();
+        EXPECT_EQ(a.rowCount(), 6001u);
+        EXPECT_EQ(a.depth_m, b.depth_m);
+        EXPECT_EQ(a.radius_mm, b.radius_mm);
+        EXPECT_EQ(a.p1az_deg, b.p1az_deg);
+        EXPECT_EQ(a.devi_deg, b.devi_deg);
+        EXPECT_EQ(a.hazi_deg, b.hazi_deg);
+        EXPECT_EQ(again->path().back().north, whole.geometries[w]->path().back().north);
+        EXPECT_EQ(again->path().back().east, whole.geometries[w]->path().back().east);
+    }
+}
+
 // A colouring the wells cannot have fails every well of a field held lean as it fails a field
 // held whole: each well's line says why, and none is drawn.
 TEST(SceneAssemblyTest, AColouringAFieldCannotHaveFailsItsWellsHeldLeanOrWhole) {
