@@ -1,8 +1,11 @@
 #include "reconstruction/parallel/built_ahead.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -80,4 +83,58 @@ TEST(BuiltAheadTest, GoingBeforeEveryItemIsTakenStopsTheWorker) {
         EXPECT_EQ(ahead.take(0), 0);
     }  // joined here, having built at most two past the one taken
     EXPECT_LE(built, 3u);
+}
+
+// Two workers: the first two items are built at the same time (each waits for the other to
+// start), never more than two at once, each once, handed over in order; still no further
+// ahead than asked.
+TEST(BuiltAheadTest, TwoWorkersBuildTwoItemsAtOnceAndHandThemOverInOrder) {
+    std::mutex mutex;
+    std::condition_variable started;
+    int running = 0, most = 0, firstTwo = 0;
+    bool overlapped = false;
+    std::vector<std::atomic<int>> builds(40);
+    {
+        BuiltAhead<int> ahead(
+            40,
+            [&](std::size_t i) {
+                {
+                    std::unique_lock<std::mutex> lock(mutex);
+                    most = std::max(most, ++running);
+                    if (i < 2) {
+                        ++firstTwo;
+                        started.notify_all();
+                        // Item 0's worker waits here, so item 1 is the other worker's.
+                        overlapped = started.wait_for(lock, std::chrono::seconds(30), [&] {
+                            return firstTwo == 2;
+                        }) || overlapped;
+                    }
+                }
+                ++builds[i];
+                const std::lock_guard<std::mutex> lock(mutex);
+                --running;
+                return static_cast<int>(i) * 3;
+            },
+            4, 2);
+        for (std::size_t i = 0; i < 40; ++i) EXPECT_EQ(ahead.take(i), static_cast<int>(i) * 3);
+    }
+    for (std::size_t i = 0; i < 40; ++i) EXPECT_EQ(builds[i], 1) << i;
+    EXPECT_TRUE(overlapped);
+    EXPECT_EQ(most, 2);
+
+    std::atomic<std::size_t> built{0};
+    BuiltAhead<int> bounded(
+        10,
+        [&](std::size_t i) {
+            ++built;
+            return static_cast<int>(i);
+        },
+        3, 2);
+    ASSERT_TRUE(waitUntil([&] { return built == 3; }));
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    EXPECT_EQ(built, 3u);
+    EXPECT_EQ(bounded.take(0), 0);
+    ASSERT_TRUE(waitUntil([&] { return built == 4; }));
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    EXPECT_EQ(built, 4u);
 }
