@@ -260,8 +260,6 @@ void MainWindow::updateTitle() {
         setWindowTitle(QString("caliper3d - %1 wells").arg(count));
 }
 
-// The caption says the radial exaggeration the wells are drawn with; the legend what the
-// wall's colours mean.
 std::vector<std::string> MainWindow::caption() const {
     return m_overlay->caption();
 }
@@ -273,6 +271,8 @@ void MainWindow::setCaption(const std::string& namesLine) {
     m_overlay->setCaption(lines);
 }
 
+// The caption says the radial exaggeration the wells are drawn with (and the names the last
+// placement left out); the legend what the wall's colours mean.
 void MainWindow::updateLook() {
     setCaption(m_namesLine);
     m_viewer->setLegend(m_session->legend());
