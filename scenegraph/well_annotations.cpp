@@ -470,6 +470,13 @@ std::string namesLeftOutCaption(const NamesInView& names) {
            (names.inView == 1 ? " name" : " names") + " left out: no room";
 }
 
+NamesInView placeClearOfNamesLine(std::size_t wells,
+                                  const std::function<NamesInView(const std::string&)>& place) {
+    const NamesInView names = place({});
+    if (names.leftOut == 0) return names;
+    return place(namesLeftOutCaption({wells, wells}));
+}
+
 std::vector<DepthTick> depthTicks(const reconstruction::WellGeometry& geometry,
                                   const AnnotationView& view) {
     std::vector<WellLabels> labels{wellLabels(geometry, view)};

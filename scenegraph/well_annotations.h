@@ -139,6 +139,14 @@ NamesInView namesInView(const PlacedAnnotations& placed);
 // picture reserves its room before placing the names.
 std::string namesLeftOutCaption(const NamesInView& names);
 
+// Places the labels of `wells` wells by `place(namesLine)`, which shows `namesLine` under the
+// caption (empty: no line) and places every label clear of the caption, returning namesInView
+// of what it placed: once with no line and, when names were left out, again with the line at
+// its widest, so that no label lies under the line that then says how many. Returns the names
+// of the placement kept; the caller shows namesLeftOutCaption of them.
+NamesInView placeClearOfNamesLine(std::size_t wells,
+                                  const std::function<NamesInView(const std::string&)>& place);
+
 // The ticks of `geometry` every spacing (AnnotationView::tickSpacing_m) over the annotated
 // depths, MD 0 (the wellhead, which carries the well's name) left out; with view.toPixels,
 // placed with the well's name as placeWellLabels places one well's.

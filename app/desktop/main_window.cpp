@@ -136,13 +136,8 @@ void MainWindow::placeLabelsWhenStill() {
             obstacles.push_back(*legend);
         return m_session->placeLabels(*camera, size[0], size[1], !m_navigator->inside(), obstacles);
     };
-    scenegraph::NamesInView names = place({});
-    if (names.leftOut > 0) {
-        // The caption says how many: placed again clear of the line, at its widest.
-        const std::size_t wells = m_session->wellCount();
-        names = place(scenegraph::namesLeftOutCaption({wells, wells}));
-    }
-    m_namesLine = scenegraph::namesLeftOutCaption(names);
+    m_namesLine = scenegraph::namesLeftOutCaption(
+        scenegraph::placeClearOfNamesLine(m_session->wellCount(), place));
     setCaption(m_namesLine);
     m_labelsPlaced = key;
 }

@@ -91,25 +91,20 @@ Picture drawPicture(const std::vector<PictureWell>& wells, const PictureRequest&
             annotated.push_back({wells[i].geometry.get(), top, request.radialExaggeration,
                                  wells.size() == 1 || i == request.tickedWell});
         }
-        const auto place = [&] {
+        PlacedAnnotations placed;
+        out.names = placeClearOfNamesLine(wells.size(), [&](const std::string& namesLine) {
+            std::vector<std::string> lines = caption;
+            if (!namesLine.empty()) lines.push_back(namesLine);
+            out.overlay->setCaption(lines);
             std::vector<ScreenBox> obstacles = out.overlay->occupied(height);
             if (request.legend) obstacles.push_back(legendPanel_px(*request.legend, width, height));
-            return placeAnnotations(annotated, *camera, width, height, request.bottom_m,
-                                    request.tickMarks, obstacles);
-        };
-        PlacedAnnotations placed = place();
-        out.names = namesInView(placed);
-        if (out.names.leftOut > 0) {
-            // The caption says how many: placed again clear of the line, at its widest.
-            std::vector<std::string> lines = caption;
-            lines.push_back(namesLeftOutCaption({wells.size(), wells.size()}));
-            out.overlay->setCaption(lines);
-            placed = place();
-            out.names = namesInView(placed);
-            if (const std::string leftOut = namesLeftOutCaption(out.names); !leftOut.empty())
-                caption.push_back(leftOut);
-            out.overlay->setCaption(caption);
-        }
+            placed = placeAnnotations(annotated, *camera, width, height, request.bottom_m,
+                                      request.tickMarks, obstacles);
+            return namesInView(placed);
+        });
+        if (const std::string leftOut = namesLeftOutCaption(out.names); !leftOut.empty())
+            caption.push_back(leftOut);
+        out.overlay->setCaption(caption);
         for (std::size_t i = 0; i < wells.size(); ++i)
             root->addChild(
                 makeWellAnnotations(*wells[i].geometry, placed.views[i], placed.labels[i]));
