@@ -7,6 +7,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -154,17 +155,23 @@ void drawnRing(const std::vector<double>& radii_mm, double exaggeration,
     out.resize(points);
     for (std::size_t j = 0; j < points; ++j) out[j] = radii_mm[j] * unit[j];
     if (exaggeration == 1.0) return;
+    const glm::dvec2 centroid = ringCentroid(out);
+    for (glm::dvec2& p : out) p = centroid + (p - centroid) * exaggeration;
+}
+
+glm::dvec2 ringCentroid(const std::vector<glm::dvec2>& ring) {
     // Polygon centroid (shoelace); the tool axis when the ring has no area.
+    const std::size_t points = ring.size();
     double area2 = 0.0;
     glm::dvec2 sum(0.0), centroid(0.0);
     for (std::size_t j = 0; j < points; ++j) {
-        const glm::dvec2 &a = out[j], &b = out[(j + 1) % points];
+        const glm::dvec2 &a = ring[j], &b = ring[(j + 1) % points];
         const double cross = a.x * b.y - b.x * a.y;
         area2 += cross;
         sum += (a + b) * cross;
     }
     if (std::abs(area2) > 1e-6) centroid = sum / (3.0 * area2);
-    for (glm::dvec2& p : out) p = centroid + (p - centroid) * exaggeration;
+    return centroid;
 }
 
 double ringError_mm(const WellGeometry& g, std::size_t row, const PeriodicSplineSampler* level) {
@@ -309,30 +316,13 @@ std::vector<std::size_t> decimatedRows(const WellGeometry& g, std::size_t first,
     return keptRows(g, SegmentKnots(g, first, last), level, first, last);
 }
 
-SegmentMesh buildSegmentLevels(const WellGeometry& geometry, std::size_t segment, int from,
-                               int to) {
-    if (segment >= geometry.segmentCount())
-        throw std::out_of_range("buildSegmentLevels: no segment " + std::to_string(segment));
-    const std::vector<LodLevel> pyramid = lodPyramid(geometry.options());
-    to = std::min(to, static_cast<int>(pyramid.size()));
-    from = std::clamp(from, 0, to);
-    const auto [first, last] = geometry.segmentRows(segment);
-    SegmentMesh out;
-    out.index = segment;
-    out.firstRow = first;
-    out.lastRow = last;
-    out.top_m = geometry.table().depth_m[first];
-    out.bottom_m = geometry.table().depth_m[last];
-    out.firstLevel = from;
+namespace {
 
-    // The largest drawn radius of the segment bounds every level's error.
-    const SegmentKnots knots(geometry, first, last);
-    double maxRadius_mm = 0.0;
-    for (double k : knots.values) maxRadius_mm = std::max(maxRadius_mm, k);
-    for (std::size_t r = first; r < last; ++r)
-        if (geometry.measured(r) && geometry.measured(r + 1))
-            out.fullDetailTriangles += 2 * static_cast<std::size_t>(pyramid.front().points);
-    const double exaggeration = geometry.options().radialExaggeration;
+// What every level's switch needs of a segment: its largest drawn radius, each level's drawn
+// shape error, and its bounding sphere about the centres of `first` and `last` (rows of `g`).
+void segmentBounds(SegmentMesh& out, const WellGeometry& g, const std::vector<LodLevel>& pyramid,
+                   double maxRadius_mm, std::size_t first, std::size_t last) {
+    const double exaggeration = g.options().radialExaggeration;
     const double drawn_mm = maxRadius_mm * exaggeration;
     // Sections are drawn about their centroids, within maxRadius of the path: a drawn point
     // is within F maxRadius + (F - 1) maxRadius of it.
@@ -342,11 +332,104 @@ SegmentMesh buildSegmentLevels(const WellGeometry& geometry, std::size_t segment
         const LodLevel& l = pyramid[i];
         const double error =
             i == 0 ? 0.0
-                   : l.tolerance_mm * geometry.options().radialExaggeration +
-                         chordError(drawn_mm, l.points > 0 ? l.points : geometry.knotCount());
+                   : l.tolerance_mm * exaggeration +
+                         chordError(drawn_mm, l.points > 0 ? l.points : g.knotCount());
         out.levelError_mm.push_back(static_cast<float>(error));
     }
-    for (int i = from; i < to; ++i) {
+    const glm::dvec3 a = toScene(g.centre(first)), b = toScene(g.centre(last));
+    out.centre = glm::vec3((a + b) / 2.0);
+    out.radius = static_cast<float>(glm::length(b - a) / 2.0) + out.maxRadius_m;
+}
+
+// The largest knot value of a segment (rows without data hold zeros) and the triangles its
+// level 0 draws.
+std::pair<double, std::size_t> segmentSize(const WellGeometry& g, const SegmentKnots& knots,
+                                           const LodLevel& finest) {
+    double maxRadius_mm = 0.0;
+    for (double k : knots.values) maxRadius_mm = std::max(maxRadius_mm, k);
+    std::size_t triangles = 0;
+    for (std::size_t r = knots.first; r < knots.last; ++r)
+        if (g.measured(r) && g.measured(r + 1))
+            triangles += 2 * static_cast<std::size_t>(finest.points);
+    return {maxRadius_mm, triangles};
+}
+
+}  // namespace
+
+std::size_t drawnRow(const std::vector<std::size_t>* wholeRows, std::size_t row) {
+    if (!wholeRows) return row;
+    const auto it = std::lower_bound(wholeRows->begin(), wholeRows->end(), row);
+    if (it == wholeRows->end() || *it != row)
+        throw std::logic_error("drawnRow: row " + std::to_string(row) + " is not held");
+    return static_cast<std::size_t>(it - wholeRows->begin());
+}
+
+SegmentPlan planSegmentLevels(const WellGeometry& whole, std::size_t segment, int from, int to) {
+    if (segment >= whole.segmentCount())
+        throw std::out_of_range("planSegmentLevels: no segment " + std::to_string(segment));
+    const std::vector<LodLevel> pyramid = lodPyramid(whole.options());
+    to = std::min(to, static_cast<int>(pyramid.size()));
+    from = std::clamp(from, 1, to);
+    SegmentPlan plan;
+    plan.index = segment;
+    std::tie(plan.firstRow, plan.lastRow) = whole.segmentRows(segment);
+    plan.firstLevel = from;
+    const SegmentKnots knots(whole, plan.firstRow, plan.lastRow);
+    std::tie(plan.maxRadius_mm, plan.fullDetailTriangles) =
+        segmentSize(whole, knots, pyramid.front());
+    for (int i = from; i < to; ++i)
+        plan.levelRows.push_back(keptRows(whole, knots, pyramid[static_cast<std::size_t>(i)],
+                                          plan.firstRow, plan.lastRow));
+    return plan;
+}
+
+SegmentMesh finishSegmentLevels(const WellGeometry& drawn, const SegmentPlan& plan,
+                                const std::vector<std::size_t>* wholeRows) {
+    const std::vector<LodLevel> pyramid = lodPyramid(drawn.options());
+    SegmentMesh out;
+    out.index = plan.index;
+    out.firstRow = plan.firstRow;
+    out.lastRow = plan.lastRow;
+    const std::size_t first = drawnRow(wholeRows, plan.firstRow);
+    const std::size_t last = drawnRow(wholeRows, plan.lastRow);
+    out.top_m = drawn.table().depth_m[first];
+    out.bottom_m = drawn.table().depth_m[last];
+    out.firstLevel = plan.firstLevel;
+    out.fullDetailTriangles = plan.fullDetailTriangles;
+    std::vector<std::size_t> rows;
+    for (std::size_t i = 0; i < plan.levelRows.size(); ++i) {
+        rows.clear();
+        for (const std::size_t row : plan.levelRows[i]) rows.push_back(drawnRow(wholeRows, row));
+        const int level = plan.firstLevel + static_cast<int>(i);
+        out.levels.push_back(buildLevel(drawn, rows, pyramid[static_cast<std::size_t>(level)].points));
+    }
+    segmentBounds(out, drawn, pyramid, plan.maxRadius_mm, first, last);
+    return out;
+}
+
+SegmentMesh buildSegmentLevels(const WellGeometry& geometry, std::size_t segment, int from,
+                               int to) {
+    if (segment >= geometry.segmentCount())
+        throw std::out_of_range("buildSegmentLevels: no segment " + std::to_string(segment));
+    if (from >= 1)
+        return finishSegmentLevels(geometry, planSegmentLevels(geometry, segment, from, to),
+                                   nullptr);
+    const std::vector<LodLevel> pyramid = lodPyramid(geometry.options());
+    to = std::min(to, static_cast<int>(pyramid.size()));
+    const auto [first, last] = geometry.segmentRows(segment);
+    SegmentMesh out;
+    out.index = segment;
+    out.firstRow = first;
+    out.lastRow = last;
+    out.top_m = geometry.table().depth_m[first];
+    out.bottom_m = geometry.table().depth_m[last];
+    out.firstLevel = 0;
+
+    const SegmentKnots knots(geometry, first, last);
+    double maxRadius_mm = 0.0;
+    std::tie(maxRadius_mm, out.fullDetailTriangles) = segmentSize(geometry, knots, pyramid.front());
+    segmentBounds(out, geometry, pyramid, maxRadius_mm, first, last);
+    for (int i = 0; i < to; ++i) {
         const LodLevel& l = pyramid[static_cast<std::size_t>(i)];
         const std::vector<std::size_t> rows = keptRows(geometry, knots, l, first, last);
         if (i == 0) {
@@ -360,10 +443,6 @@ SegmentMesh buildSegmentLevels(const WellGeometry& geometry, std::size_t segment
             out.levels.push_back(buildLevel(geometry, rows, l.points));
         }
     }
-
-    const glm::dvec3 a = toScene(geometry.centre(first)), b = toScene(geometry.centre(last));
-    out.centre = glm::vec3((a + b) / 2.0);
-    out.radius = static_cast<float>(glm::length(b - a) / 2.0) + out.maxRadius_m;
     return out;
 }
 

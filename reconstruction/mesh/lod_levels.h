@@ -50,6 +50,27 @@ std::vector<std::size_t> decimatedRows(const WellGeometry& geometry, std::size_t
 // without data are a gap in the wall at every level. Reads only the geometry's public,
 // immutable state, so any thread may build any segment.
 SegmentMesh buildSegmentLevels(const WellGeometry& geometry, std::size_t segment, int from, int to);
+// What levels [from, to) of a segment keep (from at least 1), decided on the whole well: the
+// rows of each level (the swing-door test reads undrawn radii, so they do not depend on the
+// exaggeration) and what the levels' errors and bounds need of the rows left out.
+struct SegmentPlan {
+    std::size_t index = 0;
+    std::size_t firstRow = 0, lastRow = 0;
+    int firstLevel = 1;
+    double maxRadius_mm = 0.0;  // largest knot value, undrawn
+    std::size_t fullDetailTriangles = 0;
+    std::vector<std::vector<std::size_t>> levelRows;  // per level, from firstLevel
+};
+SegmentPlan planSegmentLevels(const WellGeometry& whole, std::size_t segment, int from, int to);
+// Those levels drawn from `drawn`: the whole well, or a copy holding at least the planned rows
+// and every row without data between them (wholeRows[i] the whole well's row that is drawn's
+// row i; null: drawn is the whole well). The same meshes buildSegmentLevels(whole restyled
+// alike, segment, from, to) gives; row numbers stay the whole well's.
+SegmentMesh finishSegmentLevels(const WellGeometry& drawn, const SegmentPlan& plan,
+                                const std::vector<std::size_t>* wholeRows);
+// Drawn's row for a whole well's `row` (wholeRows as above; the row must be among them).
+std::size_t drawnRow(const std::vector<std::size_t>* wholeRows, std::size_t row);
+
 // Every level.
 SegmentMesh buildSegmentMesh(const WellGeometry& geometry, std::size_t segment);
 // The levels built up front, `firstLevel` on.
@@ -68,6 +89,9 @@ Mesh buildRingMesh(const WellGeometry& geometry, const std::vector<std::size_t>&
 // its area as every level draws it.
 void drawnRing(const std::vector<double>& radii_mm, double exaggeration,
                std::vector<glm::dvec2>& out);
+// The centroid of a ring's area (shoelace), about which drawnRing draws it larger; the tool
+// axis (0, 0) when the ring has no area.
+glm::dvec2 ringCentroid(const std::vector<glm::dvec2>& ring);
 
 // The largest distance, drawn, in millimetres, from a point of `row`'s full-detail ring to the
 // ring a coarser level draws for it: the spline sampled by `level`, or the pads' polygon when

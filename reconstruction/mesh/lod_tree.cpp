@@ -46,53 +46,68 @@ double samplerNorm(const PeriodicSplineSampler& sampler) {
     return worst;
 }
 
-// What a span hands to the span above it besides its mesh.
-struct SpanRows {
-    std::vector<std::size_t> rows;  // kept, increasing
-    double error_mm = 0.0;          // of the pads' polygons, drawn (exaggeration included)
-    double ringError_mm = 0.0;      // of the level's rings against the full spline, drawn
-    double pathDeviation_m = 0.0;   // the straight path between kept rows from the true path,
-                                    //   or the tool's turn between them, drawn
-    double maxRadius_mm = 0.0;      // largest knot value, undrawn
-};
-
-// The largest drawn distance (mm) between a measured candidate's pad polygon and the straight
-// line (in depth) between the polygons of the kept rows on either side of it, each polygon
-// drawn about its own centroid as buildRingMesh draws it.
-double keptDeviation_mm(const WellGeometry& g, const std::vector<std::size_t>& candidates,
-                        const std::vector<double>& values, std::size_t knots,
-                        const std::vector<std::size_t>& kept) {
+// The pads' part of a span's error at each exaggeration `fs` (SpanPlan::padError_mm): the
+// largest drawn distance between a measured candidate's pad polygon and the straight line (in
+// depth) between the polygons of the kept rows on either side of it, each polygon drawn about
+// its own centroid as buildRingMesh draws it. Drawn F times larger about its centroid c, a
+// polygon's point p is c + F (p - c), so a distance is |dc + F ds|: dc between the centroids
+// and ds between the points about them. Both are taken once per point; each F costs a few
+// multiplications. Also the largest |dc| and |ds| (SpanPlan::padCentroid_mm, padShape_mm).
+void padDeviations(const WellGeometry& g, const std::vector<std::size_t>& candidates,
+                   const std::vector<double>& values, std::size_t knots,
+                   const std::vector<std::size_t>& kept, const std::vector<double>& fs,
+                   SpanPlan& plan) {
     const std::vector<double>& depth = g.table().depth_m;
-    const double exaggeration = g.options().radialExaggeration;
     std::vector<double> pads(knots);
-    auto ring = [&](std::size_t c, std::vector<glm::dvec2>& out) {
-        std::copy_n(values.begin() + static_cast<std::ptrdiff_t>(c * knots), knots, pads.begin());
-        drawnRing(pads, exaggeration, out);
+    // A candidate's polygon about its centroid, and the centroid (drawnRing at F = 1 is the
+    // polygon itself; at any other F it is drawn about this centroid).
+    struct Polygon {
+        std::vector<glm::dvec2> about;
+        glm::dvec2 centroid{0.0};
     };
-    std::vector<glm::dvec2> from, to, here;
-    double worst = 0.0;
+    auto polygon = [&](std::size_t c, Polygon& out) {
+        std::copy_n(values.begin() + static_cast<std::ptrdiff_t>(c * knots), knots, pads.begin());
+        drawnRing(pads, 1.0, out.about);
+        out.centroid = ringCentroid(out.about);
+        for (glm::dvec2& p : out.about) p -= out.centroid;
+    };
+    std::vector<double> worst2(fs.size(), 0.0);
+    double worstCentroid = 0.0, worstShape = 0.0;
+    Polygon from, to, here;
     std::size_t a = 0;  // the candidate that is kept[k]; every kept row is a candidate
     for (std::size_t k = 0; k + 1 < kept.size(); ++k) {
         while (candidates[a] < kept[k]) ++a;
         std::size_t b = a;
         while (candidates[b] < kept[k + 1]) ++b;
         if (b > a + 1 && g.measured(kept[k]) && g.measured(kept[k + 1])) {
-            ring(a, from);
-            ring(b, to);
+            polygon(a, from);
+            polygon(b, to);
             const double length = depth[kept[k + 1]] - depth[kept[k]];
             for (std::size_t c = a + 1; c < b; ++c) {
                 if (!g.measured(candidates[c])) continue;
-                ring(c, here);
+                polygon(c, here);
                 const double t =
                     length > 0.0 ? (depth[candidates[c]] - depth[kept[k]]) / length : 0.0;
-                for (std::size_t j = 0; j < knots; ++j)
-                    worst =
-                        std::max(worst, glm::length(here[j] - (from[j] + t * (to[j] - from[j]))));
+                const glm::dvec2 dc =
+                    here.centroid - (from.centroid + t * (to.centroid - from.centroid));
+                worstCentroid = std::max(worstCentroid, glm::length(dc));
+                for (std::size_t j = 0; j < knots; ++j) {
+                    const glm::dvec2 ds =
+                        here.about[j] - (from.about[j] + t * (to.about[j] - from.about[j]));
+                    worstShape = std::max(worstShape, glm::length(ds));
+                    const double cc = glm::dot(dc, dc), cs = glm::dot(dc, ds),
+                                 ss = glm::dot(ds, ds);
+                    for (std::size_t f = 0; f < fs.size(); ++f)
+                        worst2[f] = std::max(worst2[f], cc + fs[f] * (2.0 * cs + fs[f] * ss));
+                }
             }
         }
         a = b;
     }
-    return worst;
+    plan.padError_mm.resize(fs.size());
+    for (std::size_t f = 0; f < fs.size(); ++f) plan.padError_mm[f] = std::sqrt(worst2[f]);
+    plan.padCentroid_mm = worstCentroid;
+    plan.padShape_mm = worstShape;
 }
 
 double distanceToChord(const Ned& p, const Ned& a, const Ned& b) {
@@ -102,65 +117,25 @@ double distanceToChord(const Ned& p, const Ned& a, const Ned& b) {
     return glm::length(p - (a + t * ab));
 }
 
-struct Built {
-    SpanMesh mesh;
-    SpanRows rows;
-};
-
-// The ring and path parts of a span's error (see buildSpan), into `result`.
-void measureRingsAndPath(const WellGeometry& g, const std::vector<std::size_t>& candidates,
-                         const LodLevel& level, double childRingError_mm, double childDeviation_m,
-                         SpanRows& result) {
-    const auto knots = static_cast<std::size_t>(g.knotCount());
-    // The ring each kept row draws (the pads' polygon, or fewer spline points) against its
-    // full spline, measured on the kept rows; between them the rings are close to the
-    // straight line between theirs (the spline is linear in the pads).
-    {
-        std::optional<PeriodicSplineSampler> sampler;
-        if (level.points > 0) sampler.emplace(static_cast<int>(knots), level.points);
-        for (std::size_t r : result.rows)
-            result.ringError_mm =
-                std::max(result.ringError_mm, ringError_mm(g, r, sampler ? &*sampler : nullptr));
-        result.ringError_mm = std::max(result.ringError_mm, childRingError_mm);
-    }
-
-    // How far the straight path between kept rows strays from the candidates' centres.
-    double deviation_m = 0.0;
-    std::size_t k = 0;
-    for (const std::size_t candidate : candidates) {
-        while (k + 1 < result.rows.size() && result.rows[k + 1] < candidate) ++k;
-        if (k + 1 >= result.rows.size()) break;
-        deviation_m =
-            std::max(deviation_m, distanceToChord(g.centre(candidate), g.centre(result.rows[k]),
-                                                  g.centre(result.rows[k + 1])));
-    }
-    // The tool turns between kept rows: a straight edge from a pad's point at one kept row to
-    // the same pad's point at the next cuts inside the wall between them, by up to
-    // r (1 - cos(turn / 2)) at the middle for a drawn radius r.
-    const double drawnRadius_m =
-        result.maxRadius_mm * std::max(1.0, 2.0 * g.options().radialExaggeration - 1.0) / 1000.0;
-    for (std::size_t i = 0; i + 1 < result.rows.size(); ++i) {
-        const std::size_t r0 = result.rows[i], r1 = result.rows[i + 1];
-        if (!g.measured(r0) || !g.measured(r1)) continue;
-        const double cosTurn = std::clamp(glm::dot(g.frame(r0).arm1, g.frame(r1).arm1), -1.0, 1.0);
-        const double turn = std::acos(cosTurn);
-        deviation_m = std::max(deviation_m, drawnRadius_m * (1.0 - std::cos(turn / 2.0)));
-    }
-    result.pathDeviation_m = deviation_m + childDeviation_m;
-}
-
-Built buildSpan(const WellGeometry& g, int depth, std::size_t index,
-                const std::vector<SpanRows>& children) {
+// What a span decides on the whole well (SpanPlan), from its children's plans at depth > 1.
+SpanPlan planSpan(const WellGeometry& g, int depth, std::size_t index,
+                  const std::vector<SpanPlan>& children, const std::vector<double>& fs) {
     const std::size_t segments = g.segmentCount();
     const auto [s0, s1] = spanSegments(depth, index, segments);
     const std::size_t first = g.segmentRows(s0).first, last = g.segmentRows(s1).second;
     const auto knots = static_cast<std::size_t>(g.knotCount());
-    Built out;
-    SpanRows& result = out.rows;
+    SpanPlan plan;
+    plan.depth = depth;
+    plan.index = index;
+    plan.firstSegment = s0;
+    plan.lastSegment = s1;
+    plan.firstRow = first;
+    plan.lastRow = last;
 
     // The rows to choose from: every measured row at depth 1, else the rows the children kept.
     std::vector<std::size_t> candidates;
-    double childError_mm = 0.0, childDeviation_m = 0.0, childRingError_mm = 0.0;
+    std::vector<double> childPad(fs.size(), 0.0);
+    double childCentroid = 0.0, childShape = 0.0;
     if (depth == 1) {
         candidates.reserve(last - first + 1);
         for (std::size_t r = first; r <= last; ++r)
@@ -169,13 +144,14 @@ Built buildSpan(const WellGeometry& g, int depth, std::size_t index,
         const std::size_t from = index * kLodTreeFanOut;
         const std::size_t to = std::min(from + kLodTreeFanOut, children.size());
         for (std::size_t c = from; c < to; ++c) {
-            const SpanRows& child = children[c];
+            const SpanPlan& child = children[c];
             for (std::size_t r : child.rows)
                 if (candidates.empty() || r > candidates.back()) candidates.push_back(r);
-            childError_mm = std::max(childError_mm, child.error_mm);
-            childRingError_mm = std::max(childRingError_mm, child.ringError_mm);
-            childDeviation_m = std::max(childDeviation_m, child.pathDeviation_m);
-            result.maxRadius_mm = std::max(result.maxRadius_mm, child.maxRadius_mm);
+            for (std::size_t f = 0; f < fs.size(); ++f)
+                childPad[f] = std::max(childPad[f], child.padError_mm[f]);
+            childCentroid = std::max(childCentroid, child.padCentroid_mm);
+            childShape = std::max(childShape, child.padShape_mm);
+            plan.maxRadius_mm = std::max(plan.maxRadius_mm, child.maxRadius_mm);
         }
     }
     std::vector<double> values(candidates.size() * knots, 0.0);
@@ -184,11 +160,11 @@ Built buildSpan(const WellGeometry& g, int depth, std::size_t index,
             g.sectionKnots(candidates[c], values.data() + c * knots);
             if (depth == 1)
                 for (std::size_t k = 0; k < knots; ++k)
-                    result.maxRadius_mm = std::max(result.maxRadius_mm, values[c * knots + k]);
+                    plan.maxRadius_mm = std::max(plan.maxRadius_mm, values[c * knots + k]);
         }
 
     const LodLevel level = spanLevel(g.options(), static_cast<int>(knots), depth);
-    result.rows = swingDoor(
+    plan.rows = swingDoor(
         g, candidates.size(), [&candidates](std::size_t c) { return candidates[c]; },
         [&values, knots](std::size_t c, std::size_t k) { return values[c * knots + k]; }, knots,
         level);
@@ -198,33 +174,175 @@ Built buildSpan(const WellGeometry& g, int depth, std::size_t index,
     // piecewise linear in depth with breaks at the candidates (this span keeps a subset of
     // them), so their largest difference lies on a candidate; adding the children's error
     // bounds the distance to every measured row's polygon (the triangle inequality).
-    result.error_mm = keptDeviation_mm(g, candidates, values, knots, result.rows) + childError_mm;
-    measureRingsAndPath(g, candidates, level, childRingError_mm, childDeviation_m, result);
+    padDeviations(g, candidates, values, knots, plan.rows, fs, plan);
+    for (std::size_t f = 0; f < fs.size(); ++f) plan.padError_mm[f] += childPad[f];
+    plan.padCentroid_mm += childCentroid;
+    plan.padShape_mm += childShape;
 
-    SpanMesh& mesh = out.mesh;
-    mesh.depth = depth;
-    mesh.index = index;
-    mesh.firstSegment = s0;
-    mesh.lastSegment = s1;
-    mesh.firstRow = first;
-    mesh.lastRow = last;
-    const double exaggeration = g.options().radialExaggeration;
-    // As for a segment (lod_levels.cpp): a drawn point lies within F r + (F - 1) r of the path.
-    mesh.maxRadius_m =
-        static_cast<float>(result.maxRadius_mm * std::max(1.0, 2.0 * exaggeration - 1.0) / 1000.0);
-    // A full ring is the spline through its pads: pads within e of a line give a spline
-    // within samplerNorm e of the line's spline, so the pads' error counts that much.
-    mesh.error_mm = static_cast<float>(samplerNorm(g.sampler()) * result.error_mm +
-                                       result.ringError_mm + result.pathDeviation_m * 1000.0);
-    mesh.mesh = buildRingMesh(g, result.rows, level.points);
-
+    // How far the straight path between kept rows strays from the candidates' centres.
+    std::size_t k = 0;
+    for (const std::size_t candidate : candidates) {
+        while (k + 1 < plan.rows.size() && plan.rows[k + 1] < candidate) ++k;
+        if (k + 1 >= plan.rows.size()) break;
+        plan.centreDeviation_m =
+            std::max(plan.centreDeviation_m,
+                     distanceToChord(g.centre(candidate), g.centre(plan.rows[k]),
+                                     g.centre(plan.rows[k + 1])));
+    }
     const glm::dvec3 a = toScene(g.centre(first)), b = toScene(g.centre(last));
     const glm::dvec3 centre = (a + b) / 2.0;
-    double reach = glm::length(b - a) / 2.0;
+    plan.reach_m = glm::length(b - a) / 2.0;
     for (std::size_t r : candidates)
-        reach = std::max(reach, glm::length(toScene(g.centre(r)) - centre));
-    mesh.centre = glm::vec3(centre);
-    mesh.radius = static_cast<float>(reach + childDeviation_m) + mesh.maxRadius_m;
+        plan.reach_m = std::max(plan.reach_m, glm::length(toScene(g.centre(r)) - centre));
+    return plan;
+}
+
+// What a span hands to the span above it, drawn: its rings' error against the full spline
+// and its path's deviation, each with its children's.
+struct SpanDrawn {
+    double ringError_mm = 0.0;
+    double pathDeviation_m = 0.0;
+};
+
+// The pads' error of `plan` at the drawn exaggeration.
+double padError_mm(const SpanPlan& plan, const std::vector<double>& fs, double exaggeration) {
+    for (std::size_t f = 0; f < fs.size(); ++f)
+        if (fs[f] == exaggeration) return plan.padError_mm[f];
+    return plan.padCentroid_mm + exaggeration * plan.padShape_mm;
+}
+
+// A span's mesh from `drawn` (buildCoarseMeshes), given what its children hand up.
+SpanMesh finishSpan(const WellGeometry& drawn, const SpanPlan& plan, const std::vector<double>& fs,
+                    const std::vector<std::size_t>* wholeRows,
+                    const std::vector<SpanDrawn>& children, SpanDrawn& result) {
+    const LodLevel level = spanLevel(drawn.options(), drawn.knotCount(), plan.depth);
+    double childRingError_mm = 0.0, childDeviation_m = 0.0;
+    if (plan.depth > 1) {
+        const std::size_t from = plan.index * kLodTreeFanOut;
+        const std::size_t to = std::min(from + kLodTreeFanOut, children.size());
+        for (std::size_t c = from; c < to; ++c) {
+            childRingError_mm = std::max(childRingError_mm, children[c].ringError_mm);
+            childDeviation_m = std::max(childDeviation_m, children[c].pathDeviation_m);
+        }
+    }
+    std::vector<std::size_t> rows;
+    rows.reserve(plan.rows.size());
+    for (const std::size_t row : plan.rows) rows.push_back(drawnRow(wholeRows, row));
+
+    // The ring each kept row draws (the pads' polygon, or fewer spline points) against its
+    // full spline, measured on the kept rows; between them the rings are close to the
+    // straight line between theirs (the spline is linear in the pads).
+    {
+        std::optional<PeriodicSplineSampler> sampler;
+        if (level.points > 0) sampler.emplace(drawn.knotCount(), level.points);
+        for (std::size_t r : rows)
+            result.ringError_mm = std::max(result.ringError_mm,
+                                           ringError_mm(drawn, r, sampler ? &*sampler : nullptr));
+        result.ringError_mm = std::max(result.ringError_mm, childRingError_mm);
+    }
+    // The tool turns between kept rows: a straight edge from a pad's point at one kept row to
+    // the same pad's point at the next cuts inside the wall between them, by up to
+    // r (1 - cos(turn / 2)) at the middle for a drawn radius r.
+    const double exaggeration = drawn.options().radialExaggeration;
+    const double drawnRadius_m =
+        plan.maxRadius_mm * std::max(1.0, 2.0 * exaggeration - 1.0) / 1000.0;
+    double deviation_m = plan.centreDeviation_m;
+    for (std::size_t i = 0; i + 1 < rows.size(); ++i) {
+        const std::size_t r0 = rows[i], r1 = rows[i + 1];
+        if (!drawn.measured(r0) || !drawn.measured(r1)) continue;
+        const double cosTurn =
+            std::clamp(glm::dot(drawn.frame(r0).arm1, drawn.frame(r1).arm1), -1.0, 1.0);
+        const double turn = std::acos(cosTurn);
+        deviation_m = std::max(deviation_m, drawnRadius_m * (1.0 - std::cos(turn / 2.0)));
+    }
+    result.pathDeviation_m = deviation_m + childDeviation_m;
+
+    SpanMesh mesh;
+    mesh.depth = plan.depth;
+    mesh.index = plan.index;
+    mesh.firstSegment = plan.firstSegment;
+    mesh.lastSegment = plan.lastSegment;
+    mesh.firstRow = plan.firstRow;
+    mesh.lastRow = plan.lastRow;
+    // As for a segment (lod_levels.cpp): a drawn point lies within F r + (F - 1) r of the path.
+    mesh.maxRadius_m = static_cast<float>(drawnRadius_m);
+    // A full ring is the spline through its pads: pads within e of a line give a spline
+    // within samplerNorm e of the line's spline, so the pads' error counts that much.
+    mesh.error_mm = static_cast<float>(
+        samplerNorm(drawn.sampler()) * padError_mm(plan, fs, exaggeration) +
+        result.ringError_mm + result.pathDeviation_m * 1000.0);
+    mesh.mesh = buildRingMesh(drawn, rows, level.points);
+
+    const glm::dvec3 a = toScene(drawn.centre(drawnRow(wholeRows, plan.firstRow)));
+    const glm::dvec3 b = toScene(drawn.centre(drawnRow(wholeRows, plan.lastRow)));
+    mesh.centre = glm::vec3((a + b) / 2.0);
+    mesh.radius = static_cast<float>(plan.reach_m + childDeviation_m) + mesh.maxRadius_m;
+    return mesh;
+}
+
+// Runs build(i) for i in [0, count) on `threads` threads (at most two: the machine's cores),
+// stopping early once `cancel` is set.
+template <class Build>
+void eachOnThreads(std::size_t count, int threads, const std::atomic<bool>* cancel, Build build) {
+    auto run = [&](std::size_t from, std::size_t step) {
+        for (std::size_t i = from; i < count; i += step) {
+            if (cancel && cancel->load()) return;
+            build(i);
+        }
+    };
+    if (threads > 1 && count > 1) {
+        std::thread helper(run, 1, 2);
+        run(0, 2);
+        helper.join();
+    } else {
+        run(0, 1);
+    }
+}
+
+// Every span's plan, depth 1 first; what it has planned when `cancel` is set.
+std::vector<SpanPlan> planSpans(const WellGeometry& g, const std::vector<double>& fs, int threads,
+                                const std::atomic<bool>* cancel) {
+    std::vector<SpanPlan> out;
+    const std::size_t segments = g.segmentCount();
+    if (segments == 0) return out;
+    const int depth = lodTreeDepth(segments);
+    std::vector<SpanPlan> children;  // the previous depth's
+    for (int d = 1; d <= depth; ++d) {
+        const std::size_t count = spanCount(d, segments);
+        std::vector<SpanPlan> built(count);
+        eachOnThreads(count, threads, cancel,
+                      [&](std::size_t i) { built[i] = planSpan(g, d, i, children, fs); });
+        if (cancel && cancel->load()) return out;
+        for (SpanPlan& plan : children) out.push_back(std::move(plan));
+        children = std::move(built);
+    }
+    for (SpanPlan& plan : children) out.push_back(std::move(plan));
+    return out;
+}
+
+// The spans' meshes of `plans` (planSpans) drawn from `drawn`.
+std::vector<SpanMesh> finishSpans(const WellGeometry& drawn, const std::vector<SpanPlan>& plans,
+                                  const std::vector<double>& fs,
+                                  const std::vector<std::size_t>* wholeRows, int threads,
+                                  const std::atomic<bool>* cancel) {
+    std::vector<SpanMesh> out(plans.size());
+    std::vector<SpanDrawn> children, handed(plans.size());
+    std::size_t begin = 0;
+    while (begin < plans.size()) {
+        std::size_t end = begin;
+        while (end < plans.size() && plans[end].depth == plans[begin].depth) ++end;
+        eachOnThreads(end - begin, threads, cancel, [&](std::size_t i) {
+            out[begin + i] =
+                finishSpan(drawn, plans[begin + i], fs, wholeRows, children, handed[begin + i]);
+        });
+        if (cancel && cancel->load()) {
+            out.resize(begin);
+            return out;
+        }
+        children.assign(handed.begin() + static_cast<std::ptrdiff_t>(begin),
+                        handed.begin() + static_cast<std::ptrdiff_t>(end));
+        begin = end;
+    }
     return out;
 }
 
@@ -254,52 +372,63 @@ LodLevel spanLevel(const GeometryOptions& options, int knots, int depth) {
 
 std::vector<SpanMesh> buildSpanMeshes(const WellGeometry& geometry,
                                       const std::atomic<bool>* cancel) {
-    std::vector<SpanMesh> out;
-    const std::size_t segments = geometry.segmentCount();
-    if (segments == 0) return out;
-    const int depth = lodTreeDepth(segments);
-    std::vector<SpanRows> children;
-    for (int d = 1; d <= depth; ++d) {
-        const std::size_t count = spanCount(d, segments);
-        std::vector<Built> built(count);
-        // The spans of one depth are independent: two threads (the machine's two cores).
-        auto build = [&](std::size_t from) {
-            for (std::size_t i = from; i < count; i += 2) {
-                if (cancel && cancel->load()) return;
-                built[i] = buildSpan(geometry, d, i, children);
-            }
-        };
-        if (count > 1) {
-            std::thread helper(build, 1);
-            build(0);
-            helper.join();
-        } else {
-            build(0);
-        }
-        if (cancel && cancel->load()) return out;
-        children.clear();
-        children.reserve(count);
-        for (Built& b : built) {
-            children.push_back(std::move(b.rows));
-            out.push_back(std::move(b.mesh));
-        }
-    }
+    const std::vector<double> fs{geometry.options().radialExaggeration};
+    const std::vector<SpanPlan> plans = planSpans(geometry, fs, 2, cancel);
+    if (cancel && cancel->load()) return {};
+    return finishSpans(geometry, plans, fs, nullptr, 2, cancel);
+}
+
+std::vector<std::size_t> CoarsePlan::rows() const {
+    std::vector<std::size_t> out;
+    for (const SegmentPlan& segment : segments)
+        for (const std::vector<std::size_t>& level : segment.levelRows)
+            out.insert(out.end(), level.begin(), level.end());
+    for (const SpanPlan& span : spans) out.insert(out.end(), span.rows.begin(), span.rows.end());
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+}
+
+CoarsePlan planCoarseMeshes(const WellGeometry& whole, int firstLevel,
+                            std::vector<double> exaggerations, int threads) {
+    CoarsePlan plan;
+    plan.firstLevel = std::max(firstLevel, 1);
+    plan.exaggerations = std::move(exaggerations);
+    const std::size_t count = whole.segmentCount();
+    plan.segments.resize(count);
+    eachOnThreads(count, threads, nullptr, [&](std::size_t s) {
+        plan.segments[s] = planSegmentLevels(whole, s, plan.firstLevel,
+                                             std::numeric_limits<int>::max());
+    });
+    plan.spans = planSpans(whole, plan.exaggerations, threads, nullptr);
+    return plan;
+}
+
+CoarseMeshes buildCoarseMeshes(const WellGeometry& drawn, const CoarsePlan& plan,
+                               const std::vector<std::size_t>* wholeRows, int threads) {
+    CoarseMeshes out;
+    out.segments.resize(plan.segments.size());
+    eachOnThreads(plan.segments.size(), threads, nullptr, [&](std::size_t s) {
+        out.segments[s] = finishSegmentLevels(drawn, plan.segments[s], wholeRows);
+    });
+    out.spans = finishSpans(drawn, plan.spans, plan.exaggerations, wholeRows, threads, nullptr);
     return out;
 }
 
 CoarseMeshes buildCoarseMeshes(const WellGeometry& geometry, int firstLevel) {
-    CoarseMeshes out;
-    const std::size_t count = geometry.segmentCount();
-    out.segments.resize(count);
-    auto build = [&geometry, &out, count, firstLevel](std::size_t from) {
-        for (std::size_t s = from; s < count; s += 2)
+    if (firstLevel < 1) {
+        CoarseMeshes out;
+        const std::size_t count = geometry.segmentCount();
+        out.segments.resize(count);
+        eachOnThreads(count, 2, nullptr, [&](std::size_t s) {
             out.segments[s] = buildCoarseSegment(geometry, s, firstLevel);
-    };
-    std::thread helper(build, 1);
-    build(0);
-    helper.join();
-    out.spans = buildSpanMeshes(geometry);
-    return out;
+        });
+        out.spans = buildSpanMeshes(geometry);
+        return out;
+    }
+    return buildCoarseMeshes(
+        geometry,
+        planCoarseMeshes(geometry, firstLevel, {geometry.options().radialExaggeration}));
 }
 
 }  // namespace caliper3d::reconstruction

@@ -63,13 +63,61 @@ LodLevel spanLevel(const GeometryOptions& options, int knots, int depth);
 std::vector<SpanMesh> buildSpanMeshes(const WellGeometry& geometry,
                                       const std::atomic<bool>* cancel = nullptr);
 
+// What a span keeps, decided on the whole well before any exaggeration is chosen
+// (planCoarseMeshes): the swing-door test reads undrawn radii, so the rows a span keeps do
+// not depend on how it is drawn, and only the pads' part of its error does. That part is
+// measured at each of the plan's exaggerations, where the rows it leaves out are at hand.
+struct SpanPlan {
+    int depth = 1;
+    std::size_t index = 0;
+    std::size_t firstSegment = 0, lastSegment = 0;
+    std::size_t firstRow = 0, lastRow = 0;
+    std::vector<std::size_t> rows;  // kept, increasing (the whole well's rows)
+    // Per exaggeration of the plan: the largest drawn distance (mm) between a row's pads'
+    // polygon and the straight line between the kept rows' (this span's and its children's).
+    std::vector<double> padError_mm;
+    // At any other exaggeration F: at most padCentroid_mm + F padShape_mm (the distance of the
+    // polygons' centroids plus F times that of the points about them).
+    double padCentroid_mm = 0.0, padShape_mm = 0.0;
+    double centreDeviation_m = 0.0;  // the straight path between kept rows from the rows' centres
+    double maxRadius_mm = 0.0;       // largest knot value, undrawn
+    double reach_m = 0.0;            // the furthest row centre from the span's centre
+};
+
 // A well's meshes built up front: every segment's levels from `firstLevel` on
-// (buildCoarseSegment) and every span (buildSpanMeshes). Reads only the geometry, so any
-// thread may build it; it uses two threads of its own (the machine's two cores).
+// (buildCoarseSegment) and every span (buildSpanMeshes).
 struct CoarseMeshes {
     std::vector<SegmentMesh> segments;
     std::vector<SpanMesh> spans;
 };
+
+// What a well's coarse meshes keep (SegmentPlan, SpanPlan), decided on the whole well for the
+// radial exaggerations listed, so that the meshes can be built later from only the rows kept
+// (a field held lean: docs/architecture.md) once the field's exaggeration is chosen.
+// `firstLevel` is at least 1: level 0 keeps every row.
+struct CoarsePlan {
+    int firstLevel = kFirstCoarseLevel;
+    std::vector<double> exaggerations;
+    std::vector<SegmentPlan> segments;
+    std::vector<SpanPlan> spans;  // depth 1 first, each depth in index order
+    // Every row a mesh draws or steps over (a row without data stops a strip), increasing.
+    std::vector<std::size_t> rows() const;
+};
+CoarsePlan planCoarseMeshes(const WellGeometry& whole, int firstLevel,
+                            std::vector<double> exaggerations, int threads = 2);
+
+// The meshes `plan` describes, drawn from `drawn` at its own exaggeration and colours: the
+// whole well the plan was made on, or a copy holding the plan's rows (wholeRows[i] the whole
+// well's row that is drawn's row i; null: drawn is the whole well). Rows and errors are those
+// buildCoarseMeshes(whole restyled alike, firstLevel) gives, when the exaggeration is one
+// the plan lists.
+CoarseMeshes buildCoarseMeshes(const WellGeometry& drawn, const CoarsePlan& plan,
+                               const std::vector<std::size_t>* wholeRows = nullptr,
+                               int threads = 2);
+
+// planCoarseMeshes at the geometry's own exaggeration, then buildCoarseMeshes. Reads only the
+// geometry, so any thread may build it; it uses two threads of its own (the machine's two
+// cores).
 CoarseMeshes buildCoarseMeshes(const WellGeometry& geometry, int firstLevel = kFirstCoarseLevel);
 
 }  // namespace caliper3d::reconstruction
