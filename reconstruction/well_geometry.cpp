@@ -355,15 +355,29 @@ WellGeometry WellGeometry::restyled(double radialExaggeration,
 
 WellGeometry WellGeometry::sampled(std::size_t maxRows) const {
     const std::size_t rows = m_table->rowCount();
-    WellGeometry out(*this);
-    out.m_options.colouring.reset();
-    out.m_options.cancel = nullptr;
-    if (rows <= std::max<std::size_t>(maxRows, 2)) return out;
-    const std::size_t stride = std::max<std::size_t>(1, rows / std::max<std::size_t>(maxRows, 1));
+    if (rows <= std::max<std::size_t>(maxRows, 2)) {
+        WellGeometry out(*this);
+        out.m_options.colouring.reset();
+        out.m_options.cancel = nullptr;
+        return out;
+    }
+    return sampled(everyKthRow(rows, maxRows));
+}
+
+std::vector<std::size_t> everyKthRow(std::size_t rows, std::size_t maxRows) {
     std::vector<std::size_t> keep;
+    if (rows == 0) return keep;
+    const std::size_t stride = std::max<std::size_t>(1, rows / std::max<std::size_t>(maxRows, 1));
     keep.reserve(rows / stride + 2);
     for (std::size_t row = 0; row < rows; row += stride) keep.push_back(row);
     if (keep.back() != rows - 1) keep.push_back(rows - 1);
+    return keep;
+}
+
+WellGeometry WellGeometry::sampled(const std::vector<std::size_t>& keep) const {
+    WellGeometry out(*this);
+    out.m_options.colouring.reset();
+    out.m_options.cancel = nullptr;
     auto table = std::make_shared<io::SectionTable>(m_table->rows(0, 0));
     table->reserve(keep.size());
     auto placed = std::make_shared<Placement>();
@@ -387,16 +401,24 @@ SegmentMesh WellGeometry::buildSegment(std::size_t segment) const {
     return buildSegmentMesh(*this, segment);
 }
 
-std::vector<glm::vec3> pathLine(const WellGeometry& geometry, double spacing_m, double after_m) {
+std::vector<std::size_t> pathLineRows(const WellGeometry& geometry, double spacing_m,
+                                      double after_m) {
     const auto& depth = geometry.table().depth_m;
-    std::vector<glm::vec3> points;
+    std::vector<std::size_t> rows;
     double next = -1.0e300;
     for (std::size_t row = 0; row < depth.size(); ++row) {
         if (depth[row] <= after_m) continue;
         if (depth[row] < next && row + 1 != depth.size()) continue;
-        points.emplace_back(toScene(geometry.centre(row)));
+        rows.push_back(row);
         next = depth[row] + spacing_m;
     }
+    return rows;
+}
+
+std::vector<glm::vec3> pathLine(const WellGeometry& geometry, double spacing_m, double after_m) {
+    std::vector<glm::vec3> points;
+    for (const std::size_t row : pathLineRows(geometry, spacing_m, after_m))
+        points.emplace_back(toScene(geometry.centre(row)));
     return points;
 }
 

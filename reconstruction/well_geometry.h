@@ -114,6 +114,11 @@ public:
     // again when the camera wants finer levels (docs/architecture.md, "A field held lean").
     // The whole well when it has no more rows than that.
     WellGeometry sampled(std::size_t maxRows) const;
+    // The same well held by `rows` of its rows (increasing, each at most once, the first and
+    // the last among them), as sampled(maxRows) holds it. Its segments are this geometry's
+    // when every segment's first and last rows are among `rows` (a segment ends on the last
+    // row within its length, and no row between is held to end it sooner).
+    WellGeometry sampled(const std::vector<std::size_t>& rows) const;
 
     // Whether a row has enough valid arms to define its section's shape; a
     // row without is drawn as a gap and analysed as no_data.
@@ -183,9 +188,16 @@ private:
     PeriodicSplineSampler m_sampler;
 };
 
+// The rows sampled(maxRows) keeps of `rows` rows when it samples: every k-th (k = rows /
+// maxRows, at least 1), and the last.
+std::vector<std::size_t> everyKthRow(std::size_t rows, std::size_t maxRows);
+
 // The path as a line to draw: the centres (scene frame) of the rows about `spacing_m` apart
 // from the first row deeper than `after_m`, and the last row.
 std::vector<glm::vec3> pathLine(const WellGeometry& geometry, double spacing_m = 1.0,
                                 double after_m = -1.0e300);
+// The rows pathLine draws: a copy of the geometry that holds them draws the same line.
+std::vector<std::size_t> pathLineRows(const WellGeometry& geometry, double spacing_m = 1.0,
+                                      double after_m = -1.0e300);
 
 }  // namespace caliper3d::reconstruction

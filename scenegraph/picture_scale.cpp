@@ -154,6 +154,13 @@ double roundUpToSeries(double value) {
     }
 }
 
+std::vector<double> seriesExaggerations() {
+    std::vector<double> out;
+    for (double f = 1.0; f <= kMaxExaggeration; f = roundUpToSeries(f * (1.0 + 1e-9)))
+        out.push_back(f);
+    return out;
+}
+
 double roundDownToSeries(double value) {
     if (!(value > 0.0) || !std::isfinite(value)) return 1.0;
     double decade = std::pow(10.0, std::floor(std::log10(value)));

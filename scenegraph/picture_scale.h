@@ -59,6 +59,8 @@ double chooseExaggeration(
 
 // The smallest of 1, 2, 3, 5 times a power of ten that is at least `value` (> 0).
 double roundUpToSeries(double value);
+// Every factor chooseExaggeration can choose: 1 and the 1-2-3-5 series up to kMaxExaggeration.
+std::vector<double> seriesExaggerations();
 // The largest of 1, 2, 3, 5 times a power of ten that is at most `value` (> 0).
 double roundDownToSeries(double value);
 

@@ -269,6 +269,15 @@ std::shared_ptr<const WallColouring> sharedWallColouring(const WellGeometry& wel
     return std::make_shared<const WallColouring>(colouring->withLegend(std::move(legend)));
 }
 
+std::shared_ptr<const WallColouring> sharedWallColouring(const WallColouring& own,
+                                                         const ColourRequest& shared,
+                                                         std::size_t wells) {
+    ColourLegend legend = own.legend();
+    if (shared.range) std::tie(legend.lo, legend.hi) = *shared.range;
+    legend.range += ", over all " + std::to_string(wells) + " wells";
+    return std::make_shared<const WallColouring>(own.withLegend(std::move(legend)));
+}
+
 std::vector<std::shared_ptr<const WallColouring>> wallColourings(
     const std::vector<std::shared_ptr<const WellGeometry>>& wells, const ColourRequest& request,
     const std::vector<const SectionValues*>& values) {

@@ -79,6 +79,12 @@ std::shared_ptr<const WallColouring> sharedWallColouring(const WellGeometry& wel
                                                          const ColourRequest& shared,
                                                          const ColourLegend& own, std::size_t wells,
                                                          const SectionValues* values = nullptr);
+// The same from a well's own colouring (made with the request the field shares, before its
+// range was shared), for a caller that holds only some of the well's rows (its colouring's
+// WallColouring::rowsOf): the colours of `own`'s values over the shared range.
+std::shared_ptr<const WallColouring> sharedWallColouring(const WallColouring& own,
+                                                         const ColourRequest& shared,
+                                                         std::size_t wells);
 
 // The report's classes, from the Okabe-Ito palette (told apart with any colour vision).
 std::uint32_t classColour(BoreholeClass c);

@@ -401,7 +401,8 @@ SegmentMesh finishSegmentLevels(const WellGeometry& drawn, const SegmentPlan& pl
         rows.clear();
         for (const std::size_t row : plan.levelRows[i]) rows.push_back(drawnRow(wholeRows, row));
         const int level = plan.firstLevel + static_cast<int>(i);
-        out.levels.push_back(buildLevel(drawn, rows, pyramid[static_cast<std::size_t>(level)].points));
+        out.levels.push_back(
+            buildLevel(drawn, rows, pyramid[static_cast<std::size_t>(level)].points));
     }
     segmentBounds(out, drawn, pyramid, plan.maxRadius_mm, first, last);
     return out;

@@ -74,6 +74,7 @@ void padDeviations(const WellGeometry& g, const std::vector<std::size_t>& candid
     std::vector<double> worst2(fs.size(), 0.0);
     double worstCentroid = 0.0, worstShape = 0.0;
     Polygon from, to, here;
+    std::vector<glm::dvec2> ds(knots);
     std::size_t a = 0;  // the candidate that is kept[k]; every kept row is a candidate
     for (std::size_t k = 0; k + 1 < kept.size(); ++k) {
         while (candidates[a] < kept[k]) ++a;
@@ -90,13 +91,25 @@ void padDeviations(const WellGeometry& g, const std::vector<std::size_t>& candid
                     length > 0.0 ? (depth[candidates[c]] - depth[kept[k]]) / length : 0.0;
                 const glm::dvec2 dc =
                     here.centroid - (from.centroid + t * (to.centroid - from.centroid));
-                worstCentroid = std::max(worstCentroid, glm::length(dc));
+                const double centroidDistance = glm::length(dc);
+                worstCentroid = std::max(worstCentroid, centroidDistance);
+                double shape = 0.0;
                 for (std::size_t j = 0; j < knots; ++j) {
-                    const glm::dvec2 ds =
-                        here.about[j] - (from.about[j] + t * (to.about[j] - from.about[j]));
-                    worstShape = std::max(worstShape, glm::length(ds));
-                    const double cc = glm::dot(dc, dc), cs = glm::dot(dc, ds),
-                                 ss = glm::dot(ds, ds);
+                    ds[j] = here.about[j] - (from.about[j] + t * (to.about[j] - from.about[j]));
+                    shape = std::max(shape, glm::length(ds[j]));
+                }
+                worstShape = std::max(worstShape, shape);
+                // Each point is within |dc| + F |ds| at F: a row that cannot beat the worst
+                // found at any F is passed over (most rows, once a few are in).
+                bool beats = false;
+                for (std::size_t f = 0; f < fs.size() && !beats; ++f) {
+                    const double bound = centroidDistance + fs[f] * shape;
+                    beats = bound * bound > worst2[f];
+                }
+                if (!beats) continue;
+                const double cc = glm::dot(dc, dc);
+                for (std::size_t j = 0; j < knots; ++j) {
+                    const double cs = glm::dot(dc, ds[j]), ss = glm::dot(ds[j], ds[j]);
                     for (std::size_t f = 0; f < fs.size(); ++f)
                         worst2[f] = std::max(worst2[f], cc + fs[f] * (2.0 * cs + fs[f] * ss));
                 }
@@ -184,10 +197,9 @@ SpanPlan planSpan(const WellGeometry& g, int depth, std::size_t index,
     for (const std::size_t candidate : candidates) {
         while (k + 1 < plan.rows.size() && plan.rows[k + 1] < candidate) ++k;
         if (k + 1 >= plan.rows.size()) break;
-        plan.centreDeviation_m =
-            std::max(plan.centreDeviation_m,
-                     distanceToChord(g.centre(candidate), g.centre(plan.rows[k]),
-                                     g.centre(plan.rows[k + 1])));
+        plan.centreDeviation_m = std::max(
+            plan.centreDeviation_m, distanceToChord(g.centre(candidate), g.centre(plan.rows[k]),
+                                                    g.centre(plan.rows[k + 1])));
     }
     const glm::dvec3 a = toScene(g.centre(first)), b = toScene(g.centre(last));
     const glm::dvec3 centre = (a + b) / 2.0;
@@ -268,9 +280,9 @@ SpanMesh finishSpan(const WellGeometry& drawn, const SpanPlan& plan, const std::
     mesh.maxRadius_m = static_cast<float>(drawnRadius_m);
     // A full ring is the spline through its pads: pads within e of a line give a spline
     // within samplerNorm e of the line's spline, so the pads' error counts that much.
-    mesh.error_mm = static_cast<float>(
-        samplerNorm(drawn.sampler()) * padError_mm(plan, fs, exaggeration) +
-        result.ringError_mm + result.pathDeviation_m * 1000.0);
+    mesh.error_mm =
+        static_cast<float>(samplerNorm(drawn.sampler()) * padError_mm(plan, fs, exaggeration) +
+                           result.ringError_mm + result.pathDeviation_m * 1000.0);
     mesh.mesh = buildRingMesh(drawn, rows, level.points);
 
     const glm::dvec3 a = toScene(drawn.centre(drawnRow(wholeRows, plan.firstRow)));
@@ -397,8 +409,8 @@ CoarsePlan planCoarseMeshes(const WellGeometry& whole, int firstLevel,
     const std::size_t count = whole.segmentCount();
     plan.segments.resize(count);
     eachOnThreads(count, threads, nullptr, [&](std::size_t s) {
-        plan.segments[s] = planSegmentLevels(whole, s, plan.firstLevel,
-                                             std::numeric_limits<int>::max());
+        plan.segments[s] =
+            planSegmentLevels(whole, s, plan.firstLevel, std::numeric_limits<int>::max());
     });
     plan.spans = planSpans(whole, plan.exaggerations, threads, nullptr);
     return plan;
@@ -427,8 +439,7 @@ CoarseMeshes buildCoarseMeshes(const WellGeometry& geometry, int firstLevel) {
         return out;
     }
     return buildCoarseMeshes(
-        geometry,
-        planCoarseMeshes(geometry, firstLevel, {geometry.options().radialExaggeration}));
+        geometry, planCoarseMeshes(geometry, firstLevel, {geometry.options().radialExaggeration}));
 }
 
 }  // namespace caliper3d::reconstruction

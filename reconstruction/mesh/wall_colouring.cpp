@@ -64,6 +64,33 @@ WallColouring WallColouring::withLegend(ColourLegend legend) const {
     return out;
 }
 
+WallColouring WallColouring::rowsOf(const std::vector<std::size_t>& rows) const {
+    WallColouring out(m_source, {}, m_legend);
+    out.m_values.reserve(rows.size());
+    for (const std::size_t row : rows) out.m_values.push_back(m_values[row]);
+    if (m_source != Source::Directional) return out;
+    // Only the slots of the rows kept, renumbered.
+    const DirectionalValues& from = m_directional;
+    DirectionalValues& to = out.m_directional;
+    to.bins = from.bins;
+    to.step = from.step;
+    const auto bins = static_cast<std::size_t>(from.bins);
+    for (const std::size_t row : rows) {
+        const std::int32_t slot = row < from.slot.size() ? from.slot[row] : -1;
+        if (slot < 0) {
+            to.slot.push_back(-1);
+            continue;
+        }
+        const auto s = static_cast<std::size_t>(slot);
+        to.slot.push_back(static_cast<std::int32_t>(to.arm1Angle_deg.size()));
+        to.arm1Angle_deg.push_back(from.arm1Angle_deg[s]);
+        to.values.insert(to.values.end(),
+                         from.values.begin() + static_cast<std::ptrdiff_t>(s * bins),
+                         from.values.begin() + static_cast<std::ptrdiff_t>((s + 1) * bins));
+    }
+    return out;
+}
+
 std::uint32_t WallColouring::continuousColour(double v) const {
     if (!std::isfinite(v)) return kNoValueColour;
     return m_legend.kind == ColourMapKind::Diverging

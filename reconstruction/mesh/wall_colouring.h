@@ -65,6 +65,9 @@ public:
 
     // The same colours, described by `legend` (its map and range must be this one's).
     WallColouring withLegend(ColourLegend legend) const;
+    // The colours of `rows` only (increasing, each at most once): row i of the copy is
+    // rows[i] here, for a geometry that holds those rows (WellGeometry::sampled).
+    WallColouring rowsOf(const std::vector<std::size_t>& rows) const;
 
     std::uint32_t colour(std::size_t row, double radius_mm) const;
     // The colour of the wall point `angleFromArm1_deg` clockwise from arm 1 (about the

@@ -1,5 +1,6 @@
 #include "reconstruction/well_geometry.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <memory>
@@ -281,4 +282,33 @@ TEST(WellGeometryTest, ASampleKeepsItsRowsPlacedExactlyAsTheWholeWell) {
     EXPECT_EQ(seven.path().back().tvd, whole.path().back().tvd);
     // A well of no more rows than asked is kept whole.
     EXPECT_EQ(whole.sampled(rows).table().rowCount(), rows);
+}
+
+// A well held by rows chosen by name: those of its segments' ends cut it as the whole well is
+// cut, and those of its path line draw the same line.
+TEST(WellGeometryTest, AWellHeldByItsSegmentEndsAndPathLineRowsKeepsItsSegmentsAndLine) {
+    const WellGeometry whole(std::make_shared<const caliper3d::io::SectionTable>(
+                                 makeSyntheticWell(syntheticProfile("example", 300.0, 0.01))),
+                             GeometryOptions{});
+    std::vector<std::size_t> rows = pathLineRows(whole, 2.5);
+    for (std::size_t s = 0; s < whole.segmentCount(); ++s) {
+        rows.push_back(whole.segmentRows(s).first);
+        rows.push_back(whole.segmentRows(s).second);
+    }
+    for (std::size_t row = 0; row < whole.table().rowCount(); row += 997) rows.push_back(row);
+    std::sort(rows.begin(), rows.end());
+    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    const WellGeometry held = whole.sampled(rows);
+    ASSERT_EQ(held.table().rowCount(), rows.size());
+    ASSERT_LT(rows.size(), whole.table().rowCount() / 10);
+    ASSERT_EQ(held.segmentCount(), whole.segmentCount());
+    for (std::size_t s = 0; s < whole.segmentCount(); ++s) {
+        EXPECT_EQ(rows[held.segmentRows(s).first], whole.segmentRows(s).first) << s;
+        EXPECT_EQ(rows[held.segmentRows(s).second], whole.segmentRows(s).second) << s;
+    }
+    const std::vector<glm::vec3> line = pathLine(whole, 2.5);
+    EXPECT_EQ(pathLine(held, 2.5), line);
+    EXPECT_EQ(line.size(), pathLineRows(whole, 2.5).size());
+    EXPECT_EQ(everyKthRow(10, 3), (std::vector<std::size_t>{0, 3, 6, 9}));
+    EXPECT_EQ(everyKthRow(11, 3), (std::vector<std::size_t>{0, 3, 6, 9, 10}));
 }

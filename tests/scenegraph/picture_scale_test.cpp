@@ -65,6 +65,21 @@ TEST(PictureScaleTest, RoundsDownToOneTwoThreeFive) {
     EXPECT_DOUBLE_EQ(roundDownToSeries(0.7), 0.5);
 }
 
+// The factors a field's coarse meshes are planned for hold every factor the picture chooses.
+TEST(PictureScaleTest, TheSeriesOfExaggerationsHoldsEveryFactorChosen) {
+    const std::vector<double> series = seriesExaggerations();
+    EXPECT_EQ(series, (std::vector<double>{1, 2, 3, 5, 10, 20, 30, 50, 100, 200, 300, 500, 1000}));
+    for (double extent = 1.0; extent < 1.0e6; extent *= 1.37)
+        for (const double radius : {0.05, 0.1, 0.2}) {
+            const double chosen = autoExaggeration(extent, radius, 800);
+            EXPECT_TRUE(std::find(series.begin(), series.end(), chosen) != series.end()) << chosen;
+            const double separated = separatedExaggeration(extent / 100.0, radius, radius);
+            if (separated >= 1.0)
+                EXPECT_TRUE(std::find(series.begin(), series.end(), separated) != series.end())
+                    << separated;
+        }
+}
+
 TEST(PictureScaleTest, AutoExaggerationOfKnownWells) {
     const double r = 0.10795;  // 8.5 in bit
     // 1.5 % of 1000 m is 15 m of diameter: 69.5 times the 0.2159 m hole, stated as 100.

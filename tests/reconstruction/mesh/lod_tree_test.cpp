@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -254,4 +255,68 @@ TEST(LodTreeTest, ASpanOfAnUnchangingHoleHasNoErrorButItsPolygonsAndTheToolsTurn
     for (const SpanMesh& span : buildSpanMeshes(example))
         largest = std::max(largest, span.error_mm);
     EXPECT_GT(largest, 2.0 * chord_mm);
+}
+
+namespace {
+
+void expectSameMesh(const Mesh& a, const Mesh& b, const std::string& what) {
+    EXPECT_EQ(a.positions, b.positions) << what;
+    EXPECT_EQ(a.normals, b.normals) << what;
+    EXPECT_EQ(a.colours, b.colours) << what;
+    EXPECT_EQ(a.stripIndices, b.stripIndices) << what;
+}
+
+}  // namespace
+
+TEST(LodTreeTest, APlannedWellDrawsFromTheRowsItKeepsWhatTheWholeWellDraws) {
+    // The coarse meshes planned on the whole well (a breakout, a washout, a build, a stretch
+    // without data), then drawn from a copy holding only the rows the plan keeps: the same
+    // meshes, errors and bounds as those built from the whole well, at each exaggeration the
+    // plan lists; at another, the same meshes and errors no smaller than the whole well's.
+    const WellGeometry g(exampleWell(300.0, 0.01), GeometryOptions{});
+    const CoarsePlan plan = planCoarseMeshes(g, kFieldFirstCoarseLevel, {1.0, 20.0});
+    const std::vector<std::size_t> rows = plan.rows();
+    ASSERT_TRUE(std::is_sorted(rows.begin(), rows.end()));
+    EXPECT_LT(rows.size(), g.table().rowCount() / 5);
+    const WellGeometry held = g.sampled(rows);
+    ASSERT_EQ(held.segmentCount(), g.segmentCount());
+    for (const double exaggeration : {1.0, 20.0, 7.0}) {
+        SCOPED_TRACE("x" + std::to_string(exaggeration));
+        const CoarseMeshes whole =
+            buildCoarseMeshes(g.restyled(exaggeration, nullptr), kFieldFirstCoarseLevel);
+        const CoarseMeshes drawn =
+            buildCoarseMeshes(held.restyled(exaggeration, nullptr), plan, &rows, 1);
+        ASSERT_EQ(drawn.segments.size(), whole.segments.size());
+        for (std::size_t s = 0; s < whole.segments.size(); ++s) {
+            const SegmentMesh &a = whole.segments[s], &b = drawn.segments[s];
+            EXPECT_EQ(b.firstRow, a.firstRow);
+            EXPECT_EQ(b.lastRow, a.lastRow);
+            EXPECT_EQ(b.top_m, a.top_m);
+            EXPECT_EQ(b.fullDetailTriangles, a.fullDetailTriangles);
+            EXPECT_EQ(b.levelError_mm, a.levelError_mm);
+            EXPECT_EQ(b.maxRadius_m, a.maxRadius_m);
+            EXPECT_EQ(b.centre, a.centre);
+            EXPECT_EQ(b.radius, a.radius);
+            ASSERT_EQ(b.levels.size(), a.levels.size());
+            for (std::size_t l = 0; l < a.levels.size(); ++l)
+                expectSameMesh(a.levels[l], b.levels[l], "segment " + std::to_string(s));
+        }
+        ASSERT_EQ(drawn.spans.size(), whole.spans.size());
+        for (std::size_t i = 0; i < whole.spans.size(); ++i) {
+            const SpanMesh &a = whole.spans[i], &b = drawn.spans[i];
+            const std::string span = std::to_string(a.depth) + "/" + std::to_string(a.index);
+            EXPECT_EQ(b.firstRow, a.firstRow) << span;
+            EXPECT_EQ(b.lastRow, a.lastRow) << span;
+            EXPECT_EQ(b.centre, a.centre) << span;
+            EXPECT_EQ(b.maxRadius_m, a.maxRadius_m) << span;
+            if (exaggeration == 7.0) {
+                EXPECT_GE(b.error_mm, a.error_mm) << span;
+                EXPECT_GE(b.radius, a.radius) << span;
+            } else {
+                EXPECT_EQ(b.error_mm, a.error_mm) << span;
+                EXPECT_EQ(b.radius, a.radius) << span;
+            }
+            expectSameMesh(a.mesh, b.mesh, "span " + span);
+        }
+    }
 }

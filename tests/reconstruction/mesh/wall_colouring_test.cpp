@@ -73,6 +73,39 @@ TEST(WallColouringTest, RowValuesMapOverTheirRangeAndCategoriesTakeTheirColours)
     EXPECT_EQ(k.colour(3, 0.0), kNoValueColour);  // not a category
 }
 
+// The colours of some rows only, for a well held by those rows: each row's colour as before,
+// by direction too, and the same legend.
+TEST(WallColouringTest, AColouringOfSomeRowsColoursEachAsTheWholeDid) {
+    ColourLegend legend;
+    legend.title = "diameter";
+    const WallColouring rows = WallColouring::perRow({0.0f, 2.0f, 5.0f, kNaN, 10.0f},
+                                                     ColourMapKind::Sequential, 0.0, 10.0, legend);
+    const std::vector<std::size_t> kept{1, 3, 4};
+    const WallColouring some = rows.rowsOf(kept);
+    ASSERT_EQ(some.rowCount(), 3u);
+    EXPECT_EQ(some.legend().title, "diameter");
+    for (std::size_t i = 0; i < kept.size(); ++i)
+        EXPECT_EQ(some.colour(i, 100.0), rows.colour(kept[i], 100.0)) << i;
+    // Per direction: rows 0 and 2 have values round the section (slots 0 and 1), row 1 not.
+    DirectionalValues directional;
+    directional.bins = 4;
+    directional.step = 0.5f;
+    directional.slot = {0, -1, 1};
+    directional.arm1Angle_deg = {0.0f, 45.0f};
+    directional.values = {0, 4, 8, 12, 20, 16, kNoDirectionalValue, 2};
+    const WallColouring round = WallColouring::perDirection(
+        {1.0f, 3.0f, 9.0f}, directional, ColourMapKind::Sequential, 0.0, 10.0, {});
+    const std::vector<std::size_t> ends{0, 2};
+    const WallColouring both = round.rowsOf(ends);
+    ASSERT_EQ(both.rowCount(), 2u);
+    EXPECT_TRUE(both.byDirection());
+    for (std::size_t i = 0; i < ends.size(); ++i)
+        for (const double angle : {0.0, 30.0, 95.0, 180.0, 250.0, 359.0})
+            EXPECT_EQ(both.colour(i, 100.0, angle), round.colour(ends[i], 100.0, angle))
+                << i << " at " << angle;
+    EXPECT_EQ(round.rowsOf({1}).colour(0, 100.0, 90.0), round.colour(1, 100.0, 90.0));
+}
+
 TEST(WallColouringTest, EveryWallPointTakesItsRowsColour) {
     auto table = std::make_shared<const caliper3d::io::SectionTable>(
         makeSyntheticWell(syntheticProfile("circle", 4.0, 0.1)));
