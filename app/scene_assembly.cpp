@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -17,7 +18,6 @@
 #include <Inventor/nodes/SoSeparator.h>
 
 #include "app/change_colouring.h"
-#include "io/parked_rows.h"
 #include "io/parse_error.h"
 #include "io/picks_reader.h"
 #include "reconstruction/analysis/wall_colour_request.h"
@@ -29,6 +29,7 @@
 #include "reconstruction/well_geometry.h"
 #include "scenegraph/colour_legend.h"
 #include "scenegraph/pick_markers.h"
+#include "scenegraph/picture_scale.h"
 #include "scenegraph/render_stats.h"
 #include "scenegraph/well_scene.h"
 
@@ -47,19 +48,50 @@ AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOpt
 
 namespace {
 
-// One well as its worker left it: loaded with its picks, or the exception that stopped it.
+// A file's size and last change, to tell whether a log read again is the log that was read.
+struct FileStamp {
+    std::uintmax_t size = 0;
+    std::filesystem::file_time_type changed{};
+    bool operator==(const FileStamp& o) const { return size == o.size && changed == o.changed; }
+};
+FileStamp stampOf(const std::string& path) {
+    std::error_code error;
+    FileStamp stamp;
+    stamp.size = std::filesystem::file_size(path, error);
+    if (!error) stamp.changed = std::filesystem::last_write_time(path, error);
+    return stamp;
+}
+
+// One well as its worker left it: loaded with its picks and the plan of its coarse meshes,
+// or the exception that stopped it.
 struct LoadSlot {
     reconstruction::LoadedWell well;
     std::vector<io::Pick> picks;
+    std::shared_ptr<const reconstruction::CoarsePlan> plan;
     std::exception_ptr error;
+    FileStamp stamp;  // the log as it was read
 };
 
-// One well loaded with its picks, or the exception that stopped it.
+// What each well of a field plans of its coarse meshes as it is read, while it holds every
+// row (reconstruction::planCoarseMeshes): its levels from `firstLevel` on, for every
+// exaggeration the field may be drawn at (the one asked, and any chooseExaggeration picks).
+struct MeshPlanning {
+    int firstLevel = reconstruction::kFieldFirstCoarseLevel;
+    std::vector<double> exaggerations;
+};
+
+// One well loaded with its picks (and, with `planning`, its coarse meshes' plan), or the
+// exception that stopped it.
 LoadSlot loadOne(const WellSource& well, const LoadOptions& options,
-                 const reconstruction::Wellhead& origin) {
+                 const reconstruction::Wellhead& origin, const MeshPlanning* planning = nullptr) {
     LoadSlot slot;
     try {
+        slot.stamp = stampOf(well.path);
         slot.well = reconstruction::loadWell(well, options, origin);
+        if (planning)
+            slot.plan =
+                std::make_shared<const reconstruction::CoarsePlan>(reconstruction::planCoarseMeshes(
+                    *slot.well.geometry, planning->firstLevel, planning->exaggerations, 1));
         if (!well.picksPath.empty()) {
             io::PickFile picks = io::readPicks(well.picksPath);
             slot.well.diagnostics.merge(picks.diagnostics);
@@ -105,8 +137,12 @@ struct Loaded {
     std::exception_ptr colourError;  // why a well could not be coloured as asked
     std::vector<char> whole;
     std::vector<reconstruction::ColourLegend> legends;
-    // Each sampled well's rows, parked whole as they were read (null: read the log again).
-    std::vector<std::shared_ptr<const io::ParkedRows>> parked;
+    std::vector<FileStamp> stamps;  // each well's log as it was read
+    // Each well's coarse meshes' plan (null: none was made), and for a well held by the rows
+    // its meshes draw (heldRows: the whole well's rows it holds), its own colouring of those.
+    std::vector<std::shared_ptr<const reconstruction::CoarsePlan>> plans;
+    std::vector<std::vector<std::size_t>> heldRows;
+    std::vector<std::shared_ptr<const reconstruction::WallColouring>> heldColouring;
 };
 
 // Well `w`'s line of out.inputs: its rows and warnings, or why it failed (said on stderr as
@@ -120,6 +156,8 @@ void takeOne(const std::vector<WellSource>& wells, std::size_t w, LoadSlot& slot
         if (slot.error) std::rethrow_exception(slot.error);
         reconstruction::LoadedWell& one = slot.well;
         kept.picks.push_back(std::move(slot.picks));
+        kept.plans.push_back(std::move(slot.plan));
+        kept.stamps.push_back(slot.stamp);
         kept.geometries.push_back(one.geometry);
         kept.files.push_back(well.path);
         kept.sources.push_back(w);
@@ -160,12 +198,28 @@ Loaded takeLoaded(const std::vector<WellSource>& wells, std::vector<LoadSlot> lo
 // 0.25 m of a kilometre for its labels.
 constexpr std::size_t kLeanRows = 4096;
 
+// The rows a well of a field held lean keeps when its coarse meshes were planned: those
+// (every row they draw or step over), those of its path line, and kLeanRows of the rest.
+std::vector<std::size_t> heldRows(const reconstruction::WellGeometry& whole,
+                                  const reconstruction::CoarsePlan& plan) {
+    std::vector<std::size_t> rows = plan.rows();
+    const std::vector<std::size_t> line = reconstruction::pathLineRows(whole);
+    const std::vector<std::size_t> every =
+        reconstruction::everyKthRow(whole.table().rowCount(), kLeanRows);
+    rows.insert(rows.end(), line.begin(), line.end());
+    rows.insert(rows.end(), every.begin(), every.end());
+    std::sort(rows.begin(), rows.end());
+    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    return rows;
+}
+
 // Loads every well as loadAll does, taking each in order as it arrives (takeOne); once the
 // wells taken hold more rows than `rows.budget`, every well taken from then on, and those
-// before, is kept by a sample of its rows (its own colouring's legend taken first).
+// before, is kept by the rows its coarse meshes' plan draws and a sample of the rest
+// (heldRows), with its own colouring of them (made on the whole well first).
 Loaded loadLean(const std::vector<WellSource>& wells, const LoadOptions& options,
                 const reconstruction::Wellhead& origin, const FieldRows& rows,
-                AssembledScene& out) {
+                const MeshPlanning& planning, AssembledScene& out) {
     Loaded kept;
     std::vector<LoadSlot> loads(wells.size());
     LoadOptions each = options;
@@ -174,33 +228,39 @@ Loaded loadLean(const std::vector<WellSource>& wells, const LoadOptions& options
     std::size_t held = 0;
     const auto sample = [&](std::size_t k) {
         if (kept.colourError) return;  // the field fails as a whole (failWells)
+        std::shared_ptr<const reconstruction::WallColouring> own;
         try {
-            kept.legends[k] =
-                reconstruction::makeWallColouring(*kept.geometries[k], options.colour)->legend();
+            own = reconstruction::makeWallColouring(*kept.geometries[k], options.colour);
+            kept.legends[k] = own->legend();
         } catch (const std::invalid_argument&) {
             kept.colourError = std::current_exception();
             return;
         }
         if (rows.keepFirstWhole && kept.sources[k] == 0) return;
         kept.whole[k] = 0;
-        try {
-            kept.parked[k] = std::make_shared<const io::ParkedRows>(kept.geometries[k]->table());
-        } catch (const std::runtime_error& e) {
-            std::fprintf(stderr, "%s; %s is read again\n", e.what(), kept.files[k].c_str());
+        const reconstruction::WellGeometry& whole = *kept.geometries[k];
+        if (kept.plans[k]) {
+            kept.heldRows[k] = heldRows(whole, *kept.plans[k]);
+            kept.heldColouring[k] = std::make_shared<const reconstruction::WallColouring>(
+                own->rowsOf(kept.heldRows[k]));
+            kept.geometries[k] = std::make_shared<const reconstruction::WellGeometry>(
+                whole.sampled(kept.heldRows[k]));
+        } else {
+            kept.geometries[k] =
+                std::make_shared<const reconstruction::WellGeometry>(whole.sampled(kLeanRows));
         }
-        kept.geometries[k] = std::make_shared<const reconstruction::WellGeometry>(
-            kept.geometries[k]->sampled(kLeanRows));
     };
     reconstruction::forEachBlockInOrder(
         wells.size(), threads,
-        [&](std::size_t w, std::size_t) { loads[w] = loadOne(wells[w], each, origin); },
+        [&](std::size_t w, std::size_t) { loads[w] = loadOne(wells[w], each, origin, &planning); },
         [&](std::size_t w) {
             const std::size_t before = kept.geometries.size();
             takeOne(wells, w, loads[w], out, kept);
             if (kept.geometries.size() == before) return;  // failed
             kept.whole.push_back(1);
             kept.legends.emplace_back();
-            kept.parked.emplace_back();
+            kept.heldRows.emplace_back();
+            kept.heldColouring.emplace_back();
             held += kept.geometries.back()->table().rowCount();
             if (kept.lean) {
                 sample(before);
@@ -212,10 +272,11 @@ Loaded loadLean(const std::vector<WellSource>& wells, const LoadOptions& options
     return kept;
 }
 
-// Reads a well of a field held lean again, as drawn: its colouring shared with the field's
-// (or its own) and the field's exaggeration. Its rows come back from where they were parked
-// (the sample gives the table's curves and the geometry's options, which are the whole well's),
-// else from the log. Copies what it needs: a picture keeps it.
+// Reads a well of a field held lean again from its log, as drawn: its colouring shared with
+// the field's (or its own) and the field's exaggeration; what a picture asks for where its
+// camera wants finer levels than the coarse meshes (scenegraph::refineForCamera). A log that
+// changed since it was loaded is refused, naming it: its finer levels would draw another well.
+// Copies what it needs: a picture keeps it.
 struct WellReader {
     WellSource source;
     LoadOptions options;
@@ -224,17 +285,16 @@ struct WellReader {
     std::optional<reconstruction::ColourRequest> shared;
     reconstruction::ColourLegend own;
     std::size_t wells = 1;
-    std::shared_ptr<const io::ParkedRows> parked;
-    std::shared_ptr<const reconstruction::WellGeometry> sample;
+    FileStamp stamp;
 
     std::shared_ptr<const reconstruction::WellGeometry> operator()() const {
-        std::shared_ptr<const reconstruction::WellGeometry> whole;
-        if (parked && sample)
-            whole = std::make_shared<const reconstruction::WellGeometry>(
-                std::make_shared<const io::SectionTable>(parked->read(sample->table())),
-                sample->options());
-        else
-            whole = reconstruction::loadWell(source, options, origin).geometry;
+        if (!(stampOf(source.path) == stamp))
+            throw std::runtime_error(source.path +
+                                     ": changed since it was loaded (its size or time of last "
+                                     "change differs): its finer levels are not drawn from "
+                                     "another log; run the command again");
+        const std::shared_ptr<const reconstruction::WellGeometry> whole =
+            reconstruction::loadWell(source, options, origin).geometry;
         return std::make_shared<const reconstruction::WellGeometry>(
             whole->restyled(exaggeration, colouring(*whole)));
     }
@@ -278,8 +338,9 @@ void addWell(AssembledScene& out, BuiltWell& built,
 }
 
 // The scene of a field held lean: the exaggeration planned over the samples, the colours shared
-// from each well's own legend, each well read again (a worker ahead of the nodes, as
-// MeshesAhead does) to build its coarse meshes, then let go of but for its sample.
+// from each well's own legend, and each well's coarse meshes built (a worker ahead of the
+// nodes, as MeshesAhead does) from the rows it holds, as its plan says; a well without a plan
+// is read again for them, then let go of but for its sample.
 void buildLean(const std::vector<WellSource>& wells, const LoadOptions& options,
                const reconstruction::Wellhead& origin, const ScenePlan& plan, int firstCoarseLevel,
                Loaded& loaded, AssembledScene& out) {
@@ -292,20 +353,34 @@ void buildLean(const std::vector<WellSource>& wells, const LoadOptions& options,
     readers.reserve(count);
     for (std::size_t k = 0; k < count; ++k)
         readers.push_back({wells[loaded.sources[k]], options, origin, exaggeration, shared,
-                           loaded.legends[k], count, loaded.parked[k], loaded.geometries[k]});
-    // Two wells at a time: placing a well's rows read back keeps one core busy by itself (about
-    // 45 ms for 400,000 rows, against 35 ms for its coarse meshes on both cores), and the main
-    // thread mostly waits for them.
+                           loaded.legends[k], count, loaded.stamps[k]});
+    // Two wells at a time, each on one thread (the machine's two cores), while the main thread
+    // makes nodes: a well held by its planned rows draws its meshes in a few milliseconds, a
+    // well without a plan is read again and placed on one thread.
     MeshesAhead ahead(
         count,
         [&](std::size_t k) {
             BuiltWell built;
             const auto& sample = loaded.geometries[k];
-            built.geometry =
-                loaded.whole[k] ? std::make_shared<const reconstruction::WellGeometry>(
-                                      sample->restyled(exaggeration, readers[k].colouring(*sample)))
-                                : readers[k]();
-            built.meshes = reconstruction::buildCoarseMeshes(*built.geometry, firstCoarseLevel);
+            const reconstruction::CoarsePlan* plan = loaded.plans[k].get();
+            if (loaded.whole[k]) {
+                built.geometry = std::make_shared<const reconstruction::WellGeometry>(
+                    sample->restyled(exaggeration, readers[k].colouring(*sample)));
+            } else if (plan) {
+                const auto& own = loaded.heldColouring[k];
+                built.geometry =
+                    std::make_shared<const reconstruction::WellGeometry>(sample->restyled(
+                        exaggeration,
+                        shared ? reconstruction::sharedWallColouring(*own, *shared, count) : own));
+                built.meshes = reconstruction::buildCoarseMeshes(*built.geometry, *plan,
+                                                                 &loaded.heldRows[k], 1);
+                return built;
+            } else {
+                built.geometry = readers[k]();
+            }
+            built.meshes =
+                plan ? reconstruction::buildCoarseMeshes(*built.geometry, *plan, nullptr, 1)
+                     : reconstruction::buildCoarseMeshes(*built.geometry, firstCoarseLevel);
             return built;
         },
         3, 2);
@@ -334,7 +409,13 @@ AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOpt
     out.root->setName("caliper3d_scene");
     const reconstruction::Wellhead origin = reconstruction::sceneOrigin(wells);
     const bool mayHoldLean = rows.budget > 0 && wells.size() > 1 && !coloursByChange(options);
-    Loaded wellsLoaded = mayHoldLean ? loadLean(wells, options, origin, rows, out)
+    MeshPlanning planning;
+    if (mayHoldLean) {
+        planning.firstLevel = firstCoarseLevel;
+        planning.exaggerations = scenegraph::seriesExaggerations();
+        planning.exaggerations.push_back(options.radialExaggeration);
+    }
+    Loaded wellsLoaded = mayHoldLean ? loadLean(wells, options, origin, rows, planning, out)
                                      : takeLoaded(wells, loadAll(wells, options, origin), out);
     if (wellsLoaded.lean) {
         try {
@@ -373,6 +454,8 @@ AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOpt
             failAll(e);
         }
     }
+    // The wells as read (held, so that a well the plan cuts is told apart from them).
+    const std::vector<std::shared_ptr<const reconstruction::WellGeometry>> asRead = loaded;
     if (plan && !loaded.empty()) plan(loaded, exaggeration);
     std::vector<std::shared_ptr<const reconstruction::WallColouring>> colourings;
     try {
@@ -391,7 +474,12 @@ AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOpt
         BuiltWell built;
         built.geometry = std::make_shared<const reconstruction::WellGeometry>(
             loaded[w]->restyled(exaggeration, colourings[w]));
-        built.meshes = reconstruction::buildCoarseMeshes(*built.geometry, firstCoarseLevel);
+        // The plan made as the well was read, unless the scene's plan cut the well.
+        const reconstruction::CoarsePlan* planned =
+            asRead[w] == loaded[w] ? wellsLoaded.plans[w].get() : nullptr;
+        built.meshes = planned
+                           ? reconstruction::buildCoarseMeshes(*built.geometry, *planned)
+                           : reconstruction::buildCoarseMeshes(*built.geometry, firstCoarseLevel);
         return built;
     });
     for (std::size_t w = 0; w < loaded.size(); ++w) {
