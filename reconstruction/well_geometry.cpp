@@ -133,6 +133,8 @@ void WellGeometry::computePathAndOrientation() {
         m_placed->path.resize(rows);
     }
     m_placed->orientation.resize(rows);
+    // Each row's unit tangent, from the sines and cosines its step took, for the dogleg severity.
+    std::vector<glm::dvec3> tangents(fromSurvey ? 0 : rows);
 
     // Each block computes its rows' minimum-curvature steps from one set of
     // sines and cosines per row, and which reading orients each row; the positions are then the
@@ -150,7 +152,8 @@ void WellGeometry::computePathAndOrientation() {
         [&](std::size_t block, std::size_t) {
             if (cancelled()) return;
             const std::size_t first = block * kBlockRows, last = std::min(rows, first + kBlockRows);
-            if (!fromSurvey) computeSteps(first, last, startInc[block], startAzi[block]);
+            if (!fromSurvey)
+                computeSteps(first, last, startInc[block], startAzi[block], tangents.data());
             computeOrientation(first, last);
         },
         [&](std::size_t block) {
@@ -167,7 +170,7 @@ void WellGeometry::computePathAndOrientation() {
     if (cancelled()) throw GeometryCancelled();
     // From the log's own DEVI and HAZI, dogleg severity over a course length, not between
     // samples (a survey's is between its stations already).
-    if (!fromSurvey) setCourseLengthDls(m_placed->path);
+    if (!fromSurvey) setCourseLengthDls(m_placed->path, tangents);
 }
 
 // Segments of equal length; consecutive segments share their boundary row.
@@ -190,7 +193,8 @@ void WellGeometry::cutSegments() {
 // Path points of rows [first, last) from the log's DEVI and HAZI (nulls carry
 // the last reading forward, starting from `inc` and `azi`), each holding its minimum-curvature step
 // from the row before in north/east/tvd until the constructor sums them.
-void WellGeometry::computeSteps(std::size_t first, std::size_t last, double inc, double azi) {
+void WellGeometry::computeSteps(std::size_t first, std::size_t last, double inc, double azi,
+                                glm::dvec3* tangents) {
     const io::SectionTable& t = *m_table;
     const bool departureKnown = holeAzimuthKnown();
     HoleDirection previous(inc, azi), current = previous;
@@ -234,6 +238,8 @@ void WellGeometry::computeSteps(std::size_t first, std::size_t last, double inc,
             p.north = 0.0;
             p.east = 0.0;
         }
+        tangents[i] = {current.sinInc * current.cosAzi, current.sinInc * current.sinAzi,
+                       current.cosInc};
         previous = current;
     }
 }

@@ -170,7 +170,9 @@ private:
     void computePathAndOrientation();
     bool cancelled() const;
     void cutSegments();
-    void computeSteps(std::size_t first, std::size_t last, double inc, double azi);
+    // Also writes each row's unit tangent (north, east, down) to tangents[row].
+    void computeSteps(std::size_t first, std::size_t last, double inc, double azi,
+                      glm::dvec3* tangents);
     void computeOrientation(std::size_t first, std::size_t last);
 
     // What the constructor computes, shared (never changed after) by restyled copies.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -20,14 +21,15 @@ glm::dvec3 tangent(const PathPoint& p) {
 // md, and the mean depth it belongs to.
 class MeanDirection {
 public:
-    explicit MeanDirection(const std::vector<PathPoint>& path) : m_path(path) {
+    // `tangents`: each point's unit tangent, or null to take it from the point's angles.
+    MeanDirection(const std::vector<PathPoint>& path, const glm::dvec3* tangents) : m_path(path) {
         m_sum.reserve(path.size() + 1);
         m_sum.emplace_back(0.0);
         m_mdSum.reserve(path.size() + 1);
         m_mdSum.push_back(0.0);
-        for (const PathPoint& p : path) {
-            m_sum.push_back(m_sum.back() + tangent(p));
-            m_mdSum.push_back(m_mdSum.back() + p.md);
+        for (std::size_t i = 0; i < path.size(); ++i) {
+            m_sum.push_back(m_sum.back() + (tangents ? tangents[i] : tangent(path[i])));
+            m_mdSum.push_back(m_mdSum.back() + path[i].md);
         }
     }
 
@@ -69,9 +71,12 @@ private:
 
 }  // namespace
 
-void setCourseLengthDls(std::vector<PathPoint>& path, double course_m, double window_m) {
+namespace {
+
+void setDls(std::vector<PathPoint>& path, const glm::dvec3* tangents, double course_m,
+            double window_m) {
     if (path.size() < 2 || !(path.back().md - path.front().md >= 1.0)) return;
-    const MeanDirection mean(path);
+    const MeanDirection mean(path, tangents);
     const double top = path.front().md, bottom = path.back().md;
     MeanDirection::Window upper, lower;
     for (PathPoint& p : path) {
@@ -86,6 +91,19 @@ void setCourseLengthDls(std::vector<PathPoint>& path, double course_m, double wi
         const double course = tb.md - ta.md;
         p.dls_degPer30m = course > 0.0 ? dogleg * 30.0 / course : 0.0;
     }
+}
+
+}  // namespace
+
+void setCourseLengthDls(std::vector<PathPoint>& path, double course_m, double window_m) {
+    setDls(path, nullptr, course_m, window_m);
+}
+
+void setCourseLengthDls(std::vector<PathPoint>& path, const std::vector<glm::dvec3>& tangents,
+                        double course_m, double window_m) {
+    if (tangents.size() != path.size())
+        throw std::invalid_argument("setCourseLengthDls: a tangent per path point");
+    setDls(path, tangents.data(), course_m, window_m);
 }
 
 }  // namespace caliper3d::reconstruction

@@ -2,6 +2,8 @@
 
 #include <vector>
 
+#include <glm/vec3.hpp>
+
 #include "reconstruction/path/minimum_curvature.h"
 
 namespace caliper3d::reconstruction {
@@ -19,6 +21,11 @@ constexpr double kDlsDirectionWindow_m = 1.5;
 // them. Points must be in increasing md; a path shorter than a metre keeps its values.
 // By hand: a prefix sum of unit tangents gives each mean direction in constant time.
 void setCourseLengthDls(std::vector<PathPoint>& path, double course_m = kDlsCourseLength_m,
+                        double window_m = kDlsDirectionWindow_m);
+// The same, with each point's unit tangent (north, east, down) given, as placing the path took
+// it from the same sines and cosines: bit for bit the same severities, without taking them again.
+void setCourseLengthDls(std::vector<PathPoint>& path, const std::vector<glm::dvec3>& tangents,
+                        double course_m = kDlsCourseLength_m,
                         double window_m = kDlsDirectionWindow_m);
 
 }  // namespace caliper3d::reconstruction
