@@ -5,11 +5,14 @@
 #include <cmath>
 #include <memory>
 #include <random>
+#include <stdexcept>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "reconstruction/analysis/well_analysis.h"
 #include "reconstruction/load/well_input.h"
+#include "reconstruction/path/hole_direction.h"
 #include "test_support.h"
 
 using namespace caliper3d;
@@ -45,6 +48,27 @@ TEST(CourseDoglegTest, ConstantBuildGivesItsRateAndAHoldGivesNone) {
             EXPECT_NEAR(p.dls_degPer30m, 0.0, 1e-6) << p.md;
         }
     }
+}
+
+// The tangents a path's placement took from its angles give the same severities bit for bit; a
+// path with a tangent too few is refused.
+TEST(CourseDoglegTest, GivenTangentsGiveTheSeveritiesTheAnglesGive) {
+    std::vector<PathPoint> path = stations(
+        0.0, 200.0, 0.1, [](double md) { return md / 8.0; },
+        [](double md) { return 10.0 + md / 5.0; });
+    std::vector<glm::dvec3> tangents;
+    for (const PathPoint& p : path) {
+        const HoleDirection d(p.inc_deg, p.azi_deg);
+        tangents.emplace_back(d.sinInc * d.cosAzi, d.sinInc * d.sinAzi, d.cosInc);
+    }
+    std::vector<PathPoint> given = path;
+    setCourseLengthDls(path);
+    setCourseLengthDls(given, tangents);
+    for (std::size_t i = 0; i < path.size(); ++i)
+        ASSERT_EQ(given[i].dls_degPer30m, path[i].dls_degPer30m) << i;
+    EXPECT_GT(path[1000].dls_degPer30m, 1.0);
+    tangents.pop_back();
+    EXPECT_THROW(setCourseLengthDls(given, tangents), std::invalid_argument);
 }
 
 // A turn of 3 deg/30 m in azimuth at 30 degrees inclination: 1.5 deg/30 m (= 3 sin 30).
