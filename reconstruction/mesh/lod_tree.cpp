@@ -100,10 +100,13 @@ void padDeviations(const WellGeometry& g, const std::vector<std::size_t>& candid
                 }
                 worstShape = std::max(worstShape, shape);
                 // Each point is within |dc| + F |ds| at F: a row that cannot beat the worst
-                // found at any F is passed over (most rows, once a few are in).
+                // found at any F is passed over (most rows, once a few are in). The bound is
+                // widened by far more than rounding can take from it, so a row is passed over
+                // only where its distance, as computed below, could not raise any F's worst:
+                // the worst at one F is the same whichever other factors are listed.
                 bool beats = false;
                 for (std::size_t f = 0; f < fs.size() && !beats; ++f) {
-                    const double bound = centroidDistance + fs[f] * shape;
+                    const double bound = (centroidDistance + fs[f] * shape) * (1.0 + 1e-9);
                     beats = bound * bound > worst2[f];
                 }
                 if (!beats) continue;
