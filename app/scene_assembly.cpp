@@ -138,11 +138,12 @@ struct Loaded {
     std::vector<char> whole;
     std::vector<reconstruction::ColourLegend> legends;
     std::vector<FileStamp> stamps;  // each well's log as it was read
-    // Each well's coarse meshes' plan (null: none was made), and for a well held by the rows
-    // its meshes draw (heldRows: the whole well's rows it holds), its own colouring of those.
+    // Each well's coarse meshes' plan (null: none was made). A field held lean: the whole
+    // well's rows a well is held by (heldRows; empty: held whole), and its own colouring of
+    // the rows it holds.
     std::vector<std::shared_ptr<const reconstruction::CoarsePlan>> plans;
     std::vector<std::vector<std::size_t>> heldRows;
-    std::vector<std::shared_ptr<const reconstruction::WallColouring>> heldColouring;
+    std::vector<std::shared_ptr<const reconstruction::WallColouring>> ownColouring;
 };
 
 // Well `w`'s line of out.inputs: its rows and warnings, or why it failed (said on stderr as
@@ -236,19 +237,15 @@ Loaded loadLean(const std::vector<WellSource>& wells, const LoadOptions& options
             kept.colourError = std::current_exception();
             return;
         }
+        kept.ownColouring[k] = own;
         if (rows.keepFirstWhole && kept.sources[k] == 0) return;
         kept.whole[k] = 0;
         const reconstruction::WellGeometry& whole = *kept.geometries[k];
-        if (kept.plans[k]) {
-            kept.heldRows[k] = heldRows(whole, *kept.plans[k]);
-            kept.heldColouring[k] = std::make_shared<const reconstruction::WallColouring>(
-                own->rowsOf(kept.heldRows[k]));
-            kept.geometries[k] = std::make_shared<const reconstruction::WellGeometry>(
-                whole.sampled(kept.heldRows[k]));
-        } else {
-            kept.geometries[k] =
-                std::make_shared<const reconstruction::WellGeometry>(whole.sampled(kLeanRows));
-        }
+        kept.heldRows[k] = heldRows(whole, *kept.plans[k]);
+        kept.ownColouring[k] =
+            std::make_shared<const reconstruction::WallColouring>(own->rowsOf(kept.heldRows[k]));
+        kept.geometries[k] =
+            std::make_shared<const reconstruction::WellGeometry>(whole.sampled(kept.heldRows[k]));
     };
     reconstruction::forEachBlockInOrder(
         wells.size(), threads,
@@ -260,7 +257,7 @@ Loaded loadLean(const std::vector<WellSource>& wells, const LoadOptions& options
             kept.whole.push_back(1);
             kept.legends.emplace_back();
             kept.heldRows.emplace_back();
-            kept.heldColouring.emplace_back();
+            kept.ownColouring.emplace_back();
             held += kept.geometries.back()->table().rowCount();
             if (kept.lean) {
                 sample(before);
@@ -339,11 +336,11 @@ void addWell(AssembledScene& out, BuiltWell& built,
 
 // The scene of a field held lean: the exaggeration planned over the samples, the colours shared
 // from each well's own legend, and each well's coarse meshes built (a worker ahead of the
-// nodes, as MeshesAhead does) from the rows it holds, as its plan says; a well without a plan
-// is read again for them, then let go of but for its sample.
+// nodes, as MeshesAhead does) from the rows it holds, as its plan says, in its own colouring
+// of them under the shared range.
 void buildLean(const std::vector<WellSource>& wells, const LoadOptions& options,
-               const reconstruction::Wellhead& origin, const ScenePlan& plan, int firstCoarseLevel,
-               Loaded& loaded, AssembledScene& out) {
+               const reconstruction::Wellhead& origin, const ScenePlan& plan, Loaded& loaded,
+               AssembledScene& out) {
     double exaggeration = options.radialExaggeration;
     if (plan) plan(loaded.geometries, exaggeration);
     const std::size_t count = loaded.geometries.size();
@@ -355,32 +352,19 @@ void buildLean(const std::vector<WellSource>& wells, const LoadOptions& options,
         readers.push_back({wells[loaded.sources[k]], options, origin, exaggeration, shared,
                            loaded.legends[k], count, loaded.stamps[k]});
     // Two wells at a time, each on one thread (the machine's two cores), while the main thread
-    // makes nodes: a well held by its planned rows draws its meshes in a few milliseconds, a
-    // well without a plan is read again and placed on one thread.
+    // makes nodes: a well held by its planned rows draws its meshes in a few milliseconds.
     MeshesAhead ahead(
         count,
         [&](std::size_t k) {
             BuiltWell built;
-            const auto& sample = loaded.geometries[k];
-            const reconstruction::CoarsePlan* plan = loaded.plans[k].get();
-            if (loaded.whole[k]) {
-                built.geometry = std::make_shared<const reconstruction::WellGeometry>(
-                    sample->restyled(exaggeration, readers[k].colouring(*sample)));
-            } else if (plan) {
-                const auto& own = loaded.heldColouring[k];
-                built.geometry =
-                    std::make_shared<const reconstruction::WellGeometry>(sample->restyled(
-                        exaggeration,
-                        shared ? reconstruction::sharedWallColouring(*own, *shared, count) : own));
-                built.meshes = reconstruction::buildCoarseMeshes(*built.geometry, *plan,
-                                                                 &loaded.heldRows[k], 1);
-                return built;
-            } else {
-                built.geometry = readers[k]();
-            }
-            built.meshes =
-                plan ? reconstruction::buildCoarseMeshes(*built.geometry, *plan, nullptr, 1)
-                     : reconstruction::buildCoarseMeshes(*built.geometry, firstCoarseLevel);
+            const auto& own = loaded.ownColouring[k];
+            built.geometry =
+                std::make_shared<const reconstruction::WellGeometry>(loaded.geometries[k]->restyled(
+                    exaggeration,
+                    shared ? reconstruction::sharedWallColouring(*own, *shared, count) : own));
+            built.meshes = reconstruction::buildCoarseMeshes(
+                *built.geometry, *loaded.plans[k], loaded.whole[k] ? nullptr : &loaded.heldRows[k],
+                1);
             return built;
         },
         3, 2);
@@ -420,7 +404,7 @@ AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOpt
     if (wellsLoaded.lean) {
         try {
             if (wellsLoaded.colourError) std::rethrow_exception(wellsLoaded.colourError);
-            buildLean(wells, options, origin, plan, firstCoarseLevel, wellsLoaded, out);
+            buildLean(wells, options, origin, plan, wellsLoaded, out);
         } catch (const std::invalid_argument& e) {
             if (!wellsLoaded.colourError) throw;
             failWells(wellsLoaded, e, out);

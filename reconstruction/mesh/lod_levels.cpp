@@ -319,9 +319,12 @@ std::vector<std::size_t> decimatedRows(const WellGeometry& g, std::size_t first,
 namespace {
 
 // What every level's switch needs of a segment: its largest drawn radius, each level's drawn
-// shape error, and its bounding sphere about the centres of `first` and `last` (rows of `g`).
+// shape error, its depths and its bounding sphere about the centres of `first` and `last`
+// (its end rows in `g`).
 void segmentBounds(SegmentMesh& out, const WellGeometry& g, const std::vector<LodLevel>& pyramid,
                    double maxRadius_mm, std::size_t first, std::size_t last) {
+    out.top_m = g.table().depth_m[first];
+    out.bottom_m = g.table().depth_m[last];
     const double exaggeration = g.options().radialExaggeration;
     const double drawn_mm = maxRadius_mm * exaggeration;
     // Sections are drawn about their centroids, within maxRadius of the path: a drawn point
@@ -392,8 +395,6 @@ SegmentMesh finishSegmentLevels(const WellGeometry& drawn, const SegmentPlan& pl
     out.lastRow = plan.lastRow;
     const std::size_t first = drawnRow(wholeRows, plan.firstRow);
     const std::size_t last = drawnRow(wholeRows, plan.lastRow);
-    out.top_m = drawn.table().depth_m[first];
-    out.bottom_m = drawn.table().depth_m[last];
     out.firstLevel = plan.firstLevel;
     out.fullDetailTriangles = plan.fullDetailTriangles;
     std::vector<std::size_t> rows;
@@ -422,8 +423,6 @@ SegmentMesh buildSegmentLevels(const WellGeometry& geometry, std::size_t segment
     out.index = segment;
     out.firstRow = first;
     out.lastRow = last;
-    out.top_m = geometry.table().depth_m[first];
-    out.bottom_m = geometry.table().depth_m[last];
     out.firstLevel = 0;
 
     const SegmentKnots knots(geometry, first, last);

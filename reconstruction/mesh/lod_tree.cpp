@@ -46,6 +46,12 @@ double samplerNorm(const PeriodicSplineSampler& sampler) {
     return worst;
 }
 
+// The children [from, to) of span `index` among the `children` spans of the depth below.
+std::pair<std::size_t, std::size_t> childSpans(std::size_t index, std::size_t children) {
+    const std::size_t from = index * kLodTreeFanOut;
+    return {from, std::min(from + kLodTreeFanOut, children)};
+}
+
 // The pads' part of a span's error at each exaggeration `fs` (SpanPlan::padError_mm): the
 // largest drawn distance between a measured candidate's pad polygon and the straight line (in
 // depth) between the polygons of the kept rows on either side of it, each polygon drawn about
@@ -157,8 +163,7 @@ SpanPlan planSpan(const WellGeometry& g, int depth, std::size_t index,
         for (std::size_t r = first; r <= last; ++r)
             if (r == first || r == last || g.measured(r)) candidates.push_back(r);
     } else {
-        const std::size_t from = index * kLodTreeFanOut;
-        const std::size_t to = std::min(from + kLodTreeFanOut, children.size());
+        const auto [from, to] = childSpans(index, children.size());
         for (std::size_t c = from; c < to; ++c) {
             const SpanPlan& child = children[c];
             for (std::size_t r : child.rows)
@@ -233,8 +238,7 @@ SpanMesh finishSpan(const WellGeometry& drawn, const SpanPlan& plan, const std::
     const LodLevel level = spanLevel(drawn.options(), drawn.knotCount(), plan.depth);
     double childRingError_mm = 0.0, childDeviation_m = 0.0;
     if (plan.depth > 1) {
-        const std::size_t from = plan.index * kLodTreeFanOut;
-        const std::size_t to = std::min(from + kLodTreeFanOut, children.size());
+        const auto [from, to] = childSpans(plan.index, children.size());
         for (std::size_t c = from; c < to; ++c) {
             childRingError_mm = std::max(childRingError_mm, children[c].ringError_mm);
             childDeviation_m = std::max(childDeviation_m, children[c].pathDeviation_m);
