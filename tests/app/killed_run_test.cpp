@@ -114,8 +114,11 @@ struct KilledRun {
 
 // Runs `verb` over wells of growing length until one is caught writing `target` (a short well
 // may be written before the test sees its temporary), then sends it `signal` while stopped.
+// A run that ended replaced `target` as it should: `previous` is put back before the next, so
+// the run caught is always writing over `previous` (on a slow machine the 2 km well's report
+// used to end first and stand in for it).
 KilledRun killWhileWriting(const std::string& verb, const fs::path& target, std::uintmax_t bytes,
-                           int signal) {
+                           int signal, const std::string& previous) {
     KilledRun run;
     for (const int length_m : {2000, 8000, 32000}) {
         const fs::path well = syntheticWell(length_m);
@@ -136,6 +139,7 @@ KilledRun killWhileWriting(const std::string& verb, const fs::path& target, std:
             run.caught = true;
             return run;
         }
+        std::ofstream(target, std::ios::binary | std::ios::trunc) << previous;
     }
     ADD_FAILURE() << "caliper3d " << verb << " wrote " << target
                   << " without a temporary file the test could catch, even from a 32 km well "
@@ -162,7 +166,7 @@ TEST(KilledRunTest, AReportKilledWhileWritingLeavesThePreviousReport) {
     const fs::path target = scratch("killed_report.csv");
     const std::string good = writeGoodOutput("report", target);
     // At least one buffer of rows written: the report is under way, not done.
-    const KilledRun run = killWhileWriting("report", target, 1, SIGKILL);
+    const KilledRun run = killWhileWriting("report", target, 1, SIGKILL, good);
     ASSERT_TRUE(run.caught);
     ASSERT_TRUE(WIFSIGNALED(run.status) && WTERMSIG(run.status) == SIGKILL) << run.log;
     EXPECT_TRUE(readBytes(target) == good) << "the previous report was replaced";
@@ -173,7 +177,7 @@ TEST(KilledRunTest, AReportKilledWhileWritingLeavesThePreviousReport) {
 TEST(KilledRunTest, AReportStoppedBySigtermLeavesThePreviousReportAndNoTemporary) {
     const fs::path target = scratch("terminated_report.csv");
     const std::string good = writeGoodOutput("report", target);
-    const KilledRun run = killWhileWriting("report", target, 1, SIGTERM);
+    const KilledRun run = killWhileWriting("report", target, 1, SIGTERM, good);
     ASSERT_TRUE(run.caught);
     ASSERT_TRUE(WIFSIGNALED(run.status) && WTERMSIG(run.status) == SIGTERM) << run.log;
     EXPECT_TRUE(readBytes(target) == good) << "the previous report was replaced";
@@ -185,7 +189,7 @@ TEST(KilledRunTest, AnExportKilledWhileWritingLeavesThePreviousScene) {
     const std::string good = writeGoodOutput("export", target);
     // The scene is serialised before its bytes reach the file: the temporary is empty all that
     // while (where the output itself used to be truncated to nothing).
-    const KilledRun run = killWhileWriting("export", target, 0, SIGKILL);
+    const KilledRun run = killWhileWriting("export", target, 0, SIGKILL, good);
     ASSERT_TRUE(run.caught);
     ASSERT_TRUE(WIFSIGNALED(run.status) && WTERMSIG(run.status) == SIGKILL) << run.log;
     EXPECT_TRUE(readBytes(target) == good) << "the previous scene was replaced";
