@@ -154,6 +154,9 @@ int renderPicture(const std::vector<WellSource>& sources, const RenderSettings& 
     // well again; the comparison needs the whole log).
     FieldRows rows;
     if (!plan.depth && !r.pick) rows = {kFieldRowBudget, r.downHole};
+    // Segments are made where the camera comes near (refineForCamera): a field or a long well
+    // seen whole draws spans only.
+    rows.segmentNodes = scenegraph::SegmentNodes::whenNear;
     AssembledScene scene = assembleScene(sources, r.options, std::ref(plan), firstLevel, rows);
     inputs = scene.inputs;
     if (scene.wells == 0) return kExitBadInput;

@@ -307,8 +307,36 @@ struct WellReader {
 // only: docs/threading.md).
 struct BuiltWell {
     std::shared_ptr<const reconstruction::WellGeometry> geometry;
-    reconstruction::CoarseMeshes meshes;
+    reconstruction::CoarseMeshes meshes;             // the spans only where the segments wait
+    scenegraph::WellScene::WaitingSegments waiting;  // segments made when near (build set)
 };
+
+// Well `drawn`'s meshes as `plan` says (wholeRows and threads: as buildCoarseMeshes), the
+// segments left to be made when a camera comes near where `nodes` says so.
+BuiltWell buildPlanned(std::shared_ptr<const reconstruction::WellGeometry> drawn,
+                       const std::shared_ptr<const reconstruction::CoarsePlan>& plan,
+                       const std::shared_ptr<const std::vector<std::size_t>>& wholeRows,
+                       scenegraph::SegmentNodes nodes, int threads) {
+    BuiltWell built;
+    if (nodes == scenegraph::SegmentNodes::now) {
+        built.meshes = reconstruction::buildCoarseMeshes(*drawn, *plan, wholeRows.get(), threads);
+    } else {
+        built.meshes.spans =
+            reconstruction::buildPlannedSpans(*drawn, *plan, wholeRows.get(), threads);
+        built.waiting.count = plan->segments.size();
+        for (const reconstruction::SegmentPlan& segment : plan->segments)
+            built.waiting.fullDetailTriangles += segment.fullDetailTriangles;
+        built.waiting.boxes.reserve(plan->segments.size());
+        for (const reconstruction::SegmentPlan& segment : plan->segments)
+            built.waiting.boxes.push_back(
+                reconstruction::plannedSegmentBox(*drawn, segment, wholeRows.get()));
+        built.waiting.build = [drawn, plan, wholeRows](std::size_t s) {
+            return reconstruction::finishSegmentLevels(*drawn, plan->segments[s], wholeRows.get());
+        };
+    }
+    built.geometry = std::move(drawn);
+    return built;
+}
 using MeshesAhead = reconstruction::BuiltAhead<BuiltWell>;
 
 // A well's scene from its coarse meshes, added to `out` and announced: `drawn` is the geometry
@@ -320,7 +348,10 @@ void addWell(AssembledScene& out, BuiltWell& built,
              const io::Diagnostics& diagnostics) {
     const reconstruction::WellGeometry& drawn = *built.geometry;
     auto scene = std::make_shared<scenegraph::WellScene>();
-    scene->attachAll(drawn, built.meshes);
+    if (built.waiting.build)
+        scene->attachAll(drawn, built.meshes.spans, std::move(built.waiting));
+    else
+        scene->attachAll(drawn, built.meshes);
     built.meshes = {};
     out.geometries.push_back(std::move(kept));
     out.rows.push_back(std::move(rows));
@@ -339,8 +370,8 @@ void addWell(AssembledScene& out, BuiltWell& built,
 // nodes, as MeshesAhead does) from the rows it holds, as its plan says, in its own colouring
 // of them under the shared range.
 void buildLean(const std::vector<WellSource>& wells, const LoadOptions& options,
-               const reconstruction::Wellhead& origin, const ScenePlan& plan, Loaded& loaded,
-               AssembledScene& out) {
+               const reconstruction::Wellhead& origin, const ScenePlan& plan,
+               const FieldRows& fieldRows, Loaded& loaded, AssembledScene& out) {
     double exaggeration = options.radialExaggeration;
     if (plan) plan(loaded.geometries, exaggeration);
     const std::size_t count = loaded.geometries.size();
@@ -356,16 +387,16 @@ void buildLean(const std::vector<WellSource>& wells, const LoadOptions& options,
     MeshesAhead ahead(
         count,
         [&](std::size_t k) {
-            BuiltWell built;
             const auto& own = loaded.ownColouring[k];
-            built.geometry =
+            return buildPlanned(
                 std::make_shared<const reconstruction::WellGeometry>(loaded.geometries[k]->restyled(
                     exaggeration,
-                    shared ? reconstruction::sharedWallColouring(*own, *shared, count) : own));
-            built.meshes = reconstruction::buildCoarseMeshes(
-                *built.geometry, *loaded.plans[k], loaded.whole[k] ? nullptr : &loaded.heldRows[k],
-                1);
-            return built;
+                    shared ? reconstruction::sharedWallColouring(*own, *shared, count) : own)),
+                loaded.plans[k],
+                loaded.whole[k] ? nullptr
+                                : std::make_shared<const std::vector<std::size_t>>(
+                                      std::move(loaded.heldRows[k])),
+                fieldRows.segmentNodes, 1);
         },
         3, 2);
     for (std::size_t k = 0; k < count; ++k) {
@@ -404,7 +435,7 @@ AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOpt
     if (wellsLoaded.lean) {
         try {
             if (wellsLoaded.colourError) std::rethrow_exception(wellsLoaded.colourError);
-            buildLean(wells, options, origin, plan, wellsLoaded, out);
+            buildLean(wells, options, origin, plan, rows, wellsLoaded, out);
         } catch (const std::invalid_argument& e) {
             if (!wellsLoaded.colourError) throw;
             failWells(wellsLoaded, e, out);
@@ -455,15 +486,21 @@ AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOpt
         failAll(e);
     }
     MeshesAhead ahead(loaded.size(), [&](std::size_t w) {
-        BuiltWell built;
-        built.geometry = std::make_shared<const reconstruction::WellGeometry>(
+        auto drawn = std::make_shared<const reconstruction::WellGeometry>(
             loaded[w]->restyled(exaggeration, colourings[w]));
         // The plan made as the well was read, unless the scene's plan cut the well.
-        const reconstruction::CoarsePlan* planned =
-            asRead[w] == loaded[w] ? wellsLoaded.plans[w].get() : nullptr;
-        built.meshes = planned
-                           ? reconstruction::buildCoarseMeshes(*built.geometry, *planned)
-                           : reconstruction::buildCoarseMeshes(*built.geometry, firstCoarseLevel);
+        std::shared_ptr<const reconstruction::CoarsePlan> planned =
+            asRead[w] == loaded[w] ? wellsLoaded.plans[w] : nullptr;
+        if (planned || rows.segmentNodes == scenegraph::SegmentNodes::whenNear) {
+            if (!planned)  // (buildCoarseMeshes(drawn, firstCoarseLevel) plans the same way)
+                planned = std::make_shared<const reconstruction::CoarsePlan>(
+                    reconstruction::planCoarseMeshes(*drawn, firstCoarseLevel,
+                                                     {drawn->options().radialExaggeration}));
+            return buildPlanned(std::move(drawn), planned, nullptr, rows.segmentNodes, 2);
+        }
+        BuiltWell built;
+        built.meshes = reconstruction::buildCoarseMeshes(*drawn, firstCoarseLevel);
+        built.geometry = std::move(drawn);
         return built;
     });
     for (std::size_t w = 0; w < loaded.size(); ++w) {

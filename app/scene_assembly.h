@@ -65,6 +65,8 @@ using ScenePlan =
 struct FieldRows {
     std::size_t budget = 0;       // rows; 0: every well holds every row
     bool keepFirstWhole = false;  // the first well keeps every row (a picture down its hole)
+    // A picture makes each span's segment nodes as its camera comes near (refineForCamera).
+    scenegraph::SegmentNodes segmentNodes = scenegraph::SegmentNodes::now;
 };
 // What `render` holds of a field before it holds it lean: about 330 MB of tables and paths.
 inline constexpr std::size_t kFieldRowBudget = 2'000'000;

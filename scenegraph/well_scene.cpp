@@ -10,8 +10,10 @@
 #include <Inventor/nodes/SoLightModel.h>
 #include <Inventor/nodes/SoLineSet.h>
 #include <Inventor/nodes/SoMaterial.h>
+#include <Inventor/nodes/SoPointSet.h>
 #include <Inventor/nodes/SoSeparator.h>
 #include <Inventor/nodes/SoShapeHints.h>
+#include <Inventor/nodes/SoVertexProperty.h>
 
 #include <algorithm>
 
@@ -23,6 +25,22 @@
 #include "scenegraph/segment_node_builder.h"
 
 namespace caliper3d::scenegraph {
+
+namespace {
+
+// Two points at a box's corners, never drawn: it stands among a span's children, which the
+// span's SoLOD does not choose while they wait, so that the span's bounds (which frame and cull
+// a picture) are those its segments will have.
+SoNode* boundsStandIn(const reconstruction::Box3& box) {
+    auto* vp = new SoVertexProperty;
+    vp->vertex.set1Value(0, box.lo.x, box.lo.y, box.lo.z);
+    vp->vertex.set1Value(1, box.hi.x, box.hi.y, box.hi.z);
+    auto* points = new SoPointSet;
+    points->vertexProperty = vp;
+    return points;
+}
+
+}  // namespace
 
 WellScene::WellScene() : m_root(new SoSeparator) {
     assertMainThread("WellScene");
@@ -125,9 +143,19 @@ std::size_t WellScene::ensureSpan(int depth, std::size_t index) {
 
 void WellScene::addSegment(const reconstruction::SegmentMesh& segment) {
     assertMainThread("WellScene::addSegment");
+    addRecord();
+    m_fullTriangles += segment.fullDetailTriangles;
+    makeSegmentNode(m_records.size() - 1, segment);
+}
+
+void WellScene::addRecord() {
     growTo(reconstruction::lodTreeDepth(m_records.size() + 1));
-    const std::size_t parent = ensureSpan(1, m_records.size() / reconstruction::kLodTreeFanOut);
-    Record record;
+    ensureSpan(1, m_records.size() / reconstruction::kLodTreeFanOut);
+    m_records.emplace_back();
+}
+
+void WellScene::makeSegmentNode(std::size_t index, const reconstruction::SegmentMesh& segment) {
+    Record& record = m_records[index];
     record.lod = makeSegmentLod(segment, m_view);
     record.centre = segment.centre;
     record.heldFrom = segment.firstLevel;
@@ -138,10 +166,21 @@ void WellScene::addSegment(const reconstruction::SegmentMesh& segment) {
     record.shape.levelError_mm = segment.levelError_mm;
     keepPartShapes(record, segment);
     record.switchDistances = lodSwitchDistances(segment, m_view);
-    m_spans[0][parent].children->addChild(record.lod);
-    m_segmentOfLod[record.lod] = m_records.size();
-    m_fullTriangles += segment.fullDetailTriangles;
-    m_records.push_back(std::move(record));
+    m_spans[0][index / reconstruction::kLodTreeFanOut].children->addChild(record.lod);
+    m_segmentOfLod[record.lod] = index;
+}
+
+void WellScene::makeSegmentNodes(std::size_t index) {
+    Span& span = m_spans[0][index];
+    if (span.segmentsMade) return;
+    const std::size_t first = index * reconstruction::kLodTreeFanOut;
+    const std::size_t end = std::min(first + reconstruction::kLodTreeFanOut, m_records.size());
+    span.children->removeAllChildren();  // the bounds' stand-in
+    for (std::size_t s = first; s < end; ++s)
+        if (!m_records[s].lod) makeSegmentNode(s, m_waiting(s));
+    span.segmentsMade = true;
+    setSpanRanges(span);
+    m_boundsStale = true;
 }
 
 void WellScene::buildAll(const reconstruction::WellGeometry& geometry, int firstLevel) {
@@ -156,8 +195,41 @@ void WellScene::attachAll(const reconstruction::WellGeometry& geometry,
     cacheBounds();
 }
 
+void WellScene::attachAll(const reconstruction::WellGeometry& geometry,
+                          const std::vector<reconstruction::SpanMesh>& spans,
+                          WaitingSegments segments) {
+    assertMainThread("WellScene::attachAll");
+    setPath(geometry);
+    m_waiting = std::move(segments.build);
+    for (std::size_t s = 0; s < segments.count; ++s) addRecord();
+    m_fullTriangles += segments.fullDetailTriangles;
+    if (!m_spans.empty())
+        for (Span& span : m_spans[0]) span.segmentsMade = false;
+    for (const reconstruction::SpanMesh& span : spans) addSpan(span);
+    for (std::size_t i = 0; !m_spans.empty() && i < m_spans[0].size(); ++i) {
+        Span& span = m_spans[0][i];
+        // A span without a merged mesh shows its segments from every distance.
+        if (!span.merged) {
+            makeSegmentNodes(i);
+            continue;
+        }
+        if (segments.boxes.size() != segments.count) continue;
+        reconstruction::Box3 box;
+        const std::size_t first = i * reconstruction::kLodTreeFanOut;
+        for (std::size_t s = first;
+             s < std::min(first + reconstruction::kLodTreeFanOut, segments.count); ++s)
+            if (!segments.boxes[s].empty()) {
+                box.extend(segments.boxes[s].lo);
+                box.extend(segments.boxes[s].hi);
+            }
+        if (!box.empty()) span.children->addChild(boundsStandIn(box));
+    }
+    cacheBounds();
+}
+
 void WellScene::cacheBounds() {
     assertMainThread("WellScene::cacheBounds");
+    m_boundsStale = false;
     SoGetBoundingBoxAction bounds{SbViewportRegion()};
     bounds.apply(m_segments);
 }
@@ -188,11 +260,7 @@ void WellScene::addSpan(const reconstruction::SpanMesh& mesh) {
     setSpanRanges(span);
 }
 
-void WellScene::setSpanRanges(Span& span) const {
-    if (!span.merged) {
-        span.lod->range.setNum(0);
-        return;
-    }
+std::pair<float, float> WellScene::spanSwitchDistances(const Span& span) const {
     const float scale = m_view.focal_px / m_view.pixelTolerance / 1000.0f;  // mm of error -> m
     float merged = span.error_mm * scale + span.radius;
     float empty = std::max(merged, 2000.0f * span.maxRadius_m * scale + span.radius);
@@ -200,8 +268,17 @@ void WellScene::setSpanRanges(Span& span) const {
         merged = std::min(merged, m_view.visibility_m + span.radius);
         empty = std::min(empty, m_view.visibility_m + span.radius);
     }
+    return {merged, empty};
+}
+
+void WellScene::setSpanRanges(Span& span) const {
+    if (!span.merged) {
+        span.lod->range.setNum(0);
+        return;
+    }
+    const auto [merged, empty] = spanSwitchDistances(span);
     span.lod->range.setNum(2);
-    span.lod->range.set1Value(0, merged);
+    span.lod->range.set1Value(0, span.segmentsMade ? merged : 0.0f);
     span.lod->range.set1Value(1, empty);
 }
 
@@ -226,6 +303,7 @@ void WellScene::buildAllLevels(const reconstruction::WellGeometry& geometry) {
 }
 
 void WellScene::setRanges(Record& record) {
+    if (!record.lod) return;  // waiting: made with the view's ranges
     SoMFFloat& range = record.lod->range;
     const int first = record.heldFrom;
     const int count = static_cast<int>(record.switchDistances.size()) - first;
@@ -252,6 +330,7 @@ void WellScene::setLodView(const LodView& view) {
     assertMainThread("WellScene::setLodView");
     m_view = view;
     for (Record& record : m_records) {
+        if (!record.lod) continue;  // made with the view's ranges when near
         record.switchDistances = lodSwitchDistances(record.shape, m_view);
         setRanges(record);
         if (record.heldFrom == 0) setPartRanges(record.lod->getChild(0), record.shape, m_view);
@@ -264,9 +343,7 @@ void WellScene::collectWanted(int depth, std::size_t index, const glm::vec3& eye
                               std::vector<DetailRequest>& out) {
     const Span& span = m_spans[static_cast<std::size_t>(depth) - 1][index];
     // A span drawing its merged mesh, or nothing, draws none of its segments.
-    if (span.merged && span.lod->range.getNum() > 0 &&
-        glm::length(span.centre - eye) >= span.lod->range[0])
-        return;
+    if (span.merged && glm::length(span.centre - eye) >= spanSwitchDistances(span).first) return;
     const std::size_t first = index * reconstruction::kLodTreeFanOut;
     if (depth > 1) {
         const std::size_t children = m_spans[static_cast<std::size_t>(depth) - 2].size();
@@ -285,7 +362,27 @@ void WellScene::collectWanted(int depth, std::size_t index, const glm::vec3& eye
     }
 }
 
+void WellScene::makeNodesNear(int depth, std::size_t index, const glm::vec3& eye) {
+    const Span& span = m_spans[static_cast<std::size_t>(depth) - 1][index];
+    if (span.merged && glm::length(span.centre - eye) >= spanSwitchDistances(span).first) return;
+    if (depth == 1) {
+        makeSegmentNodes(index);
+        return;
+    }
+    const std::size_t first = index * reconstruction::kLodTreeFanOut;
+    const std::size_t children = m_spans[static_cast<std::size_t>(depth) - 2].size();
+    for (std::size_t c = first; c < std::min(first + reconstruction::kLodTreeFanOut, children); ++c)
+        makeNodesNear(depth - 1, c, eye);
+}
+
+void WellScene::makeSegmentNodesNear(const glm::vec3& eye) {
+    assertMainThread("WellScene::makeSegmentNodesNear");
+    if (m_depth > 0) makeNodesNear(m_depth, 0, eye);
+    if (m_boundsStale) cacheBounds();
+}
+
 std::vector<DetailRequest> WellScene::wantedDetail(const glm::vec3& eye) {
+    makeSegmentNodesNear(eye);
     ++m_tick;
     std::vector<DetailRequest> out;
     if (m_depth > 0) collectWanted(m_depth, 0, eye, out);
@@ -298,6 +395,7 @@ std::vector<DetailRequest> WellScene::wantedDetail(const glm::vec3& eye) {
 void WellScene::attachFinerLevels(const reconstruction::SegmentMesh& finer) {
     assertMainThread("WellScene::attachFinerLevels");
     if (finer.index >= m_records.size()) return;
+    makeSegmentNodes(finer.index / reconstruction::kLodTreeFanOut);
     Record& record = m_records[finer.index];
     // Only the levels it lacks, finest first, in front of those it holds.
     const int count =

@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <unordered_map>
@@ -22,6 +23,13 @@ class SoLineSet;
 class SoLOD;
 
 namespace caliper3d::scenegraph {
+
+// When a well's segment nodes are made: all at once, or a span's sixteen when a camera first
+// comes near enough for the span to show them (WellScene::makeSegmentNodesNear), their coarse
+// levels built then. Until then the span shows its merged mesh. A picture of a field seen
+// whole draws spans only, so a hundred wells of a thousand segments each need none of their
+// 100,000 segment meshes and nodes (docs/architecture.md, "Segments made when near").
+enum class SegmentNodes { now, whenNear };
 
 // A finer level a segment should show from where the camera is (and does not hold yet).
 struct DetailRequest {
@@ -74,6 +82,21 @@ public:
     // The same from meshes built elsewhere (reconstruction::buildCoarseMeshes, on a worker).
     void attachAll(const reconstruction::WellGeometry& geometry,
                    const reconstruction::CoarseMeshes& meshes);
+    // Segments made when a camera comes near (SegmentNodes::whenNear): how many, their
+    // triangles at full detail, and what builds segment s's coarse levels (called here, on the
+    // main thread, when its span is first wanted).
+    // Each segment's box (reconstruction::plannedSegmentBox; none: not given) bounds its span
+    // meanwhile, so that what frames and culls a picture is what the segments will be.
+    struct WaitingSegments {
+        std::size_t count = 0;
+        std::size_t fullDetailTriangles = 0;
+        std::function<reconstruction::SegmentMesh(std::size_t)> build;
+        std::vector<reconstruction::Box3> boxes;
+    };
+    // The path and every span's merged mesh now, the segments when near (a span without a
+    // merged mesh makes its segments now).
+    void attachAll(const reconstruction::WellGeometry& geometry,
+                   const std::vector<reconstruction::SpanMesh>& spans, WaitingSegments segments);
     // Path and every level of every segment (tests; a whole well at full detail is large).
     void buildAllLevels(const reconstruction::WellGeometry& geometry);
 
@@ -86,8 +109,13 @@ public:
     // Switch distances for a new viewport or field of view (every SoLOD's range).
     void setLodView(const LodView& view);
 
+    // Makes the nodes of the segments waiting (SegmentNodes::whenNear) under every span that
+    // should show its segments seen from `eye` (scene frame), and caches the bounds they
+    // change.
+    void makeSegmentNodesNear(const glm::vec3& eye);
     // Segments that should show a finer level than they hold, seen from `eye` (scene
     // frame), nearest first. Marks every segment wanted at its finer levels as used now.
+    // First makes the segment nodes near `eye` (makeSegmentNodesNear).
     std::vector<DetailRequest> wantedDetail(const glm::vec3& eye);
     // Puts levels [finer.firstLevel, held) in front of the segment's levels.
     void attachFinerLevels(const reconstruction::SegmentMesh& finer);
@@ -106,6 +134,8 @@ public:
     void dropFineLevels(std::size_t segment);
 
     std::size_t segmentCount() const { return m_records.size(); }
+    // Segments whose node is made (segmentCount() less those waiting: SegmentNodes).
+    std::size_t segmentNodes() const { return m_segmentOfLod.size(); }
     // Depth of the root span (0 before the first segment) and spans holding their merged mesh.
     int treeDepth() const { return m_depth; }
     std::size_t mergedSpans() const { return m_mergedSpans; }
@@ -130,7 +160,7 @@ public:
 
 private:
     struct Record {
-        SoLOD* lod = nullptr;
+        SoLOD* lod = nullptr;  // null while it waits (SegmentNodes::whenNear)
         glm::vec3 centre{0.0f};
         std::vector<float> switchDistances;
         int heldFrom = 0;    // finest level held
@@ -144,7 +174,8 @@ private:
         SoSeparator* separator = nullptr;
         SoLOD* lod = nullptr;
         SoGroup* children = nullptr;
-        bool merged = false;  // holds its merged mesh (and the empty level after it)
+        bool merged = false;       // holds its merged mesh (and the empty level after it)
+        bool segmentsMade = true;  // depth 1: its segments' nodes are made (SegmentNodes)
         glm::vec3 centre{0.0f};
         float radius = 0.0f;
         float error_mm = 0.0f;
@@ -154,7 +185,17 @@ private:
         std::size_t firstRow = 0;
         std::size_t lastRow = 0;
     };
+    // Puts a segment's place in the tree, its node not made yet (lod null).
+    void addRecord();
+    // Makes segment `index`'s node from its coarse levels.
+    void makeSegmentNode(std::size_t index, const reconstruction::SegmentMesh& segment);
+    // Makes the nodes of the segments of depth-1 span `index` that wait.
+    void makeSegmentNodes(std::size_t index);
     void setRanges(Record& record);
+    // The distances (eye to its centre) from which a span shows its merged mesh instead of
+    // its children, and from which nothing (its SoLOD's first range is 0 instead while its
+    // segments wait).
+    std::pair<float, float> spanSwitchDistances(const Span& span) const;
     void setSpanRanges(Span& span) const;
     // Index of span `index` at `depth`, made (and hung under its parent) when missing.
     std::size_t ensureSpan(int depth, std::size_t index);
@@ -162,6 +203,7 @@ private:
     void growTo(int depth);
     void collectWanted(int depth, std::size_t index, const glm::vec3& eye,
                        std::vector<DetailRequest>& out);
+    void makeNodesNear(int depth, std::size_t index, const glm::vec3& eye);
     // Level 0's part centres and radii (not their meshes), for the part switches.
     static void keepPartShapes(Record& record, const reconstruction::SegmentMesh& segment);
 
@@ -180,6 +222,8 @@ private:
     std::size_t m_fullTriangles = 0;
     std::size_t m_fineTriangles = 0;
     std::uint64_t m_tick = 0;
+    bool m_boundsStale = false;  // segment nodes made since the bounds were cached
+    std::function<reconstruction::SegmentMesh(std::size_t)> m_waiting;  // builds one waiting
 };
 
 }  // namespace caliper3d::scenegraph

@@ -29,6 +29,12 @@ namespace {
 // radial exaggeration F the ring is drawn F times larger about its own centre (the centroid
 // of its area), so an off-centre tool does not push the drawn hole off the path and the
 // shape stays the shape measured.
+// A ring's point j in the scene frame: `plane` (drawnRing's, mm) placed in row's section.
+glm::vec3 ringPoint(const SectionFrame& f, const Ned& c, const glm::dvec2& plane) {
+    const glm::dvec2 drawn = plane / 1000.0;
+    return toScene(c + drawn.x * f.arm1 + drawn.y * f.side);
+}
+
 void appendRing(const WellGeometry& g, Mesh& mesh, std::size_t row,
                 const std::vector<double>& radii) {
     const int points = static_cast<int>(radii.size());
@@ -49,9 +55,7 @@ void appendRing(const WellGeometry& g, Mesh& mesh, std::size_t row,
         centre /= static_cast<double>(std::max<std::size_t>(1, plane.size()));
     }
     for (int j = 0; j < points; ++j) {
-        const glm::dvec2 drawn = plane[static_cast<std::size_t>(j)] / 1000.0;
-        const Ned p = c + drawn.x * f.arm1 + drawn.y * f.side;
-        mesh.positions.emplace_back(toScene(p));
+        mesh.positions.emplace_back(ringPoint(f, c, plane[static_cast<std::size_t>(j)]));
         const double r = radii[static_cast<std::size_t>(j)];
         if (byDirection) {
             const glm::dvec2 d = plane[static_cast<std::size_t>(j)] - centre;
@@ -85,22 +89,19 @@ bool measuredThrough(const WellGeometry& g, std::size_t first, std::size_t last)
 // (the path line still crosses it). The segment's first and last rows get the full spline at
 // every level: neighbouring segments share those rings exactly, whatever level each shows,
 // so no crack opens between them.
-// `strips`, when given, gets for each strip appended the row its first ring is of and where
-// the strip starts in stripIndices.
-Mesh buildLevel(const WellGeometry& g, const std::vector<std::size_t>& rows, int points,
-                std::vector<std::pair<std::size_t, std::size_t>>* strips = nullptr) {
-    Mesh mesh;
+// ring(row, radii, joined) is called for each ring in order, `joined` when a strip joins it to
+// the ring before.
+template <class Ring>
+void forEachLevelRing(const WellGeometry& g, const std::vector<std::size_t>& rows, int points,
+                      Ring&& ring) {
     const int knots = g.knotCount();
     const int levelPoints = points > 0 ? points : knots;
     const int endPoints = g.sampler().samples();
     std::optional<PeriodicSplineSampler> sampler;
     if (points > 0 && points != endPoints) sampler.emplace(knots, points);
-    mesh.positions.reserve(rows.size() * static_cast<std::size_t>(levelPoints));
     std::vector<double> pads(static_cast<std::size_t>(knots));
     std::vector<double> radii;
-    std::int32_t previousStart = 0;
-    int previousPoints = 0;
-    bool joinable = false;  // the last ring appended was rows[i - 1]
+    bool joinable = false;  // the last ring was rows[i - 1]'s
     for (std::size_t i = 0; i < rows.size(); ++i) {
         if (!g.measured(rows[i])) {
             joinable = false;
@@ -116,17 +117,65 @@ Mesh buildLevel(const WellGeometry& g, const std::vector<std::size_t>& rows, int
             sampler->sample(pads.data(), radii.data());
         else
             radii = pads;
-        const auto start = static_cast<std::int32_t>(mesh.positions.size());
-        appendRing(g, mesh, rows[i], radii);
-        if (joinable && measuredThrough(g, rows[i - 1], rows[i])) {
-            if (strips) strips->emplace_back(rows[i - 1], mesh.stripIndices.size());
-            appendClosedStrip(mesh.stripIndices, previousStart, previousPoints, start, ringPoints);
-        }
-        previousStart = start;
-        previousPoints = ringPoints;
+        ring(rows[i], radii, joinable && measuredThrough(g, rows[i - 1], rows[i]));
         joinable = true;
     }
+}
+
+// The rings of forEachLevelRing as a mesh, joined by closed strips.
+// `strips`, when given, gets for each strip appended the row its first ring is of and where
+// the strip starts in stripIndices.
+Mesh buildLevel(const WellGeometry& g, const std::vector<std::size_t>& rows, int points,
+                std::vector<std::pair<std::size_t, std::size_t>>* strips = nullptr) {
+    Mesh mesh;
+    mesh.positions.reserve(rows.size() *
+                           static_cast<std::size_t>(points > 0 ? points : g.knotCount()));
+    std::int32_t previousStart = 0;
+    int previousPoints = 0;
+    std::size_t previousRow = 0;
+    forEachLevelRing(g, rows, points,
+                     [&](std::size_t row, const std::vector<double>& radii, bool joined) {
+                         const auto start = static_cast<std::int32_t>(mesh.positions.size());
+                         const int ringPoints = static_cast<int>(radii.size());
+                         appendRing(g, mesh, row, radii);
+                         if (joined) {
+                             if (strips)
+                                 strips->emplace_back(previousRow, mesh.stripIndices.size());
+                             appendClosedStrip(mesh.stripIndices, previousStart, previousPoints,
+                                               start, ringPoints);
+                         }
+                         previousStart = start;
+                         previousPoints = ringPoints;
+                         previousRow = row;
+                     });
     return mesh;
+}
+
+// The points of the rings of forEachLevelRing that a strip joins, into `box` (what
+// buildLevel's strips draw), without building the mesh.
+void extendByLevel(const WellGeometry& g, const std::vector<std::size_t>& rows, int points,
+                   Box3& box) {
+    const double exaggeration = g.options().radialExaggeration;
+    std::vector<glm::dvec2> plane;
+    std::vector<glm::dvec2> previous;  // the ring before, in its plane
+    std::size_t previousRow = 0;
+    bool previousIn = false;  // already in the box
+    const auto extend = [&](std::size_t row, const std::vector<glm::dvec2>& ring) {
+        const SectionFrame& f = g.frame(row);
+        const Ned c = g.centre(row);
+        for (const glm::dvec2& q : ring) box.extend(ringPoint(f, c, q));
+    };
+    forEachLevelRing(g, rows, points,
+                     [&](std::size_t row, const std::vector<double>& radii, bool joined) {
+                         drawnRing(radii, exaggeration, plane);
+                         if (joined) {
+                             if (!previousIn) extend(previousRow, previous);
+                             extend(row, plane);
+                         }
+                         previousIn = joined;
+                         std::swap(previous, plane);
+                         previousRow = row;
+                     });
 }
 
 // The unit vectors at `points` equal angles from arm 1 (cos, sin), kept per thread for each
@@ -407,6 +456,20 @@ SegmentMesh finishSegmentLevels(const WellGeometry& drawn, const SegmentPlan& pl
     }
     segmentBounds(out, drawn, pyramid, plan.maxRadius_mm, first, last);
     return out;
+}
+
+Box3 plannedSegmentBox(const WellGeometry& drawn, const SegmentPlan& plan,
+                       const std::vector<std::size_t>* wholeRows) {
+    const std::vector<LodLevel> pyramid = lodPyramid(drawn.options());
+    Box3 box;
+    std::vector<std::size_t> rows;
+    for (std::size_t i = 0; i < plan.levelRows.size(); ++i) {
+        rows.clear();
+        for (const std::size_t row : plan.levelRows[i]) rows.push_back(drawnRow(wholeRows, row));
+        const int level = plan.firstLevel + static_cast<int>(i);
+        extendByLevel(drawn, rows, pyramid[static_cast<std::size_t>(level)].points, box);
+    }
+    return box;
 }
 
 SegmentMesh buildSegmentLevels(const WellGeometry& geometry, std::size_t segment, int from,

@@ -1,9 +1,12 @@
 #pragma once
 
 #include <cstddef>
+#include <limits>
 #include <vector>
 
+#include <glm/common.hpp>
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 #include "reconstruction/mesh/mesh.h"
 
@@ -68,6 +71,21 @@ SegmentPlan planSegmentLevels(const WellGeometry& whole, std::size_t segment, in
 // alike, segment, from, to) gives; row numbers stay the whole well's.
 SegmentMesh finishSegmentLevels(const WellGeometry& drawn, const SegmentPlan& plan,
                                 const std::vector<std::size_t>* wholeRows);
+// An axis-aligned box in the scene frame; empty (lo above hi) until extended.
+struct Box3 {
+    glm::vec3 lo{std::numeric_limits<float>::max()};
+    glm::vec3 hi{std::numeric_limits<float>::lowest()};
+    bool empty() const { return lo.x > hi.x; }
+    void extend(const glm::vec3& p) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+};
+// The box of every point the strips of finishSegmentLevels(drawn, plan, wholeRows) draw, found
+// without building the meshes (a segment made when a camera comes near is bounded by it
+// until then).
+Box3 plannedSegmentBox(const WellGeometry& drawn, const SegmentPlan& plan,
+                       const std::vector<std::size_t>* wholeRows);
 // Drawn's row for a whole well's `row` (wholeRows as above; the row must be among them).
 std::size_t drawnRow(const std::vector<std::size_t>* wholeRows, std::size_t row);
 

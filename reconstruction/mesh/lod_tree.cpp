@@ -430,8 +430,13 @@ CoarseMeshes buildCoarseMeshes(const WellGeometry& drawn, const CoarsePlan& plan
     eachOnThreads(plan.segments.size(), threads, nullptr, [&](std::size_t s) {
         out.segments[s] = finishSegmentLevels(drawn, plan.segments[s], wholeRows);
     });
-    out.spans = finishSpans(drawn, plan.spans, plan.exaggerations, wholeRows, threads, nullptr);
+    out.spans = buildPlannedSpans(drawn, plan, wholeRows, threads);
     return out;
+}
+
+std::vector<SpanMesh> buildPlannedSpans(const WellGeometry& drawn, const CoarsePlan& plan,
+                                        const std::vector<std::size_t>* wholeRows, int threads) {
+    return finishSpans(drawn, plan.spans, plan.exaggerations, wholeRows, threads, nullptr);
 }
 
 CoarseMeshes buildCoarseMeshes(const WellGeometry& geometry, int firstLevel) {

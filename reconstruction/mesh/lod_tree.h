@@ -115,6 +115,12 @@ CoarseMeshes buildCoarseMeshes(const WellGeometry& drawn, const CoarsePlan& plan
                                const std::vector<std::size_t>* wholeRows = nullptr,
                                int threads = 2);
 
+// The spans' meshes only of buildCoarseMeshes(drawn, plan, wholeRows): a scene that builds
+// a segment's levels when a camera comes near builds those with finishSegmentLevels.
+std::vector<SpanMesh> buildPlannedSpans(const WellGeometry& drawn, const CoarsePlan& plan,
+                                        const std::vector<std::size_t>* wholeRows = nullptr,
+                                        int threads = 2);
+
 // planCoarseMeshes at the geometry's own exaggeration, then buildCoarseMeshes. Reads only the
 // geometry, so any thread may build it; it uses two threads of its own (the machine's two
 // cores).

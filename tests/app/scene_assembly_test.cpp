@@ -171,9 +171,11 @@ std::vector<app::WellSource> threeWellsOfOneLog(const std::string& name, double 
 // A field held lean (FieldRows) keeps a sample of each well's rows, among them every row its
 // coarse meshes draw (planned as the well was read), builds those meshes from the sample once
 // the field's exaggeration is chosen, and reads the well again for its finer levels: its scene
-// and its picture are the field held whole's, coloured by `colour`.
-void expectLeanDrawsWhatWholeDraws(const std::string& colour) {
-    SCOPED_TRACE("coloured by " + colour);
+// and its picture are the field held whole's, coloured by `colour`. So with its segments made
+// only where a picture's camera comes near (`nodes`, as render holds a field).
+void expectLeanDrawsWhatWholeDraws(const std::string& colour, scenegraph::SegmentNodes nodes) {
+    const bool whenNear = nodes == scenegraph::SegmentNodes::whenNear;
+    SCOPED_TRACE("coloured by " + colour + (whenNear ? ", segments made when near" : ""));
     scenegraph::initCoin();
     const std::vector<app::WellSource> wells =
         threeWellsOfOneLog("assembly_lean_field_" + colour + ".txt", 1000.0);
@@ -186,8 +188,14 @@ void expectLeanDrawsWhatWholeDraws(const std::string& colour) {
     const app::AssembledScene whole =
         app::assembleScene(wells, options, plan, reconstruction::kFieldFirstCoarseLevel);
     // Lean from the first well on: the budget is below one well's rows.
-    const app::AssembledScene lean = app::assembleScene(
-        wells, options, plan, reconstruction::kFieldFirstCoarseLevel, app::FieldRows{1000, false});
+    const app::AssembledScene lean =
+        app::assembleScene(wells, options, plan, reconstruction::kFieldFirstCoarseLevel,
+                           app::FieldRows{1000, false, nodes});
+    // Held whole, its segments made as `nodes` says.
+    const app::AssembledScene wholeToo =
+        app::assembleScene(wells, options, plan, reconstruction::kFieldFirstCoarseLevel,
+                           app::FieldRows{0, false, nodes});
+    ASSERT_EQ(wholeToo.wells, 3);
     ASSERT_EQ(whole.wells, 3);
     ASSERT_EQ(lean.wells, 3);
     ASSERT_NE(whole.legend(), nullptr);
@@ -223,6 +231,8 @@ void expectLeanDrawsWhatWholeDraws(const std::string& colour) {
         EXPECT_EQ(again->path().back().north, whole.geometries[w]->path().back().north);
         EXPECT_EQ(lean.scenes[w]->segmentCount(), whole.scenes[w]->segmentCount());
         EXPECT_EQ(lean.scenes[w]->fullDetailTriangles(), whole.scenes[w]->fullDetailTriangles());
+        // Before any picture: no segment made when near (every span has its merged mesh).
+        EXPECT_EQ(lean.scenes[w]->segmentNodes(), whenNear ? 0u : lean.scenes[w]->segmentCount());
     }
     // The same pictures, pixel for pixel: of the whole field, from above, and from inside the
     // first well (whose finer levels are built from its rows read again).
@@ -238,17 +248,26 @@ void expectLeanDrawsWhatWholeDraws(const std::string& colour) {
         request.unloggedPath = view < 2;
         request.radialExaggeration = whole.geometries.front()->options().radialExaggeration;
         request.legend = whole.legend();
-        scenegraph::Picture a, b;
+        scenegraph::Picture a, b, c;
         try {
             a = scenegraph::drawPicture(whole.pictureWells(), request);
+            c = scenegraph::drawPicture(wholeToo.pictureWells(), request);
             request.legend = lean.legend();
             b = scenegraph::drawPicture(lean.pictureWells(), request);
         } catch (const std::runtime_error& e) {
             GTEST_SKIP() << e.what();  // no OpenGL
         }
         EXPECT_EQ(b.refinedSegments, a.refinedSegments);
+        EXPECT_EQ(c.refinedSegments, a.refinedSegments);
+        EXPECT_TRUE(c.image.rgba == a.image.rgba) << "held whole, view " << view;
         if (view == 2) {
             EXPECT_GT(a.refinedSegments, 0u);
+            // Down the first hole: that well's segments near the eye, not all of them.
+            const scenegraph::WellScene& first = *lean.scenes.front();
+            EXPECT_GT(first.segmentNodes(), 0u);
+            if (whenNear) {
+                EXPECT_LT(first.segmentNodes(), first.segmentCount());
+            }
         }
         ASSERT_EQ(a.image.rgba.size(), b.image.rgba.size());
         EXPECT_TRUE(a.image.rgba == b.image.rgba) << "view " << view;
@@ -256,10 +275,12 @@ void expectLeanDrawsWhatWholeDraws(const std::string& colour) {
 }
 
 TEST(SceneAssemblyTest, AFieldHeldLeanDrawsWhatTheFieldHeldWholeDraws) {
-    expectLeanDrawsWhatWholeDraws("departure");
-    if (testing::Test::IsSkipped()) return;
-    // A range shared by the wells (each well's own colouring of the rows it holds, under it).
-    expectLeanDrawsWhatWholeDraws("diameter");
+    for (const auto nodes : {scenegraph::SegmentNodes::now, scenegraph::SegmentNodes::whenNear}) {
+        expectLeanDrawsWhatWholeDraws("departure", nodes);
+        if (testing::Test::IsSkipped()) return;
+        // A range shared by the wells (each well's own colouring of the rows it holds, under it).
+        expectLeanDrawsWhatWholeDraws("diameter", nodes);
+    }
 }
 
 // A field held lean reads a well again from its log where a picture wants finer levels: row

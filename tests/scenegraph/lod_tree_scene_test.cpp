@@ -9,6 +9,7 @@
 
 #include <Inventor/SoPath.h>
 #include <Inventor/actions/SoCallbackAction.h>
+#include <Inventor/actions/SoGetBoundingBoxAction.h>
 #include <Inventor/actions/SoSearchAction.h>
 #include <Inventor/nodes/SoGroup.h>
 #include <Inventor/nodes/SoIndexedTriangleStripSet.h>
@@ -250,4 +251,96 @@ TEST_F(LodTreeSceneTest, StreamedSegmentsGrowTheTreeAndShowThemselvesUntilTheSpa
         EXPECT_FALSE(scene.segmentOfLod(*after.drawnBy[s].begin())) << s;
     }
     EXPECT_LT(scenegraph::trianglesDrawn(overview.get(), kWidth, kHeight) * 10, segmentsOnly);
+}
+
+// A scene whose segments are made when a camera first comes near (SegmentNodes::whenNear, as
+// a picture holds a field) draws, at every step of the flight from the overview into the
+// hole, what the scene that made every segment at once draws: each segment once, by the same
+// kind of level (a span's merged mesh or its own), the same triangles. Seen whole it has made
+// none; down the hole only those near the eye, each built once.
+TEST_F(LodTreeSceneTest, SegmentsMadeWhenNearDrawWhatSegmentsMadeAtOnceDraw) {
+    const auto geometry = well(20.0);
+    scenegraph::WellScene atOnce;
+    atOnce.buildAll(*geometry);
+    const reconstruction::CoarsePlan plan =
+        reconstruction::planCoarseMeshes(*geometry, reconstruction::kFirstCoarseLevel, {20.0});
+    scenegraph::WellScene whenNear;
+    std::vector<int> builds(plan.segments.size(), 0);
+    scenegraph::WellScene::WaitingSegments waiting;
+    waiting.count = plan.segments.size();
+    for (const reconstruction::SegmentPlan& s : plan.segments) {
+        waiting.fullDetailTriangles += s.fullDetailTriangles;
+        waiting.boxes.push_back(reconstruction::plannedSegmentBox(*geometry, s, nullptr));
+    }
+    waiting.build = [&](std::size_t s) {
+        ++builds[s];
+        return reconstruction::finishSegmentLevels(*geometry, plan.segments[s], nullptr);
+    };
+    whenNear.attachAll(*geometry, reconstruction::buildPlannedSpans(*geometry, plan),
+                       std::move(waiting));
+    ASSERT_EQ(whenNear.segmentCount(), atOnce.segmentCount());
+    EXPECT_EQ(whenNear.treeDepth(), atOnce.treeDepth());
+    EXPECT_EQ(whenNear.mergedSpans(), atOnce.mergedSpans());
+    EXPECT_EQ(whenNear.fullDetailTriangles(), atOnce.fullDetailTriangles());
+    EXPECT_EQ(whenNear.segmentNodes(), 0u);
+    EXPECT_EQ(atOnce.segmentNodes(), atOnce.segmentCount());
+    // Bounded (what frames a picture) as if every segment were there.
+    const auto boundsOf = [](scenegraph::WellScene& scene) {
+        SoGetBoundingBoxAction bounds{SbViewportRegion(kWidth, kHeight)};
+        bounds.apply(scene.root());
+        return bounds.getBoundingBox();
+    };
+    EXPECT_TRUE(boundsOf(whenNear) == boundsOf(atOnce));
+    for (scenegraph::WellScene* scene : {&atOnce, &whenNear})
+        scene->setLodView(scenegraph::lodViewFor(kHeight, 0.785398f));
+    const glm::vec3 middle(0.0f, -150.0f, 0.0f);
+    const std::vector<std::pair<glm::vec3, glm::vec3>> flight = {
+        {{2000.0f, -150.0f, 0.0f}, middle},  // the overview
+        {{300.0f, -150.0f, 0.0f}, middle},
+        {{20.0f, -150.0f, 0.0f}, middle},
+        {{0.0f, -20.0f, 0.0f}, {0.0f, -60.0f, 0.0f}},  // inside, looking down the hole
+        {{0.0f, -70.0f, 0.0f}, {0.0f, -90.0f, 0.0f}},
+    };
+    for (std::size_t step = 0; step < flight.size(); ++step) {
+        SCOPED_TRACE("step " + std::to_string(step));
+        const auto& [eye, target] = flight[step];
+        std::vector<Coverage> seen;
+        std::vector<std::size_t> triangles;
+        for (scenegraph::WellScene* scene : {&atOnce, &whenNear}) {
+            for (const scenegraph::DetailRequest& r : scene->wantedDetail(eye))
+                scene->attachFinerLevels(
+                    reconstruction::buildSegmentLevels(*geometry, r.segment, r.level, r.heldFrom));
+            auto root = camera(*scene, eye, target);
+            seen.push_back(cover(*scene, root.get()));
+            triangles.push_back(scenegraph::trianglesDrawn(root.get(), kWidth, kHeight));
+        }
+        EXPECT_EQ(triangles[1], triangles[0]);
+        EXPECT_EQ(whenNear.fineTriangles(), atOnce.fineTriangles());
+        for (std::size_t s = 0; s < atOnce.segmentCount(); ++s) {
+            EXPECT_EQ(seen[1].emptyAt[s], seen[0].emptyAt[s]) << s;
+            ASSERT_EQ(seen[1].drawnBy[s].size(), 1u) << s;
+            ASSERT_EQ(seen[0].drawnBy[s].size(), 1u) << s;
+            // Drawn by itself (and its own level), or by a span of the same rows.
+            const SoNode* a = *seen[0].drawnBy[s].begin();
+            const SoNode* b = *seen[1].drawnBy[s].begin();
+            EXPECT_EQ(whenNear.segmentOfLod(b), atOnce.segmentOfLod(a)) << s;
+            const auto spanA = atOnce.spanOfLod(a);
+            const auto spanB = whenNear.spanOfLod(b);
+            ASSERT_EQ(spanB.has_value(), spanA.has_value()) << s;
+            if (spanA) {
+                EXPECT_EQ(spanB->depth, spanA->depth) << s;
+                EXPECT_EQ(spanB->firstRow, spanA->firstRow) << s;
+            }
+        }
+        const std::size_t made = whenNear.segmentNodes();
+        if (step == 0) {
+            EXPECT_EQ(made, 0u);
+        }
+        if (step + 1 == flight.size()) {
+            EXPECT_GT(made, 0u);
+            EXPECT_LT(made, whenNear.segmentCount());
+        }
+        for (std::size_t s = 0; s < builds.size(); ++s) EXPECT_LE(builds[s], 1) << s;
+        EXPECT_EQ(static_cast<std::size_t>(std::count(builds.begin(), builds.end(), 1)), made);
+    }
 }

@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 #include <glm/vector_relational.hpp>
@@ -266,7 +268,60 @@ void expectSameMesh(const Mesh& a, const Mesh& b, const std::string& what) {
     EXPECT_EQ(a.stripIndices, b.stripIndices) << what;
 }
 
+// `box` is the box of the points the strips of `levels` draw (empty with none).
+void expectBoxOfStrips(const Box3& box, const std::vector<Mesh>& levels, const std::string& what) {
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+    for (const Mesh& level : levels)
+        for (const std::int32_t i : level.stripIndices)
+            if (i >= 0) {
+                lo = glm::min(lo, level.positions[static_cast<std::size_t>(i)]);
+                hi = glm::max(hi, level.positions[static_cast<std::size_t>(i)]);
+            }
+    if (lo.x > hi.x) {
+        EXPECT_TRUE(box.empty()) << what;
+        return;
+    }
+    ASSERT_FALSE(box.empty()) << what;
+    EXPECT_EQ(box.lo, lo) << what;
+    EXPECT_EQ(box.hi, hi) << what;
+}
+
 }  // namespace
+
+// A segment's box found from its plan (plannedSegmentBox) at every coarse level from the
+// spline's to the pads' N-gon, true to size and exaggerated, across a stretch without data and
+// past a row measured alone between two (a ring no strip joins, which draws nothing): exactly
+// the box of the points its levels' strips draw.
+TEST(LodTreeTest, APlannedSegmentIsBoundedByWhatItsStripsDraw) {
+    SectionTable t = *exampleWell(300.0, 0.01);
+    std::size_t alone = 0;
+    for (std::size_t r = 0; r < t.rowCount(); ++r) {
+        if (t.depth_m[r] < 60.0 || t.depth_m[r] >= 60.5) continue;
+        if (alone == 0 && t.depth_m[r] >= 60.3) {
+            alone = r;  // far out, so that the box would show it
+            for (int a = 0; a < t.armCount; ++a) t.radii(r)[a] *= 3.0;
+            continue;
+        }
+        for (int a = 0; a < t.armCount; ++a)
+            t.radii(r)[a] = std::numeric_limits<double>::quiet_NaN();
+    }
+    ASSERT_GT(alone, 0u);
+    const WellGeometry g(std::make_shared<const SectionTable>(std::move(t)), GeometryOptions{});
+    for (const double exaggeration : {1.0, 20.0}) {
+        SCOPED_TRACE("x" + std::to_string(exaggeration));
+        const WellGeometry drawn = g.restyled(exaggeration, nullptr);
+        const CoarsePlan plan = planCoarseMeshes(drawn, kFirstCoarseLevel, {exaggeration});
+        std::size_t empty = 0;
+        for (std::size_t s = 0; s < plan.segments.size(); ++s) {
+            const SegmentMesh mesh = finishSegmentLevels(drawn, plan.segments[s], nullptr);
+            ASSERT_EQ(mesh.levels.size(), 2u);
+            const Box3 box = plannedSegmentBox(drawn, plan.segments[s], nullptr);
+            expectBoxOfStrips(box, mesh.levels, "segment " + std::to_string(s));
+            empty += box.empty() ? 1 : 0;
+        }
+        EXPECT_LT(empty, plan.segments.size() / 10);  // most segments draw a wall
+    }
+}
 
 TEST(LodTreeTest, APlannedWellDrawsFromTheRowsItKeepsWhatTheWholeWellDraws) {
     // The coarse meshes planned on the whole well (a breakout, a washout, a build, a stretch
@@ -284,11 +339,14 @@ TEST(LodTreeTest, APlannedWellDrawsFromTheRowsItKeepsWhatTheWholeWellDraws) {
         SCOPED_TRACE("x" + std::to_string(exaggeration));
         const CoarseMeshes whole =
             buildCoarseMeshes(g.restyled(exaggeration, nullptr), kFieldFirstCoarseLevel);
-        const CoarseMeshes drawn =
-            buildCoarseMeshes(held.restyled(exaggeration, nullptr), plan, &rows, 1);
+        const WellGeometry heldDrawn = held.restyled(exaggeration, nullptr);
+        const CoarseMeshes drawn = buildCoarseMeshes(heldDrawn, plan, &rows, 1);
         ASSERT_EQ(drawn.segments.size(), whole.segments.size());
         for (std::size_t s = 0; s < whole.segments.size(); ++s) {
             const SegmentMesh &a = whole.segments[s], &b = drawn.segments[s];
+            // Bounded, before it is built, by the box of what its strips draw.
+            expectBoxOfStrips(plannedSegmentBox(heldDrawn, plan.segments[s], &rows), a.levels,
+                              "segment " + std::to_string(s));
             EXPECT_EQ(b.firstRow, a.firstRow);
             EXPECT_EQ(b.lastRow, a.lastRow);
             EXPECT_EQ(b.top_m, a.top_m);
