@@ -421,6 +421,52 @@ std::vector<std::size_t> pathLineRows(const WellGeometry& geometry, double spaci
     return rows;
 }
 
+std::vector<std::size_t> simplifiedLine(const std::vector<glm::vec3>& line, float tolerance,
+                                        float* error) {
+    // Written here: boost::geometry::simplify gives the points kept, not which they are nor
+    // how far the line kept strays, which the path's level of detail switches by.
+    const std::size_t n = line.size();
+    if (error) *error = 0.0f;
+    if (n <= 2) {
+        std::vector<std::size_t> all(n);
+        for (std::size_t i = 0; i < n; ++i) all[i] = i;
+        return all;
+    }
+    const auto distance = [&line](std::size_t p, std::size_t a, std::size_t b) {
+        const glm::vec3 ab = line[b] - line[a];
+        const float length2 = glm::dot(ab, ab);
+        const float t = length2 > 0.0f
+                            ? std::clamp(glm::dot(line[p] - line[a], ab) / length2, 0.0f, 1.0f)
+                            : 0.0f;
+        return glm::length(line[p] - (line[a] + t * ab));
+    };
+    std::vector<char> keep(n, 0);
+    keep.front() = keep.back() = 1;
+    std::vector<std::pair<std::size_t, std::size_t>> stretches{{0, n - 1}};
+    while (!stretches.empty()) {
+        const auto [a, b] = stretches.back();
+        stretches.pop_back();
+        float worst = 0.0f;
+        std::size_t at = a;
+        for (std::size_t p = a + 1; p < b; ++p)
+            if (const float d = distance(p, a, b); d > worst) {
+                worst = d;
+                at = p;
+            }
+        if (worst > tolerance) {
+            keep[at] = 1;
+            stretches.emplace_back(a, at);
+            stretches.emplace_back(at, b);
+        } else if (error) {
+            *error = std::max(*error, worst);
+        }
+    }
+    std::vector<std::size_t> kept;
+    for (std::size_t i = 0; i < n; ++i)
+        if (keep[i]) kept.push_back(i);
+    return kept;
+}
+
 std::vector<glm::vec3> pathLine(const WellGeometry& geometry, double spacing_m, double after_m) {
     std::vector<glm::vec3> points;
     for (const std::size_t row : pathLineRows(geometry, spacing_m, after_m))

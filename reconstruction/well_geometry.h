@@ -198,6 +198,12 @@ std::vector<std::size_t> everyKthRow(std::size_t rows, std::size_t maxRows);
 // from the first row deeper than `after_m`, and the last row.
 std::vector<glm::vec3> pathLine(const WellGeometry& geometry, double spacing_m = 1.0,
                                 double after_m = -1.0e300);
+// The points of `line` that a line through them alone keeps within `tolerance` (scene units)
+// of every point left out, the first and last always: each stretch is split at its point
+// furthest from the chord between its ends while that point is further than the tolerance
+// (Douglas and Peucker, 1973). `error`, when given, gets the largest distance left out.
+std::vector<std::size_t> simplifiedLine(const std::vector<glm::vec3>& line, float tolerance,
+                                        float* error = nullptr);
 // The rows pathLine draws: a copy of the geometry that holds them draws the same line.
 std::vector<std::size_t> pathLineRows(const WellGeometry& geometry, double spacing_m = 1.0,
                                       double after_m = -1.0e300);

@@ -17,6 +17,7 @@
 
 #include <algorithm>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "reconstruction/mesh/lod_levels.h"
@@ -66,11 +67,68 @@ void WellScene::setPath(const reconstruction::WellGeometry& geometry, double spa
     assertMainThread("WellScene::setPath");
     m_pathGroup->removeAllChildren();
     m_pathCoords = nullptr;
-    extendPath(reconstruction::pathLine(geometry, spacing_m));
+    m_pathLod = nullptr;
+    const std::vector<glm::vec3> line = reconstruction::pathLine(geometry, spacing_m);
+    extendPath(line);
+    // Seen from afar a line of a point a metre is several points a pixel, each drawn: a
+    // coarser copy within a tolerance of it draws the same pixels for a tenth of the points
+    // or fewer (a field's overview: docs/benchmarks.md, "The path line's level of detail").
+    float error = 0.0f;
+    const std::vector<std::size_t> kept =
+        reconstruction::simplifiedLine(line, kPathTolerance_m, &error);
+    if (kept.size() * 4 > line.size()) return;
+    auto* coarseCoords = new SoCoordinate3;
+    coarseCoords->point.setNum(static_cast<int>(kept.size()));
+    SbVec3f* to = coarseCoords->point.startEditing();
+    for (const std::size_t i : kept) (to++)->setValue(line[i].x, line[i].y, line[i].z);
+    coarseCoords->point.finishEditing();
+    auto* coarseLine = new SoLineSet;
+    coarseLine->numVertices.setValue(static_cast<int>(kept.size()));
+    auto* coarse = new SoGroup;
+    coarse->addChild(coarseCoords);
+    coarse->addChild(coarseLine);
+    auto* fine = new SoGroup;
+    fine->addChild(m_pathCoords);
+    fine->addChild(m_pathLine);
+    m_pathGroup->removeChild(m_pathLine);
+    m_pathGroup->removeChild(m_pathCoords);
+    glm::vec3 lo = line.front(), hi = line.front();
+    for (const glm::vec3& p : line) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    const glm::vec3 centre = (lo + hi) / 2.0f;
+    m_pathReach = 0.0f;
+    for (const glm::vec3& p : line) m_pathReach = std::max(m_pathReach, glm::length(p - centre));
+    m_pathError = error;
+    m_pathLod = new SoLOD;
+    m_pathLod->center.setValue(centre.x, centre.y, centre.z);
+    m_pathLod->addChild(fine);
+    m_pathLod->addChild(coarse);
+    setPathRange();
+    m_pathGroup->addChild(m_pathLod);
+}
+
+void WellScene::setPathRange() {
+    if (!m_pathLod) return;
+    // The coarser copy once its distance from the line projects under the pixel tolerance
+    // from the line's nearest point.
+    const float scale = m_view.focal_px / m_view.pixelTolerance;
+    m_pathLod->range.setValue(m_pathError * scale + m_pathReach);
 }
 
 void WellScene::extendPath(const std::vector<glm::vec3>& points) {
     assertMainThread("WellScene::extendPath");
+    if (m_pathLod) {  // drawn on past a whole path: its line alone again
+        m_pathCoords->ref();
+        m_pathLine->ref();
+        m_pathGroup->removeChild(m_pathLod);
+        m_pathGroup->addChild(m_pathCoords);
+        m_pathGroup->addChild(m_pathLine);
+        m_pathCoords->unrefNoDelete();
+        m_pathLine->unrefNoDelete();
+        m_pathLod = nullptr;
+    }
     if (!m_pathCoords) {
         auto* style = new SoDrawStyle;
         style->lineWidth = 2.0f;
@@ -329,6 +387,7 @@ void WellScene::keepPartShapes(Record& record, const reconstruction::SegmentMesh
 void WellScene::setLodView(const LodView& view) {
     assertMainThread("WellScene::setLodView");
     m_view = view;
+    setPathRange();
     for (Record& record : m_records) {
         if (!record.lod) continue;  // made with the view's ranges when near
         record.switchDistances = lodSwitchDistances(record.shape, m_view);

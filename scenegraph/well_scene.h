@@ -24,6 +24,9 @@ class SoLOD;
 
 namespace caliper3d::scenegraph {
 
+// How far the coarser copy of a well's path line may stray from the line (WellScene::setPath).
+inline constexpr float kPathTolerance_m = 0.25f;
+
 // When a well's segment nodes are made: all at once, or a span's sixteen when a camera first
 // comes near enough for the span to show them (WellScene::makeSegmentNodesNear), their coarse
 // levels built then. Until then the span shows its merged mesh. A picture of a field seen
@@ -66,7 +69,8 @@ public:
     // The separator holding the tree's root span.
     const SoSeparator* segmentGroup() const { return m_segments; }
 
-    // Draws the well path (decimated to about one point per `spacing_m`).
+    // Draws the well path (decimated to about one point per `spacing_m`), and a copy within
+    // kPathTolerance_m of it where it is far enough for that to be under the pixel tolerance.
     void setPath(const reconstruction::WellGeometry& geometry, double spacing_m = 1.0);
     // Draws the path on past what is drawn, to these points (a streamed load's
     // reconstruction::LoadStretch::path, in order).
@@ -212,6 +216,11 @@ private:
     SoSeparator* m_segments = nullptr;
     SoCoordinate3* m_pathCoords = nullptr;  // null until a path is drawn
     SoLineSet* m_pathLine = nullptr;
+    // A whole path (setPath) is an SoLOD between its line and a coarser copy (null: none).
+    SoLOD* m_pathLod = nullptr;
+    float m_pathError = 0.0f;  // the coarser copy's largest distance from the line, metres
+    float m_pathReach = 0.0f;  // the line's furthest point from the SoLOD's centre
+    void setPathRange();
     LodView m_view;
     std::vector<Record> m_records;
     std::vector<std::vector<Span>> m_spans;  // [depth - 1][index]

@@ -312,3 +312,60 @@ TEST(WellGeometryTest, AWellHeldByItsSegmentEndsAndPathLineRowsKeepsItsSegmentsA
     EXPECT_EQ(everyKthRow(10, 3), (std::vector<std::size_t>{0, 3, 6, 9}));
     EXPECT_EQ(everyKthRow(11, 3), (std::vector<std::size_t>{0, 3, 6, 9, 10}));
 }
+
+namespace {
+
+// The distance from `p` to the line through `kept` points of `line`.
+float distanceToKept(const glm::vec3& p, const std::vector<glm::vec3>& line,
+                     const std::vector<std::size_t>& kept) {
+    float best = 1e30f;
+    for (std::size_t k = 0; k + 1 < kept.size(); ++k) {
+        const glm::vec3 a = line[kept[k]], ab = line[kept[k + 1]] - a;
+        const float t = std::clamp(glm::dot(p - a, ab) / glm::dot(ab, ab), 0.0f, 1.0f);
+        best = std::min(best, glm::length(p - (a + t * ab)));
+    }
+    return best;
+}
+
+}  // namespace
+
+// A path line made coarser (simplifiedLine, Douglas and Peucker): a straight line keeps its
+// ends; a build of 90 degrees over a 300 m radius keeps every point within the tolerance of
+// the line kept, says how far the furthest one is, and keeps fewer points for a wider
+// tolerance; a point standing out is kept.
+TEST(WellGeometryTest, ACoarserPathLineKeepsEveryPointWithinItsTolerance) {
+    std::vector<glm::vec3> straight;
+    for (int i = 0; i <= 1000; ++i) straight.emplace_back(0.0f, -static_cast<float>(i), 0.0f);
+    float error = -1.0f;
+    EXPECT_EQ(simplifiedLine(straight, 0.25f, &error), (std::vector<std::size_t>{0, 1000}));
+    EXPECT_LT(error, 1e-3f);  // (float rounding at a kilometre)
+
+    std::vector<glm::vec3> build;
+    for (int i = 0; i <= 471; ++i) {  // a metre apart on a quarter circle of 300 m
+        const double a = i / 300.0;
+        build.emplace_back(static_cast<float>(300.0 * (1.0 - std::cos(a))),
+                           static_cast<float>(-300.0 * std::sin(a)), 0.0f);
+    }
+    std::size_t previous = build.size() + 1;
+    for (const float tolerance : {0.05f, 0.25f, 1.0f}) {
+        SCOPED_TRACE(tolerance);
+        const std::vector<std::size_t> kept = simplifiedLine(build, tolerance, &error);
+        ASSERT_GE(kept.size(), 2u);
+        EXPECT_EQ(kept.front(), 0u);
+        EXPECT_EQ(kept.back(), build.size() - 1);
+        EXPECT_TRUE(std::is_sorted(kept.begin(), kept.end()));
+        EXPECT_LT(kept.size(), previous);
+        previous = kept.size();
+        float worst = 0.0f;
+        for (const glm::vec3& p : build) worst = std::max(worst, distanceToKept(p, build, kept));
+        EXPECT_LE(worst, tolerance);
+        EXPECT_NEAR(error, worst, 1e-4f);
+        // The chord of a circle strays r (1 - cos(half its angle)): a tenth of the arc's
+        // points or fewer at 0.25 m.
+        if (tolerance == 0.25f) EXPECT_LT(kept.size() * 10, build.size());
+    }
+    std::vector<glm::vec3> kink = straight;
+    kink[400].x = 0.3f;
+    const std::vector<std::size_t> kept = simplifiedLine(kink, 0.25f);
+    EXPECT_TRUE(std::binary_search(kept.begin(), kept.end(), 400u));
+}

@@ -11,9 +11,11 @@
 #include <Inventor/actions/SoCallbackAction.h>
 #include <Inventor/actions/SoGetBoundingBoxAction.h>
 #include <Inventor/actions/SoSearchAction.h>
+#include <Inventor/nodes/SoCoordinate3.h>
 #include <Inventor/nodes/SoGroup.h>
 #include <Inventor/nodes/SoIndexedTriangleStripSet.h>
 #include <Inventor/nodes/SoLOD.h>
+#include <Inventor/nodes/SoLineSet.h>
 #include <Inventor/nodes/SoPerspectiveCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
 
@@ -343,4 +345,93 @@ TEST_F(LodTreeSceneTest, SegmentsMadeWhenNearDrawWhatSegmentsMadeAtOnceDraw) {
         for (std::size_t s = 0; s < builds.size(); ++s) EXPECT_LE(builds[s], 1) << s;
         EXPECT_EQ(static_cast<std::size_t>(std::count(builds.begin(), builds.end(), 1)), made);
     }
+}
+
+// A well's path line seen from afar draws its coarser copy (every point of the line within
+// kPathTolerance_m of it), from where that distance projects under the pixel tolerance from
+// the line's nearest point; nearer, the line itself.
+TEST_F(LodTreeSceneTest, APathLineFarAwayDrawsItsCoarserCopyOnlyWhereItsErrorIsUnderAPixel) {
+    const auto geometry = well(20.0);
+    scenegraph::WellScene scene;
+    scene.buildAll(*geometry);
+    const scenegraph::LodView view = scenegraph::lodViewFor(kHeight, 0.785398f);
+    scene.setLodView(view);
+    const std::vector<glm::vec3> line = reconstruction::pathLine(*geometry);
+    SoSearchAction search;
+    search.setType(SoLOD::getClassTypeId());
+    search.setInterest(SoSearchAction::ALL);
+    search.apply(scene.root());
+    const SoLOD* lod = nullptr;
+    for (int i = 0; i < search.getPaths().getLength(); ++i) {
+        const SoPath* path = search.getPaths()[i];
+        for (int j = 0; j < path->getLength(); ++j)
+            if (path->getNode(j)->getName() == SbName("path"))
+                lod = static_cast<const SoLOD*>(path->getTail());
+    }
+    ASSERT_NE(lod, nullptr);
+    ASSERT_EQ(lod->getNumChildren(), 2);
+    ASSERT_EQ(lod->range.getNum(), 1);
+    const auto pointsOf = [](const SoNode* group) {
+        const auto* coords =
+            static_cast<const SoCoordinate3*>(static_cast<const SoGroup*>(group)->getChild(0));
+        std::vector<glm::vec3> out;
+        for (int i = 0; i < coords->point.getNum(); ++i)
+            out.emplace_back(coords->point[i][0], coords->point[i][1], coords->point[i][2]);
+        return out;
+    };
+    const std::vector<glm::vec3> fine = pointsOf(lod->getChild(0));
+    const std::vector<glm::vec3> coarse = pointsOf(lod->getChild(1));
+    EXPECT_EQ(fine, line);
+    ASSERT_GE(coarse.size(), 2u);
+    EXPECT_LE(coarse.size() * 4, fine.size());
+    // Every point of the line within the tolerance of the coarser copy.
+    float error = 0.0f;
+    for (const glm::vec3& p : fine) {
+        float best = 1e30f;
+        for (std::size_t k = 0; k + 1 < coarse.size(); ++k) {
+            const glm::vec3 a = coarse[k], ab = coarse[k + 1] - a;
+            const float t = std::clamp(glm::dot(p - a, ab) / glm::dot(ab, ab), 0.0f, 1.0f);
+            best = std::min(best, glm::length(p - (a + t * ab)));
+        }
+        error = std::max(error, best);
+    }
+    EXPECT_LE(error, scenegraph::kPathTolerance_m * 1.0001f);
+    // Past the switch every point of the line is far enough for that error to be under the
+    // pixel tolerance; nearer than the line's reach to the centre, the line itself is drawn.
+    const glm::vec3 centre(lod->center.getValue()[0], lod->center.getValue()[1],
+                           lod->center.getValue()[2]);
+    float reach = 0.0f;
+    for (const glm::vec3& p : fine) reach = std::max(reach, glm::length(p - centre));
+    const float nearest = lod->range[0] - reach;
+    ASSERT_GT(nearest, 0.0f);
+    EXPECT_LE(error * view.focal_px / nearest, view.pixelTolerance * 1.0001f);
+    const auto drawnPoints = [&](const glm::vec3& eye) {
+        auto root = camera(scene, eye, centre);
+        int points = -1;
+        SoCallbackAction action(SbViewportRegion(kWidth, kHeight));
+        action.addPreCallback(
+            SoLineSet::getClassTypeId(),
+            [](void* data, SoCallbackAction* a, const SoNode*) {
+                const SoPath* path = a->getCurPath();
+                for (int i = 0; i < path->getLength(); ++i)
+                    if (path->getNode(i)->getName() == SbName("path"))
+                        *static_cast<int*>(data) =
+                            static_cast<const SoGroup*>(path->getNode(path->getLength() - 2))
+                                        ->getNumChildren() == 2
+                                ? static_cast<const SoCoordinate3*>(
+                                      static_cast<const SoGroup*>(
+                                          path->getNode(path->getLength() - 2))
+                                          ->getChild(0))
+                                      ->point.getNum()
+                                : -1;
+                return SoCallbackAction::CONTINUE;
+            },
+            &points);
+        action.apply(root.get());
+        return points;
+    };
+    EXPECT_EQ(drawnPoints(centre + glm::vec3(lod->range[0] * 1.01f, 0.0f, 0.0f)),
+              static_cast<int>(coarse.size()));
+    EXPECT_EQ(drawnPoints(centre + glm::vec3(lod->range[0] * 0.99f, 0.0f, 0.0f)),
+              static_cast<int>(fine.size()));
 }

@@ -55,8 +55,9 @@ TEST_F(SegmentFeederTest, WorkerSegmentsReachTheSceneOnTheMainThread) {
     EXPECT_TRUE(started);
     EXPECT_EQ(finishedWith, 8u);  // 80 m in 10 m segments
     EXPECT_EQ(feeder.attached(), 8u);
-    // The segments' SoLODs under one span's, which holds its merged mesh once the load ends.
-    EXPECT_EQ(scenegraph::countScene(scene.root()).lods, 8u + 1u);
+    // The segments' SoLODs under one span's, which holds its merged mesh once the load ends,
+    // and the path line's (the whole well's line and its coarser copy).
+    EXPECT_EQ(scenegraph::countScene(scene.root()).lods, 8u + 1u + 1u);
     EXPECT_EQ(scene.treeDepth(), 1);
     EXPECT_EQ(scene.mergedSpans(), 1u);
 }
