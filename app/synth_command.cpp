@@ -58,7 +58,7 @@ void writeField(const std::string& folder, std::size_t wells, double length, dou
                 int arms) {
     namespace fs = std::filesystem;
     fs::create_directories(folder);
-    const int digits = std::max(3, static_cast<int>(std::to_string(wells - 1).size()));
+    const std::size_t digits = std::max<std::size_t>(3, std::to_string(wells - 1).size());
     const std::string manifestPath = (fs::path(folder) / "manifest.csv").string();
     io::AtomicOutput manifestFile(manifestPath);
     std::ostream& manifest = manifestFile.stream();
@@ -68,10 +68,11 @@ void writeField(const std::string& folder, std::size_t wells, double length, dou
         reconstruction::SyntheticFieldWell well =
             reconstruction::syntheticFieldWell(w, wells, length, step);
         well.spec.armCount = arms;
-        char name[64], wellName[64];
-        std::snprintf(name, sizeof name, "well-%0*zu.las", digits, w);
+        std::string number = std::to_string(w);
+        number.insert(0, digits - number.size(), '0');
+        const std::string name = "well-" + number + ".las";
         // Each well its own name in the header (WELL), numbered as its file.
-        std::snprintf(wellName, sizeof wellName, "FIELD-%0*zu", digits, w);
+        const std::string wellName = "FIELD-" + number;
         io::LasWriteOptions las;
         las.wellName = wellName;
         las.parameters = fieldLocation(well.north_m, well.east_m, well.elevation_m);

@@ -362,7 +362,9 @@ TEST(WellGeometryTest, ACoarserPathLineKeepsEveryPointWithinItsTolerance) {
         EXPECT_NEAR(error, worst, 1e-4f);
         // The chord of a circle strays r (1 - cos(half its angle)): a tenth of the arc's
         // points or fewer at 0.25 m.
-        if (tolerance == 0.25f) EXPECT_LT(kept.size() * 10, build.size());
+        if (tolerance == 0.25f) {
+            EXPECT_LT(kept.size() * 10, build.size());
+        }
     }
     std::vector<glm::vec3> kink = straight;
     kink[400].x = 0.3f;

@@ -74,9 +74,10 @@ TEST(PictureScaleTest, TheSeriesOfExaggerationsHoldsEveryFactorChosen) {
             const double chosen = autoExaggeration(extent, radius, 800);
             EXPECT_TRUE(std::find(series.begin(), series.end(), chosen) != series.end()) << chosen;
             const double separated = separatedExaggeration(extent / 100.0, radius, radius);
-            if (separated >= 1.0)
+            if (separated >= 1.0) {
                 EXPECT_TRUE(std::find(series.begin(), series.end(), separated) != series.end())
                     << separated;
+            }
         }
 }
 
