@@ -491,7 +491,9 @@ AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOpt
         // The plan made as the well was read, unless the scene's plan cut the well.
         std::shared_ptr<const reconstruction::CoarsePlan> planned =
             asRead[w] == loaded[w] ? wellsLoaded.plans[w] : nullptr;
-        if (planned || rows.segmentNodes == scenegraph::SegmentNodes::whenNear) {
+        // (A plan starts at level 1: level 0 keeps every row.)
+        if (planned ||
+            (rows.segmentNodes == scenegraph::SegmentNodes::whenNear && firstCoarseLevel >= 1)) {
             if (!planned)  // (buildCoarseMeshes(drawn, firstCoarseLevel) plans the same way)
                 planned = std::make_shared<const reconstruction::CoarsePlan>(
                     reconstruction::planCoarseMeshes(*drawn, firstCoarseLevel,
