@@ -3,10 +3,13 @@
 // two threads (geometry and analysis alike). Prints sections per second
 // (docs/benchmarks.md, "Reconstruction").
 #include <memory>
+#include <vector>
 
 #include <benchmark/benchmark.h>
 
 #include "reconstruction/analysis/well_analysis.h"
+#include "reconstruction/mesh/lod_levels.h"
+#include "reconstruction/mesh/lod_tree.h"
 #include "reconstruction/synthetic/synthetic_well.h"
 
 using namespace caliper3d;
@@ -49,8 +52,25 @@ void analysisOnly(benchmark::State& state) {
         static_cast<double>(table->rowCount()) * state.iterations(), benchmark::Counter::kIsRate);
 }
 
+// A well of a field held lean, planned as it is read (app/scene_assembly.cpp): the coarse
+// meshes of 1 km at 2.5 mm (400,001 sections), level 3 on, for the thirteen radial
+// exaggerations a picture may choose and one more, on one thread. Prints sections per second.
+void planFieldWell(benchmark::State& state) {
+    static const auto table = std::make_shared<const io::SectionTable>(
+        makeSyntheticWell(syntheticProfile("example", 1000.0, 0.0025)));
+    const WellGeometry geometry(table, GeometryOptions{});
+    const std::vector<double> factors = {1, 2, 3, 5, 10, 20, 30, 50, 100, 200, 300, 500, 1000, 7};
+    for (auto _ : state) {
+        const CoarsePlan plan = planCoarseMeshes(geometry, kFieldFirstCoarseLevel, factors, 1);
+        benchmark::DoNotOptimize(plan.spans.data());
+    }
+    state.counters["sections/s"] = benchmark::Counter(
+        static_cast<double>(table->rowCount()) * state.iterations(), benchmark::Counter::kIsRate);
+}
+
 }  // namespace
 
+BENCHMARK(planFieldWell)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(10);
 BENCHMARK(pathSplineAnalysis)
     ->Arg(1)
     ->Arg(2)

@@ -67,9 +67,10 @@ void appendRing(const WellGeometry& g, Mesh& mesh, std::size_t row,
     }
     // Outward normals: in-plane tangent (clockwise) crossed with the hole axis.
     for (int j = 0; j < points; ++j) {
-        const glm::vec3& next = mesh.positions[base + static_cast<std::size_t>((j + 1) % points)];
+        const glm::vec3& next =
+            mesh.positions[base + static_cast<std::size_t>(j + 1 == points ? 0 : j + 1)];
         const glm::vec3& prev =
-            mesh.positions[base + static_cast<std::size_t>((j + points - 1) % points)];
+            mesh.positions[base + static_cast<std::size_t>(j == 0 ? points - 1 : j - 1)];
         const glm::dvec3 d = glm::dvec3(next - prev);
         glm::dvec3 normal = glm::cross(d, toScene(f.tangent));
         const double len = glm::length(normal);
@@ -214,7 +215,8 @@ glm::dvec2 ringCentroid(const std::vector<glm::dvec2>& ring) {
     double area2 = 0.0;
     glm::dvec2 sum(0.0), centroid(0.0);
     for (std::size_t j = 0; j < points; ++j) {
-        const glm::dvec2 &a = ring[j], &b = ring[(j + 1) % points];
+        // (No modulo: an integer division at every point.)
+        const glm::dvec2 &a = ring[j], &b = ring[j + 1 == points ? 0 : j + 1];
         const double cross = a.x * b.y - b.x * a.y;
         area2 += cross;
         sum += (a + b) * cross;

@@ -99,11 +99,12 @@ void padDeviations(const WellGeometry& g, const std::vector<std::size_t>& candid
                     here.centroid - (from.centroid + t * (to.centroid - from.centroid));
                 const double centroidDistance = glm::length(dc);
                 worstCentroid = std::max(worstCentroid, centroidDistance);
-                double shape = 0.0;
+                double shape2 = 0.0;  // one square root a row, not one a pad
                 for (std::size_t j = 0; j < knots; ++j) {
                     ds[j] = here.about[j] - (from.about[j] + t * (to.about[j] - from.about[j]));
-                    shape = std::max(shape, glm::length(ds[j]));
+                    shape2 = std::max(shape2, glm::dot(ds[j], ds[j]));
                 }
+                const double shape = std::sqrt(shape2);
                 worstShape = std::max(worstShape, shape);
                 // Each point is within |dc| + F |ds| at F: a row that cannot beat the worst
                 // found at any F is passed over (most rows, once a few are in). The bound is
