@@ -276,11 +276,12 @@ TEST_F(FieldPictureTest, AMapNamesEveryWellBesideItsWellhead) {
         const glm::vec2 head = heads[well];
         const float apart = distanceToBox(head, label.box);
         EXPECT_GE(apart, 4.5f) << label.text;
-        if (apart > 30.0f)
+        if (apart > 30.0f) {
             EXPECT_TRUE(std::any_of(
                 leaders.begin(), leaders.end(),
                 [&](const ScreenSegment& leader) { return joins(leader, head, label.box); }))
                 << label.text << " is " << apart << " px from its wellhead, with no leader";
+        }
     }
     EXPECT_GE(named, 14);
 }
@@ -328,15 +329,19 @@ TEST_F(FieldPictureTest, APadSeenFromAboveNamesEveryWellWithLeadersThatCrossNoth
         EXPECT_TRUE(joins(leader, heads[well], names[owner].box)) << names[owner].text;
         // Clear of the other names (a 1 px tolerance for the projection), the other wellheads'
         // markers and the other leaders.
-        for (std::size_t i = 0; i < names.size(); ++i)
-            if (i != owner)
+        for (std::size_t i = 0; i < names.size(); ++i) {
+            if (i != owner) {
                 EXPECT_FALSE(crosses(leader, names[i].box, -1.0f))
                     << names[owner].text << "'s leader crosses " << names[i].text;
-        for (std::size_t h = 0; h < heads.size(); ++h)
-            if (h != well)
+            }
+        }
+        for (std::size_t h = 0; h < heads.size(); ++h) {
+            if (h != well) {
                 EXPECT_FALSE(crosses(leader, {heads[h].x - 4.5f, heads[h].y - 4.5f,
                                               heads[h].x + 4.5f, heads[h].y + 4.5f}))
                     << names[owner].text << "'s leader crosses well " << h << "'s marker";
+            }
+        }
         for (std::size_t k = 0; k < l; ++k)
             EXPECT_FALSE(crosses(leader, leaders[k])) << "leaders " << k << " and " << l;
     }
