@@ -324,12 +324,12 @@ BuiltWell buildPlanned(std::shared_ptr<const reconstruction::WellGeometry> drawn
         built.meshes.spans =
             reconstruction::buildPlannedSpans(*drawn, *plan, wholeRows.get(), threads);
         built.waiting.count = plan->segments.size();
-        for (const reconstruction::SegmentPlan& segment : plan->segments)
-            built.waiting.fullDetailTriangles += segment.fullDetailTriangles;
         built.waiting.boxes.reserve(plan->segments.size());
-        for (const reconstruction::SegmentPlan& segment : plan->segments)
+        for (const reconstruction::SegmentPlan& segment : plan->segments) {
+            built.waiting.fullDetailTriangles += segment.fullDetailTriangles;
             built.waiting.boxes.push_back(
                 reconstruction::plannedSegmentBox(*drawn, segment, wholeRows.get()));
+        }
         built.waiting.build = [drawn, plan, wholeRows](std::size_t s) {
             return reconstruction::finishSegmentLevels(*drawn, plan->segments[s], wholeRows.get());
         };

@@ -17,7 +17,6 @@
 
 #include <algorithm>
 
-#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "reconstruction/mesh/lod_levels.h"
@@ -92,12 +91,9 @@ void WellScene::setPath(const reconstruction::WellGeometry& geometry, double spa
     fine->addChild(m_pathLine);
     m_pathGroup->removeChild(m_pathLine);
     m_pathGroup->removeChild(m_pathCoords);
-    glm::vec3 lo = line.front(), hi = line.front();
-    for (const glm::vec3& p : line) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
-    }
-    const glm::vec3 centre = (lo + hi) / 2.0f;
+    reconstruction::Box3 box;
+    for (const glm::vec3& p : line) box.extend(p);
+    const glm::vec3 centre = (box.lo + box.hi) / 2.0f;
     m_pathReach = 0.0f;
     for (const glm::vec3& p : line) m_pathReach = std::max(m_pathReach, glm::length(p - centre));
     m_pathError = error;
@@ -276,10 +272,7 @@ void WellScene::attachAll(const reconstruction::WellGeometry& geometry,
         const std::size_t first = i * reconstruction::kLodTreeFanOut;
         for (std::size_t s = first;
              s < std::min(first + reconstruction::kLodTreeFanOut, segments.count); ++s)
-            if (!segments.boxes[s].empty()) {
-                box.extend(segments.boxes[s].lo);
-                box.extend(segments.boxes[s].hi);
-            }
+            box.extend(segments.boxes[s]);
         if (!box.empty()) span.children->addChild(boundsStandIn(box));
     }
     cacheBounds();

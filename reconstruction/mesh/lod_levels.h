@@ -80,6 +80,11 @@ struct Box3 {
         lo = glm::min(lo, p);
         hi = glm::max(hi, p);
     }
+    void extend(const Box3& box) {
+        if (box.empty()) return;
+        extend(box.lo);
+        extend(box.hi);
+    }
 };
 // The box of every point the strips of finishSegmentLevels(drawn, plan, wholeRows) draw, found
 // without building the meshes (a segment made when a camera comes near is bounded by it
