@@ -1,10 +1,11 @@
 #include "app/scene_assembly.h"
 
+#include "app/lean_well.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <exception>
-#include <filesystem>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -18,6 +19,7 @@
 #include <Inventor/nodes/SoSeparator.h>
 
 #include "app/change_colouring.h"
+#include "app/lean_well.h"
 #include "io/parse_error.h"
 #include "io/picks_reader.h"
 #include "reconstruction/analysis/wall_colour_request.h"
@@ -47,20 +49,6 @@ AssembledScene assembleScene(const std::vector<WellSource>& wells, const LoadOpt
 }
 
 namespace {
-
-// A file's size and last change, to tell whether a log read again is the log that was read.
-struct FileStamp {
-    std::uintmax_t size = 0;
-    std::filesystem::file_time_type changed{};
-    bool operator==(const FileStamp& o) const { return size == o.size && changed == o.changed; }
-};
-FileStamp stampOf(const std::string& path) {
-    std::error_code error;
-    FileStamp stamp;
-    stamp.size = std::filesystem::file_size(path, error);
-    if (!error) stamp.changed = std::filesystem::last_write_time(path, error);
-    return stamp;
-}
 
 // One well as its worker left it: loaded with its picks and the plan of its coarse meshes,
 // or the exception that stopped it.
@@ -194,26 +182,6 @@ Loaded takeLoaded(const std::vector<WellSource>& wells, std::vector<LoadSlot> lo
     return kept;
 }
 
-// A well of a field held lean keeps this many rows (WellGeometry::sampled): about what the
-// picture's scale and framing sample of it (scenegraph/picture_scale.cpp), and a row every
-// 0.25 m of a kilometre for its labels.
-constexpr std::size_t kLeanRows = 4096;
-
-// The rows a well of a field held lean keeps when its coarse meshes were planned: those
-// (every row they draw or step over), those of its path line, and kLeanRows of the rest.
-std::vector<std::size_t> heldRows(const reconstruction::WellGeometry& whole,
-                                  const reconstruction::CoarsePlan& plan) {
-    std::vector<std::size_t> rows = plan.rows();
-    const std::vector<std::size_t> line = reconstruction::pathLineRows(whole);
-    const std::vector<std::size_t> every =
-        reconstruction::everyKthRow(whole.table().rowCount(), kLeanRows);
-    rows.insert(rows.end(), line.begin(), line.end());
-    rows.insert(rows.end(), every.begin(), every.end());
-    std::sort(rows.begin(), rows.end());
-    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
-    return rows;
-}
-
 // Loads every well as loadAll does, taking each in order as it arrives (takeOne); once the
 // wells taken hold more rows than `rows.budget`, every well taken from then on, and those
 // before, is kept by the rows its coarse meshes' plan draws and a sample of the rest
@@ -285,13 +253,8 @@ struct WellReader {
     FileStamp stamp;
 
     std::shared_ptr<const reconstruction::WellGeometry> operator()() const {
-        if (!(stampOf(source.path) == stamp))
-            throw std::runtime_error(source.path +
-                                     ": changed since it was loaded (its size or time of last "
-                                     "change differs): its finer levels are not drawn from "
-                                     "another log; run the command again");
         const std::shared_ptr<const reconstruction::WellGeometry> whole =
-            reconstruction::loadWell(source, options, origin).geometry;
+            readWholeAgain(source, options, origin, stamp);
         return std::make_shared<const reconstruction::WellGeometry>(
             whole->restyled(exaggeration, colouring(*whole)));
     }

@@ -9,6 +9,7 @@
 #include <Inventor/nodes/SoSeparator.h>
 #include "app/input_options.h"
 #include "app/input_summary.h"
+#include "app/lean_well.h"
 
 #include "reconstruction/mesh/lod_levels.h"
 #include "reconstruction/well_geometry.h"
@@ -68,8 +69,6 @@ struct FieldRows {
     // A picture makes each span's segment nodes as its camera comes near (refineForCamera).
     scenegraph::SegmentNodes segmentNodes = scenegraph::SegmentNodes::now;
 };
-// What `render` holds of a field before it holds it lean: about 330 MB of tables and paths.
-inline constexpr std::size_t kFieldRowBudget = 2'000'000;
 
 // Each well's segments come with their levels from `firstCoarseLevel` on (a picture of a field
 // needs fewer up front: reconstruction::kFieldFirstCoarseLevel). Several wells are read side by

@@ -43,13 +43,45 @@ void DetailLoader::onTimer(void* data, SoSensor*) {
 void DetailLoader::addWell(WellScene& scene,
                            std::shared_ptr<const reconstruction::WellGeometry> geometry) {
     assertMainThread("DetailLoader::addWell");
-    m_wells[m_nextKey++] = Entry{&scene, std::move(geometry)};
+    m_wells[m_nextKey++] = Entry{&scene, std::move(geometry), nullptr, false};
     m_changed = true;
+}
+
+void DetailLoader::addWell(WellScene& scene, reconstruction::WholeWellReader readWhole) {
+    assertMainThread("DetailLoader::addWell");
+    m_wells[m_nextKey++] =
+        Entry{&scene, nullptr,
+              std::make_shared<const reconstruction::WholeWellReader>(std::move(readWhole)), false};
+    m_changed = true;
+}
+
+void DetailLoader::setEntry(Entry entry) {
+    assertMainThread("DetailLoader::setWell");
+    m_changed = true;
+    for (auto& [key, held] : m_wells)
+        if (held.scene == entry.scene) {
+            if (held.readWhole) m_worker->forgetWholeWells();  // the whole well read for it
+            held = std::move(entry);
+            return;
+        }
+    m_wells[m_nextKey++] = std::move(entry);
+}
+
+void DetailLoader::setWell(WellScene& scene,
+                           std::shared_ptr<const reconstruction::WellGeometry> geometry) {
+    setEntry(Entry{&scene, std::move(geometry), nullptr, false});
+}
+
+void DetailLoader::setWell(WellScene& scene, reconstruction::WholeWellReader readWhole) {
+    setEntry(Entry{&scene, nullptr,
+                   std::make_shared<const reconstruction::WholeWellReader>(std::move(readWhole)),
+                   false});
 }
 
 void DetailLoader::removeAll() {
     assertMainThread("DetailLoader::removeAll");
     m_worker->replaceJobs({});
+    m_worker->forgetWholeWells();
     m_wells.clear();
     m_requested.clear();
     m_changed = true;
@@ -61,6 +93,11 @@ bool DetailLoader::tick() {
         m_requested.erase({result.well, result.mesh.index});
         const auto it = m_wells.find(result.well);
         if (it == m_wells.end()) continue;  // a well closed meanwhile
+        if (!result.error.empty()) {
+            if (!it->second.failed && m_failureReport) m_failureReport(result.error);
+            it->second.failed = true;
+            continue;
+        }
         it->second.scene->attachFinerLevels(result.mesh);
         m_changed = true;
     }
@@ -87,9 +124,12 @@ void DetailLoader::request(const DetailView& view) {
     std::vector<Wanted> wanted;
     for (auto& [key, entry] : m_wells) {
         if (newLod) entry.scene->setLodView(view.lod);
+        if (entry.failed) continue;
         for (const DetailRequest& r : entry.scene->wantedDetail(view.eye)) {
             if (m_requested.count({key, r.segment})) continue;
-            wanted.push_back({r.distance, {key, entry.geometry, r.segment, r.level, r.heldFrom}});
+            wanted.push_back(
+                {r.distance,
+                 {key, entry.geometry, entry.readWhole, r.segment, r.level, r.heldFrom}});
         }
     }
     evictBeyondBudget();

@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <string>
 #include <utility>
 
 #include <glm/vec3.hpp>
@@ -46,7 +47,21 @@ public:
 
     // The scene must stay alive until removeAll (or the loader's end).
     void addWell(WellScene& scene, std::shared_ptr<const reconstruction::WellGeometry> geometry);
+    // A well held lean (docs/architecture.md, "A field held lean"): `readWhole` reads it whole
+    // and as drawn again, on the worker, when the camera first wants its finer levels. A well
+    // that cannot be read again is reported (setFailureReport) once, and asks for nothing more.
+    void addWell(WellScene& scene, reconstruction::WholeWellReader readWhole);
     void removeAll();
+    // What `scene`'s finer levels are built from from now on (added when it has no entry): its
+    // geometry, or, held lean, a reader of the whole well. Its detail held stays.
+    void setWell(WellScene& scene, std::shared_ptr<const reconstruction::WellGeometry> geometry);
+    void setWell(WellScene& scene, reconstruction::WholeWellReader readWhole);
+    // Where a well held lean that could not be read again is said (the reader's message).
+    void setFailureReport(std::function<void(const std::string&)> report) {
+        m_failureReport = std::move(report);
+    }
+    // The wells held lean read whole and kept by the worker now.
+    std::size_t wholeWellsKept() const { return m_worker->wholeWellsKept(); }
 
     // One step (what the timer runs): attach what was built, then look at the camera.
     // Returns true when nothing is wanted or being built.
@@ -59,12 +74,17 @@ private:
     void request(const DetailView& view);
     // Drops the finer levels idle longest, across every well, until those held fit the budget.
     void evictBeyondBudget();
+    struct Entry;
+    void setEntry(Entry entry);
 
     struct Entry {
         WellScene* scene = nullptr;
-        std::shared_ptr<const reconstruction::WellGeometry> geometry;
+        std::shared_ptr<const reconstruction::WellGeometry> geometry;  // null: held lean
+        std::shared_ptr<const reconstruction::WholeWellReader> readWhole;
+        bool failed = false;  // could not be read again: nothing more asked
     };
     CameraProbe m_probe;
+    std::function<void(const std::string&)> m_failureReport;
     std::size_t m_budget;
     std::map<std::size_t, Entry> m_wells;  // by key, never reused
     std::size_t m_nextKey = 0;

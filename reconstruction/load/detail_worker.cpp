@@ -1,5 +1,8 @@
 #include "reconstruction/load/detail_worker.h"
 
+#include <algorithm>
+#include <exception>
+#include <stdexcept>
 #include <utility>
 
 #include "reconstruction/mesh/lod_levels.h"
@@ -35,6 +38,46 @@ std::size_t DetailWorker::pending() const {
     return m_jobs.size() + m_building;
 }
 
+void DetailWorker::forgetWholeWells() {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    m_wholes.clear();
+}
+
+std::size_t DetailWorker::wholeWellsKept() const {
+    std::lock_guard<std::mutex> lock(m_mutex);
+    return m_wholes.size();
+}
+
+std::shared_ptr<const WellGeometry> DetailWorker::wholeWell(const DetailJob& job) {
+    Whole kept;
+    {
+        std::lock_guard<std::mutex> lock(m_mutex);
+        const auto it = std::find_if(m_wholes.begin(), m_wholes.end(),
+                                     [&](const Whole& w) { return w.reader == job.readWhole; });
+        if (it != m_wholes.end()) {
+            kept = std::move(*it);
+            m_wholes.erase(it);
+        }
+    }
+    if (!kept.reader) {
+        kept.reader = job.readWhole;
+        try {
+            kept.geometry = (*job.readWhole)();
+        } catch (const std::exception& e) {
+            kept.error = e.what();
+        }
+    }
+    std::shared_ptr<const WellGeometry> whole = kept.geometry;
+    std::string error = kept.error;
+    {
+        std::lock_guard<std::mutex> lock(m_mutex);
+        while (m_wholes.size() >= kWholeWellsKept) m_wholes.pop_front();
+        m_wholes.push_back(std::move(kept));
+    }
+    if (!whole) throw std::runtime_error(error);
+    return whole;
+}
+
 void DetailWorker::run() {
     for (;;) {
         DetailJob job;
@@ -48,7 +91,14 @@ void DetailWorker::run() {
         }
         DetailResult result;
         result.well = job.well;
-        result.mesh = buildSegmentLevels(*job.geometry, job.segment, job.from, job.to);
+        try {
+            const std::shared_ptr<const WellGeometry> geometry =
+                job.readWhole ? wholeWell(job) : job.geometry;
+            result.mesh = buildSegmentLevels(*geometry, job.segment, job.from, job.to);
+        } catch (const std::exception& e) {
+            result.mesh.index = job.segment;
+            result.error = e.what();
+        }
         m_results.push(std::move(result));
         std::lock_guard<std::mutex> lock(m_mutex);
         --m_building;

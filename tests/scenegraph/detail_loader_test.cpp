@@ -5,7 +5,10 @@
 #include <chrono>
 #include <memory>
 #include <optional>
+#include <stdexcept>
+#include <string>
 #include <thread>
+#include <vector>
 
 #include <Inventor/SoDB.h>
 #include <Inventor/sensors/SoSensorManager.h>
@@ -108,4 +111,69 @@ TEST_F(DetailLoaderTest, OneBudgetServesEveryWellOfTheScene) {
     EXPECT_EQ(a.heldFrom(25), 0);
     EXPECT_EQ(a.heldFrom(2), reconstruction::kFirstCoarseLevel);
     EXPECT_LE(a.fineTriangles() + b.fineTriangles(), loader.budgetTriangles());
+}
+
+TEST_F(DetailLoaderTest, AWellHeldLeanIsReadWholeAgainOnceForItsFinerLevels) {
+    // The same well twice: one scene's loader holds the geometry, the other's reads it whole
+    // again (a well of a field held lean). Both draw the same finer levels wherever the camera
+    // goes; the second reads its well once for all of them.
+    const auto geometry = std::make_shared<const reconstruction::WellGeometry>(
+        std::make_shared<const io::SectionTable>(reconstruction::makeSyntheticWell(
+            reconstruction::syntheticProfile("circle", 30.0, 0.0025))),
+        reconstruction::GeometryOptions{});
+    scenegraph::WellScene held, lean;
+    held.buildAll(*geometry);
+    lean.buildAll(*geometry);
+    std::optional<scenegraph::DetailView> camera;
+    scenegraph::DetailLoader heldLoader([&] { return camera; });
+    scenegraph::DetailLoader leanLoader([&] { return camera; });
+    heldLoader.addWell(held, geometry);
+    int reads = 0;
+    leanLoader.addWell(lean, [&reads, &geometry] {
+        ++reads;  // on the worker; read below only once it has settled
+        return geometry;
+    });
+    ASSERT_TRUE(settle(leanLoader));
+    EXPECT_EQ(reads, 0) << "read again with no camera to want its detail";
+    for (const float y : {-2.5f, -25.5f, -10.5f}) {
+        camera = scenegraph::DetailView{{0.0f, y, 0.0f}, scenegraph::lodViewFor(800, 0.8f)};
+        ASSERT_TRUE(settle(heldLoader));
+        ASSERT_TRUE(settle(leanLoader));
+        ASSERT_GT(held.fineTriangles(), 0u);
+        EXPECT_EQ(lean.fineTriangles(), held.fineTriangles()) << y;
+        for (std::size_t s = 0; s < held.segmentCount(); ++s)
+            ASSERT_EQ(lean.heldFrom(s), held.heldFrom(s)) << y << " m, segment " << s;
+    }
+    EXPECT_EQ(reads, 1);
+    EXPECT_EQ(leanLoader.wholeWellsKept(), 1u);
+    leanLoader.removeAll();  // restyled wells read again differently: the whole well goes
+    EXPECT_EQ(leanLoader.wholeWellsKept(), 0u);
+}
+
+TEST_F(DetailLoaderTest, AWellHeldLeanThatCannotBeReadAgainIsSaidOnceAndKeepsItsCoarseLevels) {
+    const auto geometry = std::make_shared<const reconstruction::WellGeometry>(
+        std::make_shared<const io::SectionTable>(reconstruction::makeSyntheticWell(
+            reconstruction::syntheticProfile("circle", 30.0, 0.0025))),
+        reconstruction::GeometryOptions{});
+    scenegraph::WellScene scene;
+    scene.buildAll(*geometry);
+    std::optional<scenegraph::DetailView> camera =
+        scenegraph::DetailView{{0.0f, -2.5f, 0.0f}, scenegraph::lodViewFor(800, 0.8f)};
+    scenegraph::DetailLoader loader([&] { return camera; });
+    std::vector<std::string> said;
+    loader.setFailureReport([&said](const std::string& message) { said.push_back(message); });
+    int reads = 0;
+    loader.addWell(scene, [&reads]() -> std::shared_ptr<const reconstruction::WellGeometry> {
+        ++reads;
+        throw std::runtime_error("well.las: changed since it was loaded");
+    });
+    ASSERT_TRUE(settle(loader));
+    camera->eye = {0.0f, -12.5f, 0.0f};  // asks again elsewhere: the well is not read again
+    ASSERT_TRUE(settle(loader));
+    ASSERT_EQ(said.size(), 1u);
+    EXPECT_EQ(said.front(), "well.las: changed since it was loaded");
+    EXPECT_EQ(reads, 1);
+    EXPECT_EQ(scene.fineTriangles(), 0u);
+    for (std::size_t s = 0; s < scene.segmentCount(); ++s)
+        ASSERT_EQ(scene.heldFrom(s), reconstruction::kFirstCoarseLevel) << s;
 }
