@@ -45,10 +45,11 @@ struct WellToOpen {
     LoadOptions options;
 };
 
-// view --stats: when the window first drew a frame with a well in it and when every well was
-// loaded, from the start of the verb, and the peak memory; printed on one line once both are
-// known, then the window closes (a benchmark's run). The frame is caught by a callback node
-// at the end of the scene, traversed by every render of the viewer.
+// view --stats: when the window first drew a frame with a well in it, when every well was
+// loaded and when it settled (WellSession::settled), from the start of the verb, and the peak
+// memory; printed on one line once all are known, then the window closes (a benchmark's run). The
+// frame is caught by a callback node at the end of the scene, traversed by every render of the
+// viewer.
 class WindowTimings {
 public:
     WindowTimings(const WellSession& session, std::chrono::steady_clock::time_point start)
@@ -62,7 +63,16 @@ public:
     }
     void loaded() {
         if (!m_complete_ms) m_complete_ms = msSinceStart();
-        reportWhenKnown();
+        // The peak is read once the wells are analysed and those held lean have let go of
+        // their rows (WellSession::settled), polled.
+        m_settle.setInterval(20);
+        QObject::connect(&m_settle, &QTimer::timeout, [this] {
+            if (!m_session.settled()) return;
+            m_settle.stop();
+            m_settled_ms = msSinceStart();
+            reportWhenKnown();
+        });
+        m_settle.start();
     }
 
 private:
@@ -82,10 +92,10 @@ private:
             }
     }
     void reportWhenKnown() {
-        if (!m_firstPicture_ms || !m_complete_ms || m_reported) return;
+        if (!m_firstPicture_ms || !m_complete_ms || !m_settled_ms || m_reported) return;
         m_reported = true;
-        std::printf("first_picture_ms=%.0f complete_ms=%.0f rss_mb=%.0f\n", *m_firstPicture_ms,
-                    *m_complete_ms, scenegraph::peakRss_mb());
+        std::printf("first_picture_ms=%.0f complete_ms=%.0f settled_ms=%.0f rss_mb=%.0f\n",
+                    *m_firstPicture_ms, *m_complete_ms, *m_settled_ms, scenegraph::peakRss_mb());
         std::fflush(stdout);
         QTimer::singleShot(0, [] { QApplication::quit(); });
     }
@@ -96,8 +106,9 @@ private:
 
     const WellSession& m_session;
     std::chrono::steady_clock::time_point m_start;
-    std::optional<double> m_firstPicture_ms, m_complete_ms;
+    std::optional<double> m_firstPicture_ms, m_complete_ms, m_settled_ms;
     bool m_reported = false;
+    QTimer m_settle;
 };
 
 int showWindow(int argc, char** argv, const std::vector<WellToOpen>& wells,

@@ -1,5 +1,6 @@
 #include "scenegraph/section_pick.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <stdexcept>
@@ -90,8 +91,10 @@ std::size_t segmentOfRow(const reconstruction::WellGeometry& g, std::size_t row)
 
 void checkWells(const std::vector<PickableWell>& wells) {
     for (const PickableWell& w : wells)
-        if (!w.scene || !w.geometry || !w.analysis ||
-            w.analysis->sections.size() != w.geometry->table().rowCount())
+        if (!w.scene || !w.geometry ||
+            (w.wholeRows
+                 ? w.wholeRows->size() != w.geometry->table().rowCount()
+                 : !w.analysis || w.analysis->sections.size() != w.geometry->table().rowCount()))
             throw std::invalid_argument(
                 "pickSection: every well needs its scene, its geometry and that geometry's "
                 "analysis");
@@ -119,9 +122,16 @@ std::optional<SectionPick> nearestWall(SoRayPickAction& action, SoNode* root,
         out.spanDepth = hit->spanDepth;
         const SbVec3f& p = point->getPoint();
         out.point = glm::vec3(p[0], p[1], p[2]);
-        const auto [firstRow, lastRow] = hit->spanDepth > 0
-                                             ? std::pair(hit->firstRow, hit->lastRow)
-                                             : well.geometry->segmentRows(hit->segment);
+        auto [firstRow, lastRow] = hit->spanDepth > 0 ? std::pair(hit->firstRow, hit->lastRow)
+                                                      : well.geometry->segmentRows(hit->segment);
+        if (hit->spanDepth > 0 && well.wholeRows) {  // the rows held within the span's
+            const std::vector<std::size_t>& held = *well.wholeRows;
+            firstRow = static_cast<std::size_t>(
+                std::lower_bound(held.begin(), held.end(), firstRow) - held.begin());
+            lastRow = static_cast<std::size_t>(std::upper_bound(held.begin(), held.end(), lastRow) -
+                                               held.begin());
+            lastRow = std::max(firstRow, lastRow > 0 ? lastRow - 1 : 0);
+        }
         out.wall = reconstruction::locateWallPoint(*well.geometry, firstRow, lastRow,
                                                    glm::dvec3(out.point));
         if (hit->spanDepth > 0) {
@@ -129,7 +139,10 @@ std::optional<SectionPick> nearestWall(SoRayPickAction& action, SoNode* root,
             out.level =
                 static_cast<int>(reconstruction::lodPyramid(well.geometry->options()).size());
         }
-        out.section = well.analysis->sections[out.wall.row];
+        if (well.analysis)
+            out.section = well.analysis->sections[out.wall.row];
+        else
+            out.analysed = false;
         return out;
     }
     return std::nullopt;

@@ -28,6 +28,10 @@ struct PickableWell {
     const reconstruction::WellGeometry* geometry = nullptr;
     const reconstruction::WellAnalysis* analysis = nullptr;
     std::string name;
+    // A well held lean (docs/architecture.md, "A field held lean"): `geometry` holds these
+    // rows of the whole well its nodes were built from, increasing, and there is no analysis.
+    // A pick on it finds the row held nearest the point hit, and no report's row.
+    const std::vector<std::size_t>* wholeRows = nullptr;
 };
 
 // What a ray met on the wall (docs/architecture.md, "Picking").
@@ -48,6 +52,9 @@ struct SectionPick {
     // The report's row for that section (its MD is section.md_m): what `caliper3d report`
     // writes for it. A section without data has class NoData and every measurement NaN.
     reconstruction::SectionResult section;
+    // False on a well held lean: `wall` is the row held nearest the point (a row of the
+    // geometry given), and `section` is left empty.
+    bool analysed = true;
 };
 
 // Runs an SoRayPickAction from `root` through `pixel` of `viewport` (Coin's pixels: origin at
@@ -55,7 +62,8 @@ struct SectionPick {
 // drawn) and returns the nearest point where it meets the wall of one of `wells`; nothing
 // when it meets no wall (a miss, the path line, or a segment that draws nothing from here).
 // Every SoLOD picks the level it draws, so the pick lands on the wall the picture shows.
-// Throws std::invalid_argument when a well lacks its geometry or analysis. Main thread only.
+// Throws std::invalid_argument when a well lacks its geometry, or its analysis where it is not
+// held lean. Main thread only.
 std::optional<SectionPick> pickSection(SoNode* root, const SbViewportRegion& viewport,
                                        const SbVec2s& pixel,
                                        const std::vector<PickableWell>& wells);

@@ -68,4 +68,14 @@ void WellView::rebuild(const reconstruction::WellGeometry& geometry, double radi
     annotate(geometry, radialExaggeration);  // the tick marks stand off the wall as now drawn
 }
 
+void WellView::rebuild(const reconstruction::WellGeometry& geometry,
+                       const reconstruction::CoarseMeshes& meshes, double radialExaggeration) {
+    assertMainThread("WellView");
+    auto scene = std::make_unique<WellScene>();
+    scene->attachAll(geometry, meshes);
+    m_shown->replaceChild(m_scene->root(), scene->root());
+    m_scene = std::move(scene);
+    annotate(geometry, radialExaggeration);
+}
+
 }  // namespace caliper3d::scenegraph

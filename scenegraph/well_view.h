@@ -14,7 +14,8 @@ class SoSwitch;
 
 namespace caliper3d::reconstruction {
 class WellGeometry;
-}
+struct CoarseMeshes;
+}  // namespace caliper3d::reconstruction
 
 namespace caliper3d::scenegraph {
 
@@ -61,6 +62,11 @@ public:
     // A new scene in place of the one shown, every segment's coarse levels built here (a
     // restyled geometry), and its annotations.
     void rebuild(const reconstruction::WellGeometry& geometry, double radialExaggeration);
+    // The same from coarse meshes built elsewhere (a well of a field held lean, from its plan
+    // and the rows it holds: reconstruction::buildCoarseMeshes), `geometry` those rows as drawn.
+    void rebuild(const reconstruction::WellGeometry& geometry,
+                 const reconstruction::CoarseMeshes& meshes, double radialExaggeration);
+    int firstCoarseLevel() const { return m_firstCoarseLevel; }
 
 private:
     // Shows `annotations` (the well's, made for `radialExaggeration`) with the picks.

@@ -21,6 +21,9 @@ int DeskModel::addWell(DeskWell well) {
 
 void DeskModel::updateWell(int i, DeskWell well) {
     m_wells.at(static_cast<std::size_t>(i)) = std::move(well);
+    const auto& held = m_wells[static_cast<std::size_t>(i)].geometry;
+    // The current well held by other rows (read whole again, or restyled) keeps its depth.
+    if (i == m_well && held && std::isfinite(m_depth_m)) m_row = nearestRow(*held, m_depth_m);
     emit wellChanged(i);
     const auto& geometry = m_wells[static_cast<std::size_t>(i)].geometry;
     if (m_well < 0 && geometry) setCurrentRow(i, firstMeasuredRow(*geometry));

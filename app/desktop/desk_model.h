@@ -30,6 +30,10 @@ struct DeskWell {
     // The report's analysis of the geometry (reconstruction::analyseWell): null until it is
     // made, on a worker, once the well has loaded.
     std::shared_ptr<const reconstruction::WellAnalysis> analysis;
+    // Held lean (WellSession::setFieldRowBudget): the well's rows, of which `geometry` holds a
+    // sample, and no analysis until it is read whole again as the current well; 0 while the
+    // geometry holds every row.
+    std::size_t wholeRows = 0;
     io::Diagnostics diagnostics;  // reader, survey and geometry warnings
     std::vector<io::Pick> picks;  // image-log picks (--picks), shown in the 3D, rose and log track
     QString error;                // why the load failed (empty when it did not)
@@ -70,8 +74,9 @@ public:
     // Called by the well session as wells load.
     // The first well with geometry becomes current at its first measured section
     // (firstMeasuredRow): every view opens on data.
-    int addWell(DeskWell well);             // emits wellsChanged
-    void updateWell(int i, DeskWell well);  // emits wellChanged(i)
+    int addWell(DeskWell well);  // emits wellsChanged
+    // Emits wellChanged(i); the current well keeps its depth (its row found in the new geometry).
+    void updateWell(int i, DeskWell well);
     // Emits wellsChanged; when the current well goes, the first well with geometry becomes
     // current at its first measured section (currentChanged).
     void removeWell(int i);

@@ -21,16 +21,16 @@ scenegraph::PictureRequest windowPictureRequest(const WellSession& session, cons
 
 scenegraph::Picture drawWindowPicture(const WellSession& session, const SoCamera& camera, int width,
                                       int height) {
-    std::vector<std::shared_ptr<const reconstruction::WellGeometry>> shown;
     const DeskModel& model = session.model();
     scenegraph::PictureRequest request = windowPictureRequest(session, camera, width, height);
     request.tickedWell = std::numeric_limits<std::size_t>::max();  // the current one, if shown
+    std::size_t shown = 0;  // the order of session.pictureWells()
     for (int i = 0; i < model.wellCount(); ++i)
         if (model.well(i).geometry && model.well(i).visible) {
-            if (i == model.currentWell()) request.tickedWell = shown.size();
-            shown.push_back(model.well(i).geometry);
+            if (i == model.currentWell()) request.tickedWell = shown;
+            ++shown;
         }
-    return scenegraph::drawPicture(scenegraph::pictureWells(shown), request);
+    return scenegraph::drawPicture(session.pictureWells(), request);
 }
 
 }  // namespace caliper3d::app

@@ -24,7 +24,9 @@
 #include "io/warnings_text.h"
 #include "reconstruction/analysis/run_change.h"
 #include "reconstruction/analysis/wall_colour_request.h"
+#include "reconstruction/analysis/well_analysis.h"
 #include "reconstruction/load/well_load_pipeline.h"
+#include "reconstruction/mesh/lod_tree.h"
 #include "scenegraph/picture_scale.h"
 #include "scenegraph/section_pick.h"
 #include "scenegraph/segment_feeder.h"
@@ -62,7 +64,83 @@ struct WellSession::Well {
     std::shared_ptr<const reconstruction::SectionValues> values;
     bool started = false;  // its pipeline runs (or has run); else it waits its turn
     bool done = false;
+    FileStamp stamp;  // its log as the load found it: a log read again must be the same
+    // How its wall's colours were last made from its own colouring (applyColourings): under the
+    // range `shared` gives `sharedWells` wells, else its own; not at all (coloured false) while
+    // it is drawn as its load drew it.
+    bool coloured = false;
+    std::optional<reconstruction::ColourRequest> shared;
+    std::size_t sharedWells = 1;
+    std::shared_ptr<const LeanForm> lean;    // set while it is held lean
+    std::unique_ptr<BackgroundJob> leanJob;  // making it lean, or reading it whole again
+    bool leanJobRunning = false;
 };
+
+// What a well held lean keeps (docs/architecture.md, "The window holds a field lean"): the plan
+// of its coarse meshes, made on the whole well for every exaggeration the window may choose and
+// the one it is drawn at; the whole well's rows it holds (heldRows); those rows, uncoloured; and
+// its own colouring of them. Immutable once made.
+struct WellSession::LeanForm {
+    std::shared_ptr<const reconstruction::CoarsePlan> plan;
+    std::shared_ptr<const std::vector<std::size_t>> rows;
+    std::shared_ptr<const reconstruction::WellGeometry> base;
+    reconstruction::ColourRequest ownRequest;                      // what ownHeld colours by
+    std::shared_ptr<const reconstruction::WallColouring> ownHeld;  // of `rows`, own range
+    std::size_t wholeRows = 0;
+    // Whether it can be drawn at `exaggeration` coloured by `colour` without reading it again.
+    bool draws(double exaggeration, const reconstruction::ColourRequest& colour) const {
+        return colour == ownRequest &&
+               std::find(plan->exaggerations.begin(), plan->exaggerations.end(), exaggeration) !=
+                   plan->exaggerations.end();
+    }
+};
+
+namespace {
+
+// The analysis the window makes of every well it loads.
+reconstruction::AnalysisOptions windowAnalysis(const LoadOptions& options) {
+    reconstruction::AnalysisOptions analysis;
+    analysis.rules.minValidArmFraction = options.minValidArmFraction;
+    analysis.threads = 2;
+    return analysis;
+}
+
+bool needsSectionValues(const reconstruction::ColourRequest& colour) {
+    static const std::vector<std::string> analysed{"diameter", "ellipticity", "class"};
+    return std::find(analysed.begin(), analysed.end(), colour.quantity) != analysed.end();
+}
+
+// A well's own colouring by `colour` (its own range), made on the whole well: from the section
+// values of `analysis` where the quantity needs them, else of the analysis made here.
+std::shared_ptr<const reconstruction::WallColouring> ownColouring(
+    const reconstruction::WellGeometry& whole, const reconstruction::ColourRequest& colour,
+    const reconstruction::WellAnalysis* analysis, const reconstruction::AnalysisOptions& options) {
+    std::optional<reconstruction::SectionValues> values;
+    if (needsSectionValues(colour))
+        values = analysis ? reconstruction::sectionValues(*analysis)
+                          : reconstruction::sectionValues(whole, options);
+    return reconstruction::makeWallColouring(whole, colour, values ? &*values : nullptr);
+}
+
+// The colours drawn from a well's own colouring `own` (whole or some rows): those under the
+// shared range, or its own; none where the well is drawn as loaded.
+std::shared_ptr<const reconstruction::WallColouring> drawnColouring(
+    const std::shared_ptr<const reconstruction::WallColouring>& own, bool coloured,
+    const std::optional<reconstruction::ColourRequest>& shared, std::size_t wells) {
+    if (!coloured) return nullptr;
+    return shared ? reconstruction::sharedWallColouring(*own, *shared, wells) : own;
+}
+
+// The exaggerations a well held lean is planned for: every one the window may choose
+// (scenegraph::chooseExaggeration) and those of `more`.
+std::vector<double> plannedExaggerations(const std::vector<double>& more) {
+    std::vector<double> out = scenegraph::seriesExaggerations();
+    for (double f : more)
+        if (std::find(out.begin(), out.end(), f) == out.end()) out.push_back(f);
+    return out;
+}
+
+}  // namespace
 
 WellSession::WellSession(DeskModel& model, scenegraph::DetailLoader::CameraProbe probe,
                          QObject* parent)
@@ -71,9 +149,15 @@ WellSession::WellSession(DeskModel& model, scenegraph::DetailLoader::CameraProbe
       m_retired(std::make_unique<RetiredLoads>()),
       m_sceneRoot(scenegraph::makeRef(new SoSeparator)),
       m_detail(std::make_unique<scenegraph::DetailLoader>(std::move(probe))) {
+    // A well held lean whose log changed since it was loaded draws no finer levels: said once.
+    m_detail->setFailureReport(
+        [this](const std::string& message) { emit status(QString::fromStdString(message)); });
     m_progressTimer.setInterval(kProgressInterval_ms);
     connect(&m_progressTimer, &QTimer::timeout, this, &WellSession::publishProgress);
-    connect(&m_model, &DeskModel::currentChanged, this, [this] { tickCurrentWell(); });
+    connect(&m_model, &DeskModel::currentChanged, this, [this] {
+        tickCurrentWell();
+        followCurrent();
+    });
     connect(&m_model, &DeskModel::wellsChanged, this, [this] { tickCurrentWell(); });
 }
 
@@ -345,6 +429,7 @@ int WellSession::addWell(const WellSource& source, const LoadOptions& options) {
     Well& w = *owned;
     w.id = m_nextId++;
     w.name = fileName(source.path);
+    w.stamp = stampOf(source.path);
     // The wells after the first come with their coarsest segment level only: a field seen
     // whole draws its spans' merged meshes, and the detail worker builds finer levels near
     // the camera, as for every well's finest ones.
@@ -396,10 +481,7 @@ void WellSession::cancelLoading() {
         well.reset();                                  // its nodes leave the scene
     }
     m_wells = std::move(kept);
-    for (const auto& well : m_wells) {
-        const auto& g = m_model.well(modelIndex(*well)).geometry;
-        if (g) m_detail->addWell(well->view->scene(), g);
-    }
+    for (const auto& well : m_wells) setDetail(*well);
     emit warningsChanged();
     emit status(QString("Loading cancelled: %1 well%2 not loaded")
                     .arg(stopped)
@@ -423,6 +505,7 @@ void WellSession::analyse(Well& well) {
                 allAnalysed())
                 restyle(m_look.radialExaggeration, m_look.colour);
             emit wellAnalysed(modelIndex(well));
+            holdLeanWhereDue();
             if (!loading() && allAnalysed()) giveBackFreedMemory();
         });
 }
@@ -577,17 +660,23 @@ void WellSession::setWellVisible(int well, bool visible) {
 }
 
 std::optional<WellPick> WellSession::pick(SoNode* root, const SbViewportRegion& viewport,
-                                          const SbVec2s& pixel) const {
+                                          const SbVec2s& pixel) {
     std::vector<scenegraph::PickableWell> wells;
     std::vector<int> index;
     for (const auto& well : m_wells) {
         const int i = modelIndex(*well);
         const DeskWell& record = m_model.well(i);
-        if (record.geometry && record.analysis && well->view->visible()) {
+        if (!record.geometry || !well->view->visible()) continue;
+        if (well->lean) {
+            wells.push_back({&well->view->scene(), record.geometry.get(), nullptr,
+                             record.name.toStdString(), well->lean->rows.get()});
+        } else if (record.analysis) {
             wells.push_back({&well->view->scene(), record.geometry.get(), record.analysis.get(),
-                             record.name.toStdString()});
-            index.push_back(i);
+                             record.name.toStdString(), nullptr});
+        } else {
+            continue;
         }
+        index.push_back(i);
     }
     if (wells.empty()) return std::nullopt;
     const std::optional<scenegraph::SectionPick> hit =
@@ -597,6 +686,15 @@ std::optional<WellPick> WellSession::pick(SoNode* root, const SbViewportRegion& 
     out.well = index[hit->well];
     out.row = hit->wall.row;
     out.azimuth_deg = hit->wall.azimuth_deg;
+    const DeskWell& record = m_model.well(out.well);
+    if (!hit->analysed) {
+        m_leanPick = {record.id, hit->segment, hit->point};
+        out.text = QString("%1 near %2 m MD: held lean, its log is read again for the section hit")
+                       .arg(record.name)
+                       .arg(record.geometry->table().depth_m[out.row], 0, 'f', 2);
+        return out;
+    }
+    m_leanPick = {};
     out.text = QString("%1 at %2 m MD: radius %3 mm at azimuth %4")
                    .arg(QString::fromStdString(hit->wellName))
                    .arg(hit->section.md_m, 0, 'f', 2)
@@ -629,29 +727,52 @@ bool WellSession::restyleWells(double radialExaggeration,
     }
     if (colour.quantity == reconstruction::kChangeQuantity)
         return startChangeColouring(radialExaggeration, colour, onlyId, applied);
+    // A well held lean that cannot be drawn so from what it holds is read again first.
+    for (const auto& well : m_wells)
+        if (well->lean && (onlyId < 0 || well->id == onlyId) &&
+            !well->lean->draws(radialExaggeration, colour))
+            return startLeanReading(radialExaggeration, colour, onlyId, applied);
     QElapsedTimer clock;
     clock.start();
-    static const std::vector<std::string> analysed{"diameter", "ellipticity", "class"};
-    const bool needsValues =
-        std::find(analysed.begin(), analysed.end(), colour.quantity) != analysed.end();
+    const bool needsValues = needsSectionValues(colour);
     std::vector<ColouredWell> coloured;
-    std::vector<std::shared_ptr<const reconstruction::WellGeometry>> geometries;
+    // Each well's own colouring first (a well held lean has its own of the rows it holds),
+    // then the range they share: reconstruction::wallColourings, in its two steps.
+    std::vector<std::shared_ptr<const reconstruction::WallColouring>> own;
     std::vector<const reconstruction::SectionValues*> values;
+    std::vector<reconstruction::ColourLegend> legends;
     QApplication::setOverrideCursor(Qt::WaitCursor);
-    for (const auto& well : m_wells) {
-        const DeskWell& record = m_model.well(modelIndex(*well));
-        if (!record.geometry || (onlyId >= 0 && well->id != onlyId)) continue;
-        if (needsValues && !well->values)
-            well->values = std::make_shared<const reconstruction::SectionValues>(
-                record.analysis ? reconstruction::sectionValues(*record.analysis)
-                                : reconstruction::sectionValues(*record.geometry));
-        geometries.push_back(record.geometry);
-        values.push_back(well->values.get());
-        coloured.push_back({well->id, record.geometry, nullptr});
-    }
     try {
-        const auto colourings = reconstruction::wallColourings(geometries, colour, values);
-        for (std::size_t w = 0; w < coloured.size(); ++w) coloured[w].colouring = colourings[w];
+        for (const auto& well : m_wells) {
+            const DeskWell& record = m_model.well(modelIndex(*well));
+            if (!record.geometry || (onlyId >= 0 && well->id != onlyId)) continue;
+            if (well->lean) {
+                own.push_back(well->lean->ownHeld);
+                values.push_back(nullptr);
+            } else {
+                if (needsValues && !well->values)
+                    well->values = std::make_shared<const reconstruction::SectionValues>(
+                        record.analysis ? reconstruction::sectionValues(*record.analysis)
+                                        : reconstruction::sectionValues(*record.geometry));
+                values.push_back(well->values.get());
+                own.push_back(
+                    reconstruction::makeWallColouring(*record.geometry, colour, values.back()));
+            }
+            legends.push_back(own.back()->legend());
+            coloured.push_back(
+                {well->id, record.geometry, own.back(), well->lean, std::nullopt, 1});
+        }
+        const std::optional<reconstruction::ColourRequest> shared =
+            reconstruction::sharedColourRequest(legends, colour);
+        for (std::size_t w = 0; shared && w < coloured.size(); ++w) {
+            coloured[w].shared = shared;
+            coloured[w].wells = coloured.size();
+            coloured[w].colouring =
+                coloured[w].lean
+                    ? reconstruction::sharedWallColouring(*own[w], *shared, coloured.size())
+                    : reconstruction::sharedWallColouring(*coloured[w].geometry, *shared,
+                                                          legends[w], coloured.size(), values[w]);
+        }
     } catch (const std::exception& e) {
         QApplication::restoreOverrideCursor();
         emit status(QString::fromStdString(e.what()));
@@ -667,27 +788,42 @@ void WellSession::applyColourings(double radialExaggeration,
                                   const reconstruction::ColourRequest& colour,
                                   const std::vector<ColouredWell>& coloured,
                                   const QElapsedTimer& clock) {
+    ++m_styleGeneration;
     m_detail->removeAll();
     for (auto& well : m_wells) {
         const DeskWell& record = m_model.well(modelIndex(*well));
         // A well closed, or loaded again, since its colours were made keeps its own.
         const auto it = std::find_if(coloured.begin(), coloured.end(), [&](const ColouredWell& c) {
-            return c.id == well->id && c.geometry == record.geometry;
+            return c.id == well->id && c.geometry == record.geometry && c.lean == well->lean;
         });
         if (it == coloured.end()) {
-            if (record.geometry) m_detail->addWell(well->view->scene(), record.geometry);
+            setDetail(*well);
             continue;
         }
-        const auto restyled = std::make_shared<const reconstruction::WellGeometry>(
-            record.geometry->restyled(radialExaggeration, it->colouring));
-        well->view->rebuild(*restyled, radialExaggeration);
+        std::shared_ptr<const reconstruction::WellGeometry> restyled;
+        if (well->lean) {
+            // Drawn from its plan and the rows it holds (a few milliseconds a well).
+            restyled = std::make_shared<const reconstruction::WellGeometry>(
+                well->lean->base->restyled(radialExaggeration, it->colouring));
+            well->view->rebuild(*restyled,
+                                reconstruction::buildCoarseMeshes(*restyled, *well->lean->plan,
+                                                                  well->lean->rows.get(), 2),
+                                radialExaggeration);
+        } else {
+            restyled = std::make_shared<const reconstruction::WellGeometry>(
+                record.geometry->restyled(radialExaggeration, it->colouring));
+            well->view->rebuild(*restyled, radialExaggeration);
+        }
         ++m_annotationGeneration;
-        m_detail->addWell(well->view->scene(), restyled);
+        well->coloured = true;
+        well->shared = it->shared;
+        well->sharedWells = it->wells;
         edit(*well, [&](DeskWell& r) {
             r.geometry = restyled;
             r.options.radialExaggeration = radialExaggeration;
             r.options.colour = colour;
         });
+        setDetail(*well);
     }
     m_legend.reset();
     if (!coloured.empty()) m_legend = coloured.front().colouring->legend();
@@ -764,7 +900,8 @@ bool WellSession::startChangeColouring(double radialExaggeration,
                     reconstruction::changeColourings(geometries, each, colour.range);
                 coloured.reserve(pairs.size());
                 for (std::size_t w = 0; w < pairs.size(); ++w)
-                    coloured.push_back({pairs[w].id, pairs[w].geometry, colourings[w]});
+                    coloured.push_back(
+                        {pairs[w].id, pairs[w].geometry, colourings[w], nullptr, std::nullopt, 1});
             } catch (const std::exception& e) {
                 error = e.what();
             }
@@ -823,6 +960,306 @@ void WellSession::applyStyleAfterLoad() {
     quiet.unblock();
     if (!error.isEmpty()) emit status(error);
     emit lookChanged();
+}
+
+std::vector<scenegraph::PictureWell> WellSession::pictureWells() const {
+    std::vector<scenegraph::PictureWell> out;
+    for (int i = 0; i < m_model.wellCount(); ++i) {
+        const DeskWell& record = m_model.well(i);
+        if (!record.geometry || !record.visible) continue;
+        const Well* well = find(record.id);
+        if (!well || !well->lean) {
+            out.push_back(scenegraph::pictureWells({record.geometry}).front());
+            continue;
+        }
+        auto scene = std::make_shared<scenegraph::WellScene>();
+        scene->attachAll(*record.geometry,
+                         reconstruction::buildCoarseMeshes(*record.geometry, *well->lean->plan,
+                                                           well->lean->rows.get(), 2));
+        out.push_back({record.geometry, std::move(scene), wholeReader(*well)});
+    }
+    return out;
+}
+
+bool WellSession::heldLean(int well) const {
+    if (well < 0 || well >= m_model.wellCount()) return false;
+    const Well* w = find(m_model.well(well).id);
+    return w && w->lean;
+}
+
+int WellSession::leanJobsRunning() const {
+    int running = m_leanReading ? 1 : 0;
+    for (const auto& well : m_wells)
+        if (well && well->leanJobRunning) ++running;
+    return running;
+}
+
+bool WellSession::settled() const {
+    if (loading() || leanJobsRunning() > 0) return false;
+    for (int i = 0; i < m_model.wellCount(); ++i)
+        if (m_model.well(i).geometry && !m_model.well(i).analysis && !heldLean(i)) return false;
+    return true;
+}
+
+bool WellSession::leanDue() const {
+    if (m_rowBudget == 0 || m_wells.size() < 2 ||
+        m_look.colour.quantity == reconstruction::kChangeQuantity)
+        return false;
+    std::size_t rows = 0;
+    for (const auto& well : m_wells) {
+        const int index = well ? modelIndex(*well) : -1;
+        if (index < 0) continue;
+        const auto& geometry = m_model.well(index).geometry;
+        if (well->lean)
+            rows += well->lean->wholeRows;
+        else if (geometry)
+            rows += geometry->table().rowCount();
+    }
+    return rows > m_rowBudget;
+}
+
+void WellSession::holdLeanWhereDue() {
+    if (!leanDue()) return;
+    const int current = m_model.currentWell();
+    for (const auto& well : m_wells) {
+        const int index = well ? modelIndex(*well) : -1;
+        if (index < 0 || index == current || well->lean || well->leanJobRunning || !well->done)
+            continue;
+        const DeskWell& record = m_model.well(index);
+        // The runs of one well stay whole: their depth match and comparison read every row.
+        if (!record.geometry || !record.analysis || record.runOf >= 0) continue;
+        startLeanForm(*well);
+    }
+}
+
+void WellSession::startLeanForm(Well& well) {
+    const DeskWell& record = m_model.well(modelIndex(well));
+    well.leanJobRunning = true;
+    well.leanJob = std::make_unique<BackgroundJob>(
+        this,
+        [this, id = well.id, generation = m_styleGeneration, whole = record.geometry,
+         analysis = record.analysis, colour = record.options.colour,
+         options = windowAnalysis(record.options),
+         firstLevel = well.view->firstCoarseLevel()]() -> std::function<void()> {
+            auto form = std::make_shared<LeanForm>();
+            std::string error;
+            try {
+                form->plan = std::make_shared<const reconstruction::CoarsePlan>(
+                    reconstruction::planCoarseMeshes(
+                        *whole, firstLevel,
+                        plannedExaggerations({whole->options().radialExaggeration}), 2));
+                form->rows =
+                    std::make_shared<const std::vector<std::size_t>>(heldRows(*whole, *form->plan));
+                form->base = std::make_shared<const reconstruction::WellGeometry>(
+                    whole->sampled(*form->rows));
+                form->ownRequest = colour;
+                form->ownHeld = std::make_shared<const reconstruction::WallColouring>(
+                    ownColouring(*whole, colour, analysis.get(), options)->rowsOf(*form->rows));
+                form->wholeRows = whole->table().rowCount();
+            } catch (const std::exception& e) {
+                error = e.what();
+            }
+            return [this, id, generation, whole, form, error]() {
+                Well* w = find(id);
+                if (!w) return;
+                w->leanJobRunning = false;
+                const int index = modelIndex(*w);
+                if (index < 0) return;
+                if (!error.empty()) {  // it stays whole
+                    emit status(w->name + ": not held lean: " + QString::fromStdString(error));
+                    return;
+                }
+                // Restyled meanwhile: made again from the well as drawn now.
+                if (generation != m_styleGeneration || m_model.well(index).geometry != whole) {
+                    holdLeanWhereDue();
+                    return;
+                }
+                if (index != m_model.currentWell() && leanDue()) holdLean(*w, form);
+                if (leanJobsRunning() == 0) giveBackFreedMemory();
+            };
+        });
+}
+
+void WellSession::holdLean(Well& well, std::shared_ptr<const LeanForm> form) {
+    const DeskWell& record = m_model.well(modelIndex(well));
+    const auto sample = std::make_shared<const reconstruction::WellGeometry>(form->base->restyled(
+        record.geometry->options().radialExaggeration,
+        drawnColouring(form->ownHeld, well.coloured, well.shared, well.sharedWells)));
+    well.lean = std::move(form);
+    well.values.reset();
+    edit(well, [&sample, rows = well.lean->wholeRows](DeskWell& r) {
+        r.geometry = sample;
+        r.analysis.reset();
+        r.wholeRows = rows;
+    });
+    setDetail(well);
+}
+
+reconstruction::WholeWellReader WellSession::wholeReader(const Well& well) const {
+    const DeskWell& record = m_model.well(modelIndex(well));
+    LoadOptions options = record.options;
+    options.cancel = nullptr;
+    return [source = record.source, options, origin = m_origin, stamp = well.stamp,
+            exaggeration = record.geometry->options().radialExaggeration,
+            colour = record.options.colour, coloured = well.coloured, shared = well.shared,
+            wells = well.sharedWells]() {
+        const std::shared_ptr<const reconstruction::WellGeometry> whole =
+            readWholeAgain(source, options, origin, stamp);
+        std::shared_ptr<const reconstruction::WallColouring> own;
+        if (coloured) own = ownColouring(*whole, colour, nullptr, windowAnalysis(options));
+        return std::make_shared<const reconstruction::WellGeometry>(
+            whole->restyled(exaggeration, drawnColouring(own, coloured, shared, wells)));
+    };
+}
+
+void WellSession::setDetail(Well& well) {
+    const int index = modelIndex(well);
+    if (index < 0 || !well.view) return;
+    const auto& geometry = m_model.well(index).geometry;
+    if (!geometry) return;
+    if (well.lean)
+        m_detail->setWell(well.view->scene(), wholeReader(well));
+    else
+        m_detail->setWell(well.view->scene(), geometry);
+}
+
+void WellSession::startWholeRead(Well& well) {
+    const DeskWell& record = m_model.well(modelIndex(well));
+    well.leanJobRunning = true;
+    emit status("Reading " + record.name + " whole for its analysis...");
+    well.leanJob = std::make_unique<BackgroundJob>(
+        this,
+        [this, id = well.id, generation = m_styleGeneration, read = wholeReader(well),
+         options = windowAnalysis(record.options)]() -> std::function<void()> {
+            std::shared_ptr<const reconstruction::WellGeometry> whole;
+            std::shared_ptr<const reconstruction::WellAnalysis> analysis;
+            std::string error;
+            try {
+                whole = read();
+                analysis = std::make_shared<const reconstruction::WellAnalysis>(
+                    reconstruction::analyseWell(*whole, options));
+            } catch (const std::exception& e) {
+                error = e.what();
+            }
+            return [this, id, generation, whole, analysis, error]() {
+                Well* w = find(id);
+                if (!w) return;
+                w->leanJobRunning = false;
+                const int index = modelIndex(*w);
+                if (index < 0 || !w->lean) return;
+                if (!error.empty()) {
+                    emit status(QString::fromStdString(error));
+                    return;
+                }
+                if (index != m_model.currentWell()) return;  // moved on: it stays lean
+                if (generation != m_styleGeneration) {       // restyled meanwhile
+                    startWholeRead(*w);
+                    return;
+                }
+                w->lean.reset();
+                edit(*w, [&](DeskWell& r) {
+                    r.geometry = whole;
+                    r.analysis = analysis;
+                    r.wholeRows = 0;
+                });
+                setDetail(*w);
+                if (m_leanPick.id == id) {  // the section a pick hit, now that every row is here
+                    const auto [first, last] = whole->segmentRows(m_leanPick.segment);
+                    const reconstruction::WallPoint wall = reconstruction::locateWallPoint(
+                        *whole, first, last, glm::dvec3(m_leanPick.point));
+                    m_leanPick = {};
+                    m_model.setCurrentRow(index, wall.row);
+                    m_model.setCurrentAzimuth(wall.azimuth_deg);
+                }
+                emit status(m_model.well(index).name + " read whole: analysed");
+                emit wellAnalysed(index);
+            };
+        });
+}
+
+void WellSession::followCurrent() {
+    const int current = m_model.currentWell();
+    if (current >= 0) {
+        Well* well = find(m_model.well(current).id);
+        if (well && well->lean && !well->leanJobRunning) startWholeRead(*well);
+    }
+    holdLeanWhereDue();
+}
+
+bool WellSession::startLeanReading(double radialExaggeration,
+                                   const reconstruction::ColourRequest& colour, int onlyId,
+                                   const std::function<void()>& applied) {
+    if (m_leanReading) {
+        emit status("Wait for the wells held lean to be read again");
+        return false;
+    }
+    struct Reading {
+        int id = -1;
+        WellSource source;
+        LoadOptions options;
+        FileStamp stamp;
+        int firstLevel = 0;
+        std::shared_ptr<const LeanForm> form;
+    };
+    std::vector<Reading> readings;
+    for (const auto& well : m_wells) {
+        if (!well->lean || (onlyId >= 0 && well->id != onlyId) ||
+            well->lean->draws(radialExaggeration, colour))
+            continue;
+        const DeskWell& record = m_model.well(modelIndex(*well));
+        LoadOptions options = record.options;
+        options.cancel = nullptr;
+        readings.push_back({well->id, record.source, options, well->stamp,
+                            well->view->firstCoarseLevel(), well->lean});
+    }
+    m_leanReading = true;
+    emit status(QString("Reading %1 well%2 held lean again to draw them so...")
+                    .arg(readings.size())
+                    .arg(readings.size() == 1 ? "" : "s"));
+    m_leanReadJob = std::make_unique<BackgroundJob>(
+        this,
+        [this, readings, origin = m_origin, radialExaggeration, colour, onlyId,
+         applied]() -> std::function<void()> {
+            std::vector<std::pair<int, std::shared_ptr<const LeanForm>>> made;
+            std::string error;
+            try {
+                for (const Reading& r : readings) {
+                    const auto whole = readWholeAgain(r.source, r.options, origin, r.stamp);
+                    auto form = std::make_shared<LeanForm>(*r.form);
+                    if (!form->draws(radialExaggeration, form->ownRequest)) {
+                        std::vector<double> more = r.form->plan->exaggerations;
+                        more.push_back(radialExaggeration);
+                        form->plan = std::make_shared<const reconstruction::CoarsePlan>(
+                            reconstruction::planCoarseMeshes(*whole, r.firstLevel,
+                                                             plannedExaggerations(more), 2));
+                        form->rows = std::make_shared<const std::vector<std::size_t>>(
+                            heldRows(*whole, *form->plan));
+                        form->base = std::make_shared<const reconstruction::WellGeometry>(
+                            whole->sampled(*form->rows));
+                    }
+                    form->ownRequest = colour;
+                    form->ownHeld = std::make_shared<const reconstruction::WallColouring>(
+                        ownColouring(*whole, colour, nullptr, windowAnalysis(r.options))
+                            ->rowsOf(*form->rows));
+                    made.emplace_back(r.id, std::move(form));
+                }
+            } catch (const std::exception& e) {
+                error = e.what();
+            }
+            return [this, made, error, radialExaggeration, colour, onlyId, applied]() {
+                m_leanReading = false;
+                if (!error.empty()) {
+                    emit status(QString::fromStdString(error));
+                    return;
+                }
+                for (const auto& [id, form] : made) {
+                    Well* w = find(id);
+                    if (w && w->lean) w->lean = form;
+                }
+                restyleWells(radialExaggeration, colour, onlyId, applied);
+            };
+        });
+    return true;
 }
 
 }  // namespace caliper3d::app

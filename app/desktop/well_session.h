@@ -12,12 +12,17 @@
 #include <QString>
 #include <QTimer>
 
+#include <glm/vec3.hpp>
+
 #include "app/desktop/background_job.h"
 #include "app/input_options.h"
+#include "app/lean_well.h"
 #include "reconstruction/analysis/depth_match.h"
+#include "reconstruction/load/detail_worker.h"
 #include "scenegraph/detail_loader.h"
 #include "scenegraph/label_placement.h"
 #include "scenegraph/node_ref.h"
+#include "scenegraph/picture/picture.h"
 #include "scenegraph/segment_feeder.h"
 #include "scenegraph/well_annotations.h"
 
@@ -135,10 +140,30 @@ public:
     std::shared_ptr<const reconstruction::WellGeometry> geometry(std::size_t i) const;
     // The scene well `i` (a record of the model) is drawn in (null when there is none).
     const scenegraph::WellScene* scene(std::size_t i) const;
+    // The visible wells with geometry, in the model's order, as a picture draws them
+    // (scenegraph::drawPicture): each in a scene of its own, built here; a well held lean drawn
+    // from its plan and the rows it holds, and read whole again where the picture's camera
+    // wants its finer levels. Main thread only.
+    std::vector<scenegraph::PictureWell> pictureWells() const;
     // What the wall can be coloured by: the built-in quantities and the first well's curves.
     std::vector<std::string> colourQuantities() const;
     // Cancelled loads whose workers have not stopped yet (they stop within a block).
     int retiredLoadsRunning() const;
+
+    // A field held lean (docs/architecture.md, "The window holds a field lean"): once its
+    // wells hold more than `rows` rows, every loaded and analysed well but the current one (and
+    // the runs of one well) keeps a sample of its rows and no analysis. It is drawn from the
+    // plan of its coarse meshes, and read whole again from its log for the detail near the
+    // camera and when it becomes the current well. 0: every well is held whole.
+    void setFieldRowBudget(std::size_t rows) { m_rowBudget = rows; }
+    std::size_t fieldRowBudget() const { return m_rowBudget; }
+    // Whether well i (a record of the model) is held lean now.
+    bool heldLean(int well) const;
+    // Wells being made lean, or read whole again to become current or to be restyled.
+    int leanJobsRunning() const;
+    // Nothing left to do after the loads: every well placed is analysed or held lean, and no
+    // well is being made lean or read again.
+    bool settled() const;
 
     // Every visible well's name and the ticked well's depth labels placed for `camera`, seen in
     // a view of `width` x `height` pixels, with tick marks unless `tickMarks` is false (down the
@@ -153,9 +178,11 @@ public:
     unsigned annotationGeneration() const { return m_annotationGeneration; }
 
     // The wall at `pixel` of a view of `root` (Coin's pixels, origin bottom left) among the
-    // visible, analysed wells; nothing when none is hit.
+    // visible wells analysed or held lean; nothing when none is hit. On a well held lean it
+    // gives the row held nearest the point hit and remembers the point: once the well, made
+    // current, is read whole, the current section becomes the one hit.
     std::optional<WellPick> pick(SoNode* root, const SbViewportRegion& viewport,
-                                 const SbVec2s& pixel) const;
+                                 const SbVec2s& pixel);
 
 signals:
     void status(const QString& text);
@@ -174,6 +201,7 @@ signals:
 
 private:
     struct Well;
+    struct LeanForm;
     Well* find(int id) const;
     int modelIndex(const Well& well) const;
     template <typename Edit>
@@ -201,7 +229,11 @@ private:
     struct ColouredWell {
         int id = -1;
         std::shared_ptr<const reconstruction::WellGeometry> geometry;
+        // The whole well's colours; held lean (`lean`), those of the rows it holds.
         std::shared_ptr<const reconstruction::WallColouring> colouring;
+        std::shared_ptr<const LeanForm> lean;
+        std::optional<reconstruction::ColourRequest> shared;  // the range shared, if any
+        std::size_t wells = 1;                                // by this many wells
     };
     // Restyles the chosen wells (-1: every well), then calls `applied`; colouring by change
     // starts a worker and applies when it is in. False (and a status) when nothing is done.
@@ -212,6 +244,23 @@ private:
                               const std::function<void()>& applied);
     void applyColourings(double radialExaggeration, const reconstruction::ColourRequest& colour,
                          const std::vector<ColouredWell>& coloured, const QElapsedTimer& clock);
+
+    // A field held lean (setFieldRowBudget).
+    bool leanDue() const;  // the wells hold more rows than the budget
+    // Starts making lean every loaded, analysed well that is held whole and may be held lean.
+    void holdLeanWhereDue();
+    void startLeanForm(Well& well);
+    void holdLean(Well& well, std::shared_ptr<const LeanForm> form);
+    // Reads the current well, held lean, whole again with its analysis.
+    void startWholeRead(Well& well);
+    void followCurrent();
+    // Reads the wells held lean that cannot be drawn so from what they hold, then restyles.
+    bool startLeanReading(double radialExaggeration, const reconstruction::ColourRequest& colour,
+                          int onlyId, const std::function<void()>& applied);
+    // What the detail loader builds the well's finer levels from: its geometry, or held lean,
+    // the whole well read again as drawn (wholeReader).
+    void setDetail(Well& well);
+    reconstruction::WholeWellReader wholeReader(const Well& well) const;
 
     DeskModel& m_model;
     std::unique_ptr<RetiredLoads> m_retired;  // declared first: destroyed after the wells
@@ -232,6 +281,19 @@ private:
     // What the legend shows (a copy: the colouring's per-row values stay with the geometry).
     std::optional<reconstruction::ColourLegend> m_legend;
     std::unique_ptr<BackgroundJob> m_changeJob;  // the comparison a colouring by change waits for
+    std::size_t m_rowBudget = kFieldRowBudget;
+    // Counts restyles: a well made lean, or read whole, for an older style is made again.
+    unsigned m_styleGeneration = 0;
+    std::unique_ptr<BackgroundJob> m_leanReadJob;  // wells held lean read again to restyle them
+    bool m_leanReading = false;
+    // Where the last pick on a well held lean hit it (its id; -1 none): its section is found
+    // once the well is read whole.
+    struct LeanPick {
+        int id = -1;
+        std::size_t segment = 0;
+        glm::vec3 point{0.0f};
+    };
+    LeanPick m_leanPick;
 };
 
 }  // namespace caliper3d::app

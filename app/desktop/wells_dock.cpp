@@ -169,7 +169,7 @@ void WellsDock::fill(QTreeWidgetItem* item, int well) {
         };
         units = "depth " + unitOf(t.fileDepthUnit, w.options.read.depthUnit.has_value()) +
                 ", caliper " + unitOf(t.fileCaliperUnit, w.options.read.radiusUnit.has_value());
-        rows = QString::number(t.rowCount());
+        rows = QString::number(w.wholeRows > 0 ? w.wholeRows : t.rowCount());
         if (t.rowCount() > 0)
             depths = QString("%1 - %2")
                          .arg(t.depth_m.front(), 0, 'f', 2)
@@ -181,12 +181,18 @@ void WellsDock::fill(QTreeWidgetItem* item, int well) {
     item->setText(Depths, depths);
     // While it loads, how far: reading the log, then drawing its segments.
     const QString done = QString(" %1%").arg(std::floor(100.0 * w.loadFraction), 0, 'f', 0);
-    item->setText(State, !w.error.isEmpty() ? QString("failed")
-                         : w.loadFraction >= 1.0
-                             ? (w.analysis ? QString("loaded") : QString("analysing"))
-                         : w.geometry ? "drawing" + done
-                                      : "reading" + done);
-    item->setToolTip(State, w.error);
+    item->setText(State, !w.error.isEmpty()      ? QString("failed")
+                         : w.loadFraction >= 1.0 ? (w.analysis        ? QString("loaded")
+                                                    : w.wholeRows > 0 ? QString("held lean")
+                                                                      : QString("analysing"))
+                         : w.geometry            ? "drawing" + done
+                                                 : "reading" + done);
+    item->setToolTip(State, w.wholeRows > 0 && w.error.isEmpty()
+                                ? QString("A sample of its %1 rows is held (the field is large): "
+                                          "it is read whole again, and analysed, when it becomes "
+                                          "the current well")
+                                      .arg(w.wholeRows)
+                                : w.error);
     if (run && !mainRun && w.error.isEmpty() && w.analysis) {
         // Its depth match to the main run (as `caliper3d compare MAIN RUN` finds it).
         if (w.mapping)

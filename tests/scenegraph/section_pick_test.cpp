@@ -1,5 +1,6 @@
 // Picking the wall: a known ray on a known synthetic well gives its section, MD and angle and
 // the report's row for that section, at every level of detail SoLOD draws there.
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -23,6 +24,7 @@
 #include "reconstruction/analysis/report_writer.h"
 #include "reconstruction/analysis/well_analysis.h"
 #include "reconstruction/mesh/lod_levels.h"
+#include "reconstruction/mesh/lod_tree.h"
 #include "reconstruction/section/section_frame.h"
 #include "reconstruction/synthetic/synthetic_well.h"
 #include "reconstruction/well_geometry.h"
@@ -414,4 +416,67 @@ TEST_F(SectionPickTest, AWellWithoutItsAnalysisIsRefused) {
     EXPECT_THROW(scenegraph::pickSection(m_root.get(), SbViewportRegion(800, 600), axisAt(1.0),
                                          horizontal(0.0), incomplete),
                  std::invalid_argument);
+}
+
+TEST_F(SectionPickTest, AWellHeldLeanIsPickedOnTheRowsItHoldsWhereverTheTreeDrawsIt) {
+    // A 300 m well drawn whole, picked through the geometry of a sample of its rows (a well of
+    // a field held lean in the window): from 200 m and 50 m (spans' merged meshes of two depths)
+    // and from beside a segment, the row found is a row held, the nearest held to the row the
+    // whole well gives.
+    const auto whole = std::make_shared<const reconstruction::WellGeometry>(
+        std::make_shared<const io::SectionTable>(reconstruction::makeSyntheticWell(
+            reconstruction::syntheticProfile("circle", 300.0, 0.01))),
+        reconstruction::GeometryOptions{});
+    const reconstruction::WellAnalysis analysis = reconstruction::analyseWell(*whole, {});
+    std::vector<std::size_t> rows =
+        reconstruction::planCoarseMeshes(*whole, reconstruction::kFirstCoarseLevel, {1.0}).rows();
+    for (const std::size_t row : reconstruction::everyKthRow(whole->table().rowCount(), 3000))
+        rows.push_back(row);
+    std::sort(rows.begin(), rows.end());
+    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    const reconstruction::WellGeometry sample = whole->sampled(rows);
+    scenegraph::WellScene scene;
+    scene.buildAll(*whole);
+    m_root = scenegraph::makeRef(new SoSeparator);
+    m_camera = new SoPerspectiveCamera;
+    m_camera->nearDistance = 0.01f;
+    m_camera->farDistance = 5000.0f;
+    m_root->addChild(m_camera);
+    m_root->addChild(scene.root());
+    const std::vector<scenegraph::PickableWell> asWhole{{&scene, whole.get(), &analysis, "circle"}};
+    const std::vector<scenegraph::PickableWell> asLean{{&scene, &sample, nullptr, "circle", &rows}};
+    const std::vector<double>& depth = whole->table().depth_m;
+    for (const float away : {200.0f, 50.0f, 1.5f}) {
+        SCOPED_TRACE(away);
+        const SbVec3f target = axisAt(150.0);
+        const SbVec3f eye = target + SbVec3f(away, 0.0f, 0.0f);
+        m_camera->position = eye;
+        m_camera->pointAt(target, SbVec3f(0.0f, 1.0f, 0.0f));
+        const auto exact = scenegraph::pickSection(m_root.get(), SbViewportRegion(800, 600), eye,
+                                                   target - eye, asWhole);
+        const auto held = scenegraph::pickSection(m_root.get(), SbViewportRegion(800, 600), eye,
+                                                  target - eye, asLean);
+        ASSERT_TRUE(exact.has_value());
+        ASSERT_TRUE(held.has_value());
+        EXPECT_EQ(exact->spanDepth > 0, away > 10.0f);  // a span's merged mesh further away
+        EXPECT_EQ(held->spanDepth, exact->spanDepth);
+        EXPECT_TRUE(exact->analysed);
+        EXPECT_FALSE(held->analysed);
+        ASSERT_LT(held->wall.row, rows.size());
+        // The held row nearest the whole well's row (the rows between are not held).
+        const double md = depth[exact->wall.row];
+        const auto next = std::lower_bound(rows.begin(), rows.end(), exact->wall.row);
+        double nearest = 1e9;
+        for (auto it = next == rows.begin() ? next : next - 1; it != rows.end() && it <= next; ++it)
+            nearest = std::min(nearest, std::abs(depth[*it] - md));
+        EXPECT_LE(std::abs(depth[rows[held->wall.row]] - md), nearest + 0.011)
+            << "whole row " << exact->wall.row << ", held " << rows[held->wall.row];
+        EXPECT_EQ(sample.table().depth_m[held->wall.row], depth[rows[held->wall.row]]);
+    }
+    // A geometry that does not hold as many rows as it says is refused.
+    std::vector<std::size_t> fewer(rows.begin(), rows.end() - 1);
+    EXPECT_THROW(
+        scenegraph::pickSection(m_root.get(), SbViewportRegion(800, 600), axisAt(1.0),
+                                horizontal(0.0), {{&scene, &sample, nullptr, "circle", &fewer}}),
+        std::invalid_argument);
 }

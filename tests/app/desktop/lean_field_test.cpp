@@ -1,0 +1,290 @@
+// The window holding a field lean (WellSession::setFieldRowBudget): a field whose wells hold
+// more rows than the budget keeps every well but the current one by a sample of its rows, and
+// draws, picks up and restyles it as the field held whole does.
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <Inventor/SbViewportRegion.h>
+#include <Inventor/nodes/SoPerspectiveCamera.h>
+#include <Inventor/nodes/SoSeparator.h>
+
+#include "app/desktop/desk_model.h"
+#include "app/desktop/well_session.h"
+#include "desktop_test_support.h"
+#include "reconstruction/well_geometry.h"
+#include "scenegraph/camera_setup.h"
+#include "scenegraph/node_ref.h"
+#include "scenegraph/picture/picture.h"
+#include "scenegraph/well_scene.h"
+
+using namespace caliper3d;
+
+namespace {
+
+class LeanFieldTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        if (!test::ensureGuiApplication()) GTEST_SKIP() << "no display (run under xvfb-run)";
+    }
+
+    // Three wells 30 m apart of one 300 m log at 1 cm: 30,001 rows each.
+    static std::vector<app::WellSource> field(
+        const std::filesystem::path& log = test::syntheticLog("example", 300.0, 0.01)) {
+        std::vector<app::WellSource> wells;
+        for (const double east : {0.0, 30.0, 60.0})
+            wells.push_back({log.string(), {}, reconstruction::Wellhead{east, 0.0, 0.0}, {}});
+        return wells;
+    }
+
+    // Opens the field and waits until every well is loaded, analysed or held lean, and settled.
+    static bool open(app::WellSession& session, const app::LoadOptions& options,
+                     const std::vector<app::WellSource>& wells = field()) {
+        session.openWell(wells[0], options);
+        for (std::size_t w = 1; w < wells.size(); ++w) session.addWell(wells[w], options);
+        return settle(session);
+    }
+    // The first well held lean (-1: none).
+    static int firstLean(const app::WellSession& session) {
+        for (int i = 0; i < session.model().wellCount(); ++i)
+            if (session.heldLean(i)) return i;
+        return -1;
+    }
+    static bool settle(app::WellSession& session) {
+        return test::waitUntil(
+            [&] {
+                if (session.loading() || session.leanJobsRunning() > 0) return false;
+                const app::DeskModel& model = session.model();
+                for (int i = 0; i < model.wellCount(); ++i)
+                    if (!model.well(i).geometry ||
+                        (!model.well(i).analysis && !session.heldLean(i)))
+                        return false;
+                return true;
+            },
+            300000);
+    }
+
+    // The visible wells' picture, `view` 0 iso, 1 from above, 2 down well `down` at 150 m.
+    static scenegraph::Picture picture(const app::WellSession& session, int view, int down) {
+        scenegraph::PictureRequest request;
+        request.width = 640;
+        request.height = 480;
+        request.view = view == 1 ? scenegraph::ViewDirection::Map : scenegraph::ViewDirection::Iso;
+        if (view == 2) {
+            request.pose = scenegraph::downHolePose(*session.model().well(down).geometry, 150.0);
+            request.tickMarks = false;
+        }
+        request.unloggedPath = view < 2;
+        request.radialExaggeration = session.look().radialExaggeration;
+        request.legend = session.legend();
+        return scenegraph::drawPicture(session.pictureWells(), request);
+    }
+
+    // The same pictures: the field from two sides, and down well `down` (held lean: its finer
+    // levels built from its log read again).
+    static void expectSamePictures(const app::WellSession& whole, const app::WellSession& lean,
+                                   int down) {
+        for (int view = 0; view < 3; ++view) {
+            scenegraph::Picture a, b;
+            try {
+                a = picture(whole, view, down);
+                b = picture(lean, view, down);
+            } catch (const std::runtime_error& e) {
+                GTEST_SKIP() << e.what();  // no OpenGL
+            }
+            // Down the hole, finer levels built for the picture (a well held lean may hold
+            // fewer levels up front: it refines more segments to draw the same).
+            if (view == 2) {
+                EXPECT_GT(a.refinedSegments, 0u);
+                EXPECT_GE(b.refinedSegments, a.refinedSegments);
+            }
+            ASSERT_EQ(a.image.rgba.size(), b.image.rgba.size());
+            EXPECT_TRUE(a.image.rgba == b.image.rgba) << "view " << view;
+        }
+    }
+};
+
+TEST_F(LeanFieldTest, AFieldPastTheBudgetKeepsTheCurrentWellWholeAndDrawsWhatItDrawsWhole) {
+    app::DeskModel wholeModel, leanModel;
+    app::WellSession whole(wholeModel, nullptr), lean(leanModel, nullptr);
+    whole.setFieldRowBudget(0);
+    lean.setFieldRowBudget(40'000);  // past it with the second well
+    ASSERT_TRUE(open(whole, app::LoadOptions{})) << "the field held whole did not settle";
+    ASSERT_TRUE(open(lean, app::LoadOptions{})) << "the field held lean did not settle";
+
+    ASSERT_EQ(leanModel.wellCount(), 3);
+    // The first well placed is the current one (the loads run side by side).
+    const int current = leanModel.currentWell();
+    ASSERT_GE(current, 0);
+    EXPECT_DOUBLE_EQ(lean.look().radialExaggeration, whole.look().radialExaggeration);
+    for (int i = 0; i < 3; ++i) {
+        SCOPED_TRACE("well " + std::to_string(i));
+        const app::DeskWell& held = leanModel.well(i);
+        const app::DeskWell& all = wholeModel.well(i);
+        EXPECT_FALSE(whole.heldLean(i));
+        ASSERT_EQ(all.geometry->table().rowCount(), 30001u);
+        EXPECT_EQ(held.geometry->options().radialExaggeration,
+                  all.geometry->options().radialExaggeration);
+        if (i == current) {  // whole, analysed
+            EXPECT_FALSE(lean.heldLean(i));
+            EXPECT_EQ(held.geometry->table().rowCount(), 30001u);
+            EXPECT_NE(held.analysis, nullptr);
+            continue;
+        }
+        // A sample of its rows (every rows/4096-th, the ones its meshes draw), no analysis.
+        EXPECT_TRUE(lean.heldLean(i));
+        EXPECT_EQ(held.analysis, nullptr);
+        const std::vector<double>& kept = held.geometry->table().depth_m;
+        const std::vector<double>& every = all.geometry->table().depth_m;
+        EXPECT_GE(kept.size(), 4096u);
+        EXPECT_LT(kept.size(), every.size() / 2);
+        for (const double md : kept)
+            ASSERT_TRUE(std::binary_search(every.begin(), every.end(), md)) << md;
+        EXPECT_EQ(kept.front(), every.front());
+        EXPECT_EQ(kept.back(), every.back());
+        EXPECT_EQ(lean.scene(std::size_t(i))->segmentCount(),
+                  whole.scene(std::size_t(i))->segmentCount());
+    }
+    ASSERT_NE(lean.legend(), nullptr);
+    EXPECT_EQ(lean.legend()->lo, whole.legend()->lo);
+    EXPECT_EQ(lean.legend()->hi, whole.legend()->hi);
+    expectSamePictures(whole, lean, firstLean(lean));
+}
+
+TEST_F(LeanFieldTest, AWellHeldLeanMadeCurrentIsReadWholeAndAnalysedAndTheOneBeforeGoesLean) {
+    app::DeskModel model;
+    app::WellSession session(model, nullptr);
+    session.setFieldRowBudget(40'000);
+    ASSERT_TRUE(open(session, app::LoadOptions{}));
+    const int before = model.currentWell(), lean = firstLean(session);
+    ASSERT_GE(before, 0);
+    ASSERT_GE(lean, 0);
+    ASSERT_FALSE(session.heldLean(before));
+    model.setCurrent(lean, 150.0);
+    EXPECT_EQ(model.currentWell(), lean);
+    ASSERT_TRUE(test::waitUntil(
+        [&] {
+            return !session.heldLean(lean) && model.well(lean).analysis &&
+                   session.heldLean(before) && session.leanJobsRunning() == 0;
+        },
+        120000))
+        << "the well made current was not read whole, or the one before did not go lean";
+    const app::DeskWell& current = model.well(lean);
+    ASSERT_EQ(current.geometry->table().rowCount(), 30001u);
+    EXPECT_EQ(current.analysis->sections.size(), 30001u);
+    // Still at 150 m, a row of the whole well.
+    EXPECT_NEAR(model.currentDepth_m(), 150.0, 1e-9);
+    EXPECT_EQ(current.geometry->table().depth_m[model.currentRow()], model.currentDepth_m());
+    EXPECT_EQ(model.well(before).analysis, nullptr);
+    EXPECT_LT(model.well(before).geometry->table().rowCount(), 15000u);
+}
+
+TEST_F(LeanFieldTest, ARestyledFieldHeldLeanIsReadAgainAndDrawsWhatItDrawsWhole) {
+    // Coloured by ellipticity, drawn at x7: neither is what the wells held lean were planned
+    // and coloured for, so they are read again, then drawn as the field held whole.
+    app::DeskModel wholeModel, leanModel;
+    app::WellSession whole(wholeModel, nullptr), lean(leanModel, nullptr);
+    whole.setFieldRowBudget(0);
+    lean.setFieldRowBudget(40'000);
+    ASSERT_TRUE(open(whole, app::LoadOptions{}));
+    ASSERT_TRUE(open(lean, app::LoadOptions{}));
+    reconstruction::ColourRequest colour;
+    colour.quantity = "ellipticity";
+    ASSERT_TRUE(whole.restyle(7.0, colour));
+    ASSERT_TRUE(lean.restyle(7.0, colour));
+    ASSERT_TRUE(test::waitUntil(
+        [&] {
+            return lean.leanJobsRunning() == 0 && lean.look().radialExaggeration == 7.0 &&
+                   lean.look().colour == colour;
+        },
+        120000))
+        << "the field held lean was not restyled";
+    for (int i = 0; i < 3; ++i) EXPECT_EQ(lean.heldLean(i), i != leanModel.currentWell()) << i;
+    ASSERT_NE(lean.legend(), nullptr);
+    EXPECT_EQ(lean.legend()->title, whole.legend()->title);
+    EXPECT_EQ(lean.legend()->lo, whole.legend()->lo);
+    EXPECT_EQ(lean.legend()->hi, whole.legend()->hi);
+    for (int i = 0; i < 3; ++i)
+        EXPECT_EQ(leanModel.well(i).geometry->options().radialExaggeration, 7.0) << i;
+    expectSamePictures(whole, lean, firstLean(lean));
+}
+
+TEST_F(LeanFieldTest, APickOnAWellHeldLeanFindsTheSectionHitOnceTheWellIsReadWhole) {
+    app::DeskModel wholeModel, leanModel;
+    app::WellSession whole(wholeModel, nullptr), lean(leanModel, nullptr);
+    whole.setFieldRowBudget(0);
+    lean.setFieldRowBudget(40'000);
+    ASSERT_TRUE(open(whole, app::LoadOptions{}));
+    ASSERT_TRUE(open(lean, app::LoadOptions{}));
+    const int target = firstLean(lean);
+    ASSERT_GE(target, 0);
+    // A camera 3 m south of the well's axis at about 150 m, looking at it (x east, y up).
+    const auto line = reconstruction::pathLine(*wholeModel.well(target).geometry, 1.0);
+    ASSERT_GT(line.size(), 150u);
+    const glm::vec3 axis = line[150];
+    const auto pickIn = [&](app::WellSession& session) {
+        scenegraph::NodeRef<SoSeparator> root(new SoSeparator);
+        auto* camera = new SoPerspectiveCamera;
+        camera->nearDistance = 0.01f;
+        camera->farDistance = 500.0f;
+        camera->position = SbVec3f(axis.x, axis.y, axis.z + 3.0f);
+        camera->pointAt(SbVec3f(axis.x, axis.y, axis.z), SbVec3f(0.0f, 1.0f, 0.0f));
+        root->addChild(camera);
+        root->addChild(session.sceneRoot());
+        return session.pick(root.get(), SbViewportRegion(640, 480), SbVec2s(320, 240));
+    };
+    const std::optional<app::WellPick> exact = pickIn(whole);
+    ASSERT_TRUE(exact) << "the well held whole was not hit";
+    ASSERT_EQ(exact->well, target);
+    const std::optional<app::WellPick> near = pickIn(lean);
+    ASSERT_TRUE(near) << "the well held lean was not hit";
+    EXPECT_EQ(near->well, target);
+    EXPECT_NE(near->text.indexOf("held lean"), -1) << near->text.toStdString();
+    // What the window does with a pick (WellNavigator::showPicked): the well becomes current,
+    // is read whole, and the current section becomes the one hit.
+    leanModel.setCurrentRow(near->well, near->row);
+    ASSERT_TRUE(test::waitUntil(
+        [&] {
+            return !lean.heldLean(target) && leanModel.well(target).analysis &&
+                   lean.leanJobsRunning() == 0;
+        },
+        120000));
+    EXPECT_EQ(leanModel.currentWell(), target);
+    EXPECT_EQ(leanModel.currentRow(), exact->row);
+    EXPECT_DOUBLE_EQ(leanModel.currentAzimuth_deg(), exact->azimuth_deg);
+}
+
+TEST_F(LeanFieldTest, AWellHeldLeanWhoseLogChangedIsNotReadAgainAndSaysSo) {
+    // A copy of its own: the log changes under the window.
+    const auto log = test::scratch("lean_field_changed.txt");
+    std::filesystem::copy_file(test::syntheticLog("example", 300.0, 0.01), log,
+                               std::filesystem::copy_options::overwrite_existing);
+    app::DeskModel model;
+    app::WellSession session(model, nullptr);
+    session.setFieldRowBudget(40'000);
+    ASSERT_TRUE(open(session, app::LoadOptions{}, field(log)));
+    const int lean = firstLean(session);
+    ASSERT_GE(lean, 0);
+    QStringList said;
+    QObject::connect(&session, &app::WellSession::status,
+                     [&said](const QString& text) { said << text; });
+    std::filesystem::last_write_time(log,
+                                     std::filesystem::last_write_time(log) + std::chrono::hours(1));
+    model.setCurrent(lean, 150.0);
+    ASSERT_TRUE(test::waitUntil(
+        [&] { return session.leanJobsRunning() == 0 && !said.filter("changed since").isEmpty(); },
+        60000))
+        << said.join("\n").toStdString();
+    const QString message = said.filter("changed since").front();
+    EXPECT_TRUE(message.startsWith(QString::fromStdString(log.string()))) << message.toStdString();
+    // It stays as it was drawn: held lean, not analysed.
+    EXPECT_TRUE(session.heldLean(lean));
+    EXPECT_EQ(model.well(lean).analysis, nullptr);
+    EXPECT_EQ(model.currentWell(), lean);
+}
+
+}  // namespace
