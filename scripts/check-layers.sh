@@ -6,7 +6,8 @@
 # enforce this on their own: Debian installs Coin's headers on the default include path, and every
 # target sees the project root. Each module's tests follow the module's rule. Inside app/, the
 # command line (app/*) includes no desktop file (app/desktop/), and the desktop includes no
-# command-line file but the option table (app/well_option_table.h, app/input_options.h); view_command.cpp and main.cpp
+# command-line file but what both programs share: the option table (app/well_option_table.h,
+# app/input_options.h) and holding a field lean (app/lean_well.h); view_command.cpp and main.cpp
 # are the bridge between them.
 #   scripts/check-layers.sh [ROOT]      check the tree at ROOT (default: this checkout)
 #   scripts/check-layers.sh --self-test  prove that the check catches each kind of violation
@@ -24,7 +25,7 @@ declare -A forbidden=(
 geometryForbidden="^reconstruction/(analysis/|load/)|^(scenegraph|app)/|^(${coinQtGl})"
 geometryDirs="reconstruction/section reconstruction/path reconstruction/mesh reconstruction/parallel reconstruction/synthetic"
 # app/: the two programs.
-optionTable='app/(input_options|well_option_table)\.h'
+optionTable='app/(input_options|well_option_table|lean_well)\.h'
 commandLineForbidden='^app/desktop/'
 desktopForbidden="^app/[^/]+$"
 bridge='app/(view_command|main)\.cpp'

@@ -239,6 +239,10 @@ int WellSession::openWell(const QString& path, const LoadOptions& options) {
 
 int WellSession::openWell(const WellSource& source, const LoadOptions& options) {
     m_detail->removeAll();
+    // A restyle reading the wells shown again is for them only (waits for its worker).
+    m_leanReadJob.reset();
+    m_leanReading = false;
+    m_leanPick = {};
     m_wells.clear();
     m_model.clearWells();
     emit warningsChanged();
