@@ -85,8 +85,18 @@ void DetailWorker::run() {
             std::unique_lock<std::mutex> lock(m_mutex);
             m_wake.wait(lock, [this] { return m_stop || !m_jobs.empty(); });
             if (m_stop) return;
-            job = std::move(m_jobs.front());
-            m_jobs.pop_front();
+            // The jobs of the well held lean read last come first: it is read once for them
+            // all, however the camera's requests interleave the wells.
+            auto next = m_jobs.begin();
+            if (!m_wholes.empty()) {
+                const auto& last = m_wholes.back().reader;
+                const auto same =
+                    std::find_if(m_jobs.begin(), m_jobs.end(),
+                                 [&](const DetailJob& j) { return j.readWhole == last; });
+                if (same != m_jobs.end()) next = same;
+            }
+            job = std::move(*next);
+            m_jobs.erase(next);
             ++m_building;
         }
         DetailResult result;

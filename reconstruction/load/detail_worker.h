@@ -37,10 +37,11 @@ struct DetailResult {
     std::string error;  // why the well held lean could not be read again (mesh empty)
 };
 
-// One worker thread that builds the finer levels of segments near the camera, nearest first,
-// for the window (the main thread attaches them: scenegraph::DetailLoader). Each new list of
-// jobs replaces the jobs not started yet, so a camera that moves on never waits for detail it
-// has left behind. Makes no Coin or Qt call; the destructor stops and joins.
+// One worker thread that builds the finer levels of segments near the camera, nearest first
+// (but every job of the well held lean it read last before any other's), for the window (the
+// main thread attaches them: scenegraph::DetailLoader). Each new list of jobs replaces the jobs
+// not started yet, so a camera that moves on never waits for detail it has left behind. Makes
+// no Coin or Qt call; the destructor stops and joins.
 class DetailWorker {
 public:
     // Wells held lean read whole again and kept for the jobs that follow: a camera down one

@@ -177,3 +177,35 @@ TEST_F(DetailLoaderTest, AWellHeldLeanThatCannotBeReadAgainIsSaidOnceAndKeepsIts
     for (std::size_t s = 0; s < scene.segmentCount(); ++s)
         ASSERT_EQ(scene.heldFrom(s), reconstruction::kFirstCoarseLevel) << s;
 }
+
+TEST_F(DetailLoaderTest, WellsHeldLeanNearTheCameraAreEachReadOnce) {
+    // Three wells held lean a metre apart, the camera among them: the worker builds every job
+    // of the well it read last first, so while it keeps two wells read whole it reads each once
+    // (nearest first, the camera's requests interleave the wells: it read them again and again).
+    std::vector<std::shared_ptr<const reconstruction::WellGeometry>> geometries;
+    std::vector<std::unique_ptr<scenegraph::WellScene>> scenes;
+    for (int w = 0; w < 3; ++w) {
+        reconstruction::GeometryOptions options;
+        options.wellheadOffset = {0.0, 1.0 * w, 0.0};
+        geometries.push_back(std::make_shared<const reconstruction::WellGeometry>(
+            std::make_shared<const io::SectionTable>(reconstruction::makeSyntheticWell(
+                reconstruction::syntheticProfile("circle", 30.0, 0.0025))),
+            options));
+        scenes.push_back(std::make_unique<scenegraph::WellScene>());
+        scenes.back()->buildAll(*geometries.back());
+    }
+    std::optional<scenegraph::DetailView> camera =
+        scenegraph::DetailView{{1.0f, -12.5f, 0.0f}, scenegraph::lodViewFor(800, 0.8f)};
+    scenegraph::DetailLoader loader([&] { return camera; });
+    std::vector<int> reads(3, 0);
+    for (std::size_t w = 0; w < 3; ++w)
+        loader.addWell(*scenes[w], [&reads, &geometries, w] {
+            ++reads[w];
+            return geometries[w];
+        });
+    ASSERT_TRUE(settle(loader));
+    for (std::size_t w = 0; w < 3; ++w) {
+        EXPECT_GT(scenes[w]->fineTriangles(), 0u) << w;
+        EXPECT_EQ(reads[w], 1) << w;
+    }
+}
