@@ -33,14 +33,20 @@ protected:
         }
         return false;
     }
+    // A 30 m well logged every 2.5 mm (circle profile), its wellhead `east_m` east.
+    static std::shared_ptr<const reconstruction::WellGeometry> circleWell(double east_m = 0.0) {
+        reconstruction::GeometryOptions options;
+        options.wellheadOffset = {0.0, east_m, 0.0};
+        return std::make_shared<const reconstruction::WellGeometry>(
+            std::make_shared<const io::SectionTable>(reconstruction::makeSyntheticWell(
+                reconstruction::syntheticProfile("circle", 30.0, 0.0025))),
+            options);
+    }
 };
 }  // namespace
 
 TEST_F(DetailLoaderTest, FinerLevelsFollowTheCameraWithinTheBudget) {
-    const auto geometry = std::make_shared<const reconstruction::WellGeometry>(
-        std::make_shared<const io::SectionTable>(reconstruction::makeSyntheticWell(
-            reconstruction::syntheticProfile("circle", 30.0, 0.0025))),
-        reconstruction::GeometryOptions{});
+    const auto geometry = circleWell();
     scenegraph::WellScene scene;
     scene.buildAll(*geometry);
     std::optional<scenegraph::DetailView> camera;  // none yet: nothing asked
@@ -76,15 +82,7 @@ TEST_F(DetailLoaderTest, OneBudgetServesEveryWellOfTheScene) {
     // Two wells 1 km apart; the camera visits two places down the first. With one budget for
     // the scene, room for two views' detail keeps both while the far well holds none (split
     // evenly between the wells, the first view's detail would have gone).
-    auto well = [](double east_m) {
-        reconstruction::GeometryOptions options;
-        options.wellheadOffset = {0.0, east_m, 0.0};
-        return std::make_shared<const reconstruction::WellGeometry>(
-            std::make_shared<const io::SectionTable>(reconstruction::makeSyntheticWell(
-                reconstruction::syntheticProfile("circle", 30.0, 0.0025))),
-            options);
-    };
-    const auto near = well(0.0), far = well(1000.0);
+    const auto near = circleWell(0.0), far = circleWell(1000.0);
     scenegraph::WellScene a, b;
     a.buildAll(*near);
     b.buildAll(*far);
@@ -117,10 +115,7 @@ TEST_F(DetailLoaderTest, AWellHeldLeanIsReadWholeAgainOnceForItsFinerLevels) {
     // The same well twice: one scene's loader holds the geometry, the other's reads it whole
     // again (a well of a field held lean). Both draw the same finer levels wherever the camera
     // goes; the second reads its well once for all of them.
-    const auto geometry = std::make_shared<const reconstruction::WellGeometry>(
-        std::make_shared<const io::SectionTable>(reconstruction::makeSyntheticWell(
-            reconstruction::syntheticProfile("circle", 30.0, 0.0025))),
-        reconstruction::GeometryOptions{});
+    const auto geometry = circleWell();
     scenegraph::WellScene held, lean;
     held.buildAll(*geometry);
     lean.buildAll(*geometry);
@@ -151,10 +146,7 @@ TEST_F(DetailLoaderTest, AWellHeldLeanIsReadWholeAgainOnceForItsFinerLevels) {
 }
 
 TEST_F(DetailLoaderTest, AWellHeldLeanThatCannotBeReadAgainIsSaidOnceAndKeepsItsCoarseLevels) {
-    const auto geometry = std::make_shared<const reconstruction::WellGeometry>(
-        std::make_shared<const io::SectionTable>(reconstruction::makeSyntheticWell(
-            reconstruction::syntheticProfile("circle", 30.0, 0.0025))),
-        reconstruction::GeometryOptions{});
+    const auto geometry = circleWell();
     scenegraph::WellScene scene;
     scene.buildAll(*geometry);
     std::optional<scenegraph::DetailView> camera =
@@ -185,12 +177,7 @@ TEST_F(DetailLoaderTest, WellsHeldLeanNearTheCameraAreEachReadOnce) {
     std::vector<std::shared_ptr<const reconstruction::WellGeometry>> geometries;
     std::vector<std::unique_ptr<scenegraph::WellScene>> scenes;
     for (int w = 0; w < 3; ++w) {
-        reconstruction::GeometryOptions options;
-        options.wellheadOffset = {0.0, 1.0 * w, 0.0};
-        geometries.push_back(std::make_shared<const reconstruction::WellGeometry>(
-            std::make_shared<const io::SectionTable>(reconstruction::makeSyntheticWell(
-                reconstruction::syntheticProfile("circle", 30.0, 0.0025))),
-            options));
+        geometries.push_back(circleWell(1.0 * w));
         scenes.push_back(std::make_unique<scenegraph::WellScene>());
         scenes.back()->buildAll(*geometries.back());
     }

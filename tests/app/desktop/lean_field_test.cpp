@@ -48,6 +48,15 @@ protected:
         for (std::size_t w = 1; w < wells.size(); ++w) session.addWell(wells[w], options);
         return settle(session);
     }
+    // The same field opened held whole (`whole`, no budget) and with a budget its second well
+    // passes (`lean`).
+    static void openBoth(app::WellSession& whole, app::WellSession& lean) {
+        whole.setFieldRowBudget(0);
+        lean.setFieldRowBudget(40'000);
+        ASSERT_TRUE(open(whole, app::LoadOptions{})) << "the field held whole did not settle";
+        ASSERT_TRUE(open(lean, app::LoadOptions{})) << "the field held lean did not settle";
+    }
+
     // The first well held lean (-1: none).
     static int firstLean(const app::WellSession& session) {
         for (int i = 0; i < session.model().wellCount(); ++i)
@@ -111,10 +120,7 @@ protected:
 TEST_F(LeanFieldTest, AFieldPastTheBudgetKeepsTheCurrentWellWholeAndDrawsWhatItDrawsWhole) {
     app::DeskModel wholeModel, leanModel;
     app::WellSession whole(wholeModel, nullptr), lean(leanModel, nullptr);
-    whole.setFieldRowBudget(0);
-    lean.setFieldRowBudget(40'000);  // past it with the second well
-    ASSERT_TRUE(open(whole, app::LoadOptions{})) << "the field held whole did not settle";
-    ASSERT_TRUE(open(lean, app::LoadOptions{})) << "the field held lean did not settle";
+    ASSERT_NO_FATAL_FAILURE(openBoth(whole, lean));
 
     ASSERT_EQ(leanModel.wellCount(), 3);
     // The first well placed is the current one (the loads run side by side).
@@ -188,10 +194,7 @@ TEST_F(LeanFieldTest, ARestyledFieldHeldLeanIsReadAgainAndDrawsWhatItDrawsWhole)
     // and coloured for, so they are read again, then drawn as the field held whole.
     app::DeskModel wholeModel, leanModel;
     app::WellSession whole(wholeModel, nullptr), lean(leanModel, nullptr);
-    whole.setFieldRowBudget(0);
-    lean.setFieldRowBudget(40'000);
-    ASSERT_TRUE(open(whole, app::LoadOptions{}));
-    ASSERT_TRUE(open(lean, app::LoadOptions{}));
+    ASSERT_NO_FATAL_FAILURE(openBoth(whole, lean));
     reconstruction::ColourRequest colour;
     colour.quantity = "ellipticity";
     ASSERT_TRUE(whole.restyle(7.0, colour));
@@ -216,10 +219,7 @@ TEST_F(LeanFieldTest, ARestyledFieldHeldLeanIsReadAgainAndDrawsWhatItDrawsWhole)
 TEST_F(LeanFieldTest, APickOnAWellHeldLeanFindsTheSectionHitOnceTheWellIsReadWhole) {
     app::DeskModel wholeModel, leanModel;
     app::WellSession whole(wholeModel, nullptr), lean(leanModel, nullptr);
-    whole.setFieldRowBudget(0);
-    lean.setFieldRowBudget(40'000);
-    ASSERT_TRUE(open(whole, app::LoadOptions{}));
-    ASSERT_TRUE(open(lean, app::LoadOptions{}));
+    ASSERT_NO_FATAL_FAILURE(openBoth(whole, lean));
     const int target = firstLean(lean);
     ASSERT_GE(target, 0);
     // A camera 3 m south of the well's axis at about 150 m, looking at it (x east, y up).
