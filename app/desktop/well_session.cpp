@@ -74,6 +74,10 @@ struct WellSession::Well {
     std::shared_ptr<const LeanForm> lean;    // set while it is held lean
     std::unique_ptr<BackgroundJob> leanJob;  // making it lean, or reading it whole again
     bool leanJobRunning = false;
+    // Not tried again (each said once): it could not be made lean, or read whole again (its
+    // log changed since it was loaded).
+    bool leanRefused = false;
+    bool readRefused = false;
 };
 
 // What a well held lean keeps (docs/architecture.md, "The window holds a field lean"): the plan
@@ -1027,7 +1031,8 @@ void WellSession::holdLeanWhereDue() {
     const int current = m_model.currentWell();
     for (const auto& well : m_wells) {
         const int index = well ? modelIndex(*well) : -1;
-        if (index < 0 || index == current || well->lean || well->leanJobRunning || !well->done)
+        if (index < 0 || index == current || well->lean || well->leanJobRunning || !well->done ||
+            well->leanRefused)
             continue;
         const DeskWell& record = m_model.well(index);
         // The runs of one well stay whole: their depth match and comparison read every row.
@@ -1070,6 +1075,7 @@ void WellSession::startLeanForm(Well& well) {
                 const int index = modelIndex(*w);
                 if (index < 0) return;
                 if (!error.empty()) {  // it stays whole
+                    w->leanRefused = true;
                     emit status(w->name + ": not held lean: " + QString::fromStdString(error));
                     return;
                 }
@@ -1151,7 +1157,8 @@ void WellSession::startWholeRead(Well& well) {
                 w->leanJobRunning = false;
                 const int index = modelIndex(*w);
                 if (index < 0 || !w->lean) return;
-                if (!error.empty()) {
+                if (!error.empty()) {  // it stays lean
+                    w->readRefused = true;
                     emit status(QString::fromStdString(error));
                     return;
                 }
@@ -1185,7 +1192,8 @@ void WellSession::followCurrent() {
     const int current = m_model.currentWell();
     if (current >= 0) {
         Well* well = find(m_model.well(current).id);
-        if (well && well->lean && !well->leanJobRunning) startWholeRead(*well);
+        if (well && well->lean && !well->leanJobRunning && !well->readRefused)
+            startWholeRead(*well);
     }
     holdLeanWhereDue();
 }

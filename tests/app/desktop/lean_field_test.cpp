@@ -281,10 +281,15 @@ TEST_F(LeanFieldTest, AWellHeldLeanWhoseLogChangedIsNotReadAgainAndSaysSo) {
         << said.join("\n").toStdString();
     const QString message = said.filter("changed since").front();
     EXPECT_TRUE(message.startsWith(QString::fromStdString(log.string()))) << message.toStdString();
-    // It stays as it was drawn: held lean, not analysed.
+    // It stays as it was drawn: held lean, not analysed; moving along it does not read it
+    // again (nor say so again).
     EXPECT_TRUE(session.heldLean(lean));
     EXPECT_EQ(model.well(lean).analysis, nullptr);
     EXPECT_EQ(model.currentWell(), lean);
+    model.setCurrent(lean, 200.0);
+    EXPECT_EQ(session.leanJobsRunning(), 0);
+    QCoreApplication::processEvents();
+    EXPECT_EQ(said.filter("changed since").size(), 1) << said.join("\n").toStdString();
 }
 
 }  // namespace
