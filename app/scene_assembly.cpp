@@ -1,7 +1,5 @@
 #include "app/scene_assembly.h"
 
-#include "app/lean_well.h"
-
 #include <algorithm>
 #include <chrono>
 #include <cstdio>

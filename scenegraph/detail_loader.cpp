@@ -47,14 +47,6 @@ void DetailLoader::addWell(WellScene& scene,
     m_changed = true;
 }
 
-void DetailLoader::addWell(WellScene& scene, reconstruction::WholeWellReader readWhole) {
-    assertMainThread("DetailLoader::addWell");
-    m_wells[m_nextKey++] =
-        Entry{&scene, nullptr,
-              std::make_shared<const reconstruction::WholeWellReader>(std::move(readWhole)), false};
-    m_changed = true;
-}
-
 void DetailLoader::setEntry(Entry entry) {
     assertMainThread("DetailLoader::setWell");
     m_changed = true;

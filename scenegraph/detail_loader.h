@@ -47,13 +47,12 @@ public:
 
     // The scene must stay alive until removeAll (or the loader's end).
     void addWell(WellScene& scene, std::shared_ptr<const reconstruction::WellGeometry> geometry);
-    // A well held lean (docs/architecture.md, "A field held lean"): `readWhole` reads it whole
-    // and as drawn again, on the worker, when the camera first wants its finer levels. A well
-    // that cannot be read again is reported (setFailureReport) once, and asks for nothing more.
-    void addWell(WellScene& scene, reconstruction::WholeWellReader readWhole);
     void removeAll();
     // What `scene`'s finer levels are built from from now on (added when it has no entry): its
-    // geometry, or, held lean, a reader of the whole well. Its detail held stays.
+    // geometry, or, held lean (docs/architecture.md, "A field held lean"), `readWhole`, which
+    // reads the whole well as drawn, on the worker, when the camera first wants its finer levels.
+    // A well that cannot be read again is reported (setFailureReport) once, and asks for nothing
+    // more. Its detail held stays.
     void setWell(WellScene& scene, std::shared_ptr<const reconstruction::WellGeometry> geometry);
     void setWell(WellScene& scene, reconstruction::WholeWellReader readWhole);
     // Where a well held lean that could not be read again is said (the reader's message).

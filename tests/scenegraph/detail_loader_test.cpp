@@ -124,7 +124,7 @@ TEST_F(DetailLoaderTest, AWellHeldLeanIsReadWholeAgainOnceForItsFinerLevels) {
     scenegraph::DetailLoader leanLoader([&] { return camera; });
     heldLoader.addWell(held, geometry);
     int reads = 0;
-    leanLoader.addWell(lean, [&reads, &geometry] {
+    leanLoader.setWell(lean, [&reads, &geometry] {
         ++reads;  // on the worker; read below only once it has settled
         return geometry;
     });
@@ -155,7 +155,7 @@ TEST_F(DetailLoaderTest, AWellHeldLeanThatCannotBeReadAgainIsSaidOnceAndKeepsIts
     std::vector<std::string> said;
     loader.setFailureReport([&said](const std::string& message) { said.push_back(message); });
     int reads = 0;
-    loader.addWell(scene, [&reads]() -> std::shared_ptr<const reconstruction::WellGeometry> {
+    loader.setWell(scene, [&reads]() -> std::shared_ptr<const reconstruction::WellGeometry> {
         ++reads;
         throw std::runtime_error("well.las: changed since it was loaded");
     });
@@ -186,7 +186,7 @@ TEST_F(DetailLoaderTest, WellsHeldLeanNearTheCameraAreEachReadOnce) {
     scenegraph::DetailLoader loader([&] { return camera; });
     std::vector<int> reads(3, 0);
     for (std::size_t w = 0; w < 3; ++w)
-        loader.addWell(*scenes[w], [&reads, &geometries, w] {
+        loader.setWell(*scenes[w], [&reads, &geometries, w] {
             ++reads[w];
             return geometries[w];
         });
