@@ -58,8 +58,9 @@ struct WellSession::Well {
     io::Diagnostics picksDiagnostics;  // the picks file's, kept beside the load's warnings
     std::unique_ptr<reconstruction::WellLoadPipeline> pipeline;
     std::unique_ptr<scenegraph::SegmentFeeder> feeder;
-    std::unique_ptr<AnalysisJob> analysisJob;  // after the load, until the analysis is in
-    std::unique_ptr<BackgroundJob> matchJob;   // another run's depth match to its main run
+    // After the load (unless the well is made lean straight away), until the analysis is in.
+    std::unique_ptr<AnalysisJob> analysisJob;
+    std::unique_ptr<BackgroundJob> matchJob;  // another run's depth match to its main run
     // The report's section values, computed the first time a colouring needs them.
     std::shared_ptr<const reconstruction::SectionValues> values;
     bool started = false;  // its pipeline runs (or has run); else it waits its turn
@@ -401,9 +402,9 @@ scenegraph::SegmentFeeder::Callbacks WellSession::feederCallbacks(Well& w,
         emit status(m_loadedText.arg(record.options.radialExaggeration));
         w.done = true;
         edit(w, [](DeskWell& r) { r.loadFraction = 1.0; });
-        analyse(w);
         // Signalled from the event loop, not from inside the feeder's tick, so a slot may
-        // open other wells (destroying this feeder) safely.
+        // open other wells (destroying this feeder) safely; before what the jobs started next
+        // hand back.
         ++m_endsQueued;
         QMetaObject::invokeMethod(
             this,
@@ -413,6 +414,7 @@ scenegraph::SegmentFeeder::Callbacks WellSession::feederCallbacks(Well& w,
                 wellDone();
             },
             Qt::QueuedConnection);
+        analyseOrHoldLean(w);
     };
     callbacks.failed = [this, &w](const std::string& message) {
         const QString error = QString::fromStdString(message);
@@ -534,7 +536,10 @@ void WellSession::startWaitingLoads() {
         if (running >= loadsAtOnce()) return;
         if (well->started || well->done || !well->pipeline) continue;
         well->started = true;
-        well->pipeline->start();
+        // A well that starts loading with the field past the budget will be drawn from its
+        // whole geometry (made lean as its load ends): it is read whole, then drawn, not
+        // streamed (StreamedLoadSink::stream).
+        well->pipeline->start(!leanDue());
         ++running;
     }
 }
@@ -1026,17 +1031,38 @@ bool WellSession::leanDue() const {
     return rows > m_rowBudget;
 }
 
+bool WellSession::mayHoldLean(const Well& well) const {
+    const int index = modelIndex(well);
+    if (index < 0 || index == m_model.currentWell() || well.lean || well.leanJobRunning ||
+        !well.done || well.leanRefused)
+        return false;
+    const DeskWell& record = m_model.well(index);
+    // The runs of one well stay whole: their depth match and comparison read every row.
+    return record.geometry && record.runOf < 0;
+}
+
+void WellSession::analyseOrHoldLean(Well& well) {
+    if (mayHoldLean(well) && leanDue())
+        startLeanForm(well);
+    else
+        analyse(well);
+}
+
+void WellSession::analyseIfWhole(Well& well) {
+    const int index = modelIndex(well);
+    if (index < 0 || well.lean || well.leanJobRunning || m_model.well(index).analysis ||
+        well.analysisJob)
+        return;
+    analyse(well);
+}
+
 void WellSession::holdLeanWhereDue() {
     if (!leanDue()) return;
-    const int current = m_model.currentWell();
     for (const auto& well : m_wells) {
-        const int index = well ? modelIndex(*well) : -1;
-        if (index < 0 || index == current || well->lean || well->leanJobRunning || !well->done ||
-            well->leanRefused)
+        // A well whose analysis is under way is made lean once it is in.
+        if (!well || !mayHoldLean(*well) ||
+            (well->analysisJob && !m_model.well(modelIndex(*well)).analysis))
             continue;
-        const DeskWell& record = m_model.well(index);
-        // The runs of one well stay whole: their depth match and comparison read every row.
-        if (!record.geometry || !record.analysis || record.runOf >= 0) continue;
         startLeanForm(*well);
     }
 }
@@ -1077,14 +1103,17 @@ void WellSession::startLeanForm(Well& well) {
                 if (!error.empty()) {  // it stays whole
                     w->leanRefused = true;
                     emit status(w->name + ": not held lean: " + QString::fromStdString(error));
+                    analyseIfWhole(*w);
                     return;
                 }
                 // Restyled meanwhile: made again from the well as drawn now.
                 if (generation != m_styleGeneration || m_model.well(index).geometry != whole) {
                     holdLeanWhereDue();
+                    analyseIfWhole(*w);
                     return;
                 }
                 if (index != m_model.currentWell() && leanDue()) holdLean(*w, form);
+                analyseIfWhole(*w);  // made current meanwhile
                 if (leanJobsRunning() == 0) giveBackFreedMemory();
             };
         });

@@ -247,7 +247,16 @@ private:
 
     // A field held lean (setFieldRowBudget).
     bool leanDue() const;  // the wells hold more rows than the budget
-    // Starts making lean every loaded, analysed well that is held whole and may be held lean.
+    // Whether a loaded well held whole may be made lean: not the current well, not a run of one
+    // well, not being made lean and not refused.
+    bool mayHoldLean(const Well& well) const;
+    // At the end of a well's load: made lean straight away when due (it is not analysed: a well
+    // held lean keeps no analysis), else analysed.
+    void analyseOrHoldLean(Well& well);
+    // Analyses a well held whole that has no analysis, nor one under way (one not made lean).
+    void analyseIfWhole(Well& well);
+    // Starts making lean every loaded well that is held whole and may be held lean (once its
+    // analysis, if one is under way, is in).
     void holdLeanWhereDue();
     void startLeanForm(Well& well);
     void holdLean(Well& well, std::shared_ptr<const LeanForm> form);

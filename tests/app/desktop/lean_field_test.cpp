@@ -9,6 +9,9 @@
 
 #include <gtest/gtest.h>
 
+#include <QObject>
+#include <QSignalSpy>
+
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/nodes/SoPerspectiveCamera.h>
 #include <Inventor/nodes/SoSeparator.h>
@@ -187,6 +190,54 @@ TEST_F(LeanFieldTest, AWellHeldLeanMadeCurrentIsReadWholeAndAnalysedAndTheOneBef
     EXPECT_EQ(current.geometry->table().depth_m[model.currentRow()], model.currentDepth_m());
     EXPECT_EQ(model.well(before).analysis, nullptr);
     EXPECT_LT(model.well(before).geometry->table().rowCount(), 15000u);
+}
+
+TEST_F(LeanFieldTest, AWellLoadedPastTheBudgetIsMadeLeanWithoutBeingAnalysed) {
+    // The first well alone, analysed; the two added pass the budget as each is placed, so each
+    // is made lean as its load ends: an analysis of it would be dropped.
+    app::DeskModel model;
+    app::WellSession session(model, nullptr);
+    session.setFieldRowBudget(40'000);
+    const std::vector<app::WellSource> wells = field();
+    ASSERT_TRUE(open(session, app::LoadOptions{}, {wells[0]}));
+    ASSERT_NE(model.well(0).analysis, nullptr);
+    QSignalSpy analysed(&session, &app::WellSession::wellAnalysed);
+    session.addWell(wells[1], app::LoadOptions{});
+    session.addWell(wells[2], app::LoadOptions{});
+    ASSERT_TRUE(settle(session));
+    EXPECT_EQ(model.currentWell(), 0);
+    EXPECT_FALSE(session.heldLean(0));
+    for (int w = 1; w < 3; ++w) {
+        EXPECT_TRUE(session.heldLean(w)) << "well " << w;
+        EXPECT_EQ(model.well(w).wholeRows, 30001u) << "well " << w;
+    }
+    EXPECT_EQ(analysed.count(), 0) << "a well made lean was analysed first";
+}
+
+TEST_F(LeanFieldTest, AWellMadeCurrentWhileItIsMadeLeanStaysWholeAndIsAnalysed) {
+    // Well 1 is made current as its load ends, while its lean form is made on a worker: the
+    // form is not taken, the well is analysed, and the well current before goes lean.
+    app::DeskModel model;
+    app::WellSession session(model, nullptr);
+    session.setFieldRowBudget(40'000);
+    const std::vector<app::WellSource> wells = field();
+    ASSERT_TRUE(open(session, app::LoadOptions{}, {wells[0]}));
+    bool moved = false;
+    QObject::connect(&session, &app::WellSession::wellLoaded, [&] {
+        if (moved || model.wellCount() < 2 || model.well(1).loadFraction < 1.0) return;
+        moved = true;
+        model.setCurrent(1, 150.0);
+    });
+    session.addWell(wells[1], app::LoadOptions{});
+    session.addWell(wells[2], app::LoadOptions{});
+    ASSERT_TRUE(settle(session));
+    ASSERT_TRUE(moved);
+    EXPECT_EQ(model.currentWell(), 1);
+    EXPECT_FALSE(session.heldLean(1));
+    ASSERT_NE(model.well(1).analysis, nullptr) << "the well made current was not analysed";
+    EXPECT_EQ(model.well(1).analysis->sections.size(), 30001u);
+    EXPECT_TRUE(session.heldLean(0));
+    EXPECT_TRUE(session.heldLean(2));
 }
 
 TEST_F(LeanFieldTest, ARestyledFieldHeldLeanIsReadAgainAndDrawsWhatItDrawsWhole) {
