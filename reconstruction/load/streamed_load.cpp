@@ -142,6 +142,7 @@ LoadedWell loadWellStreamed(const WellSource& source, const LoadOptions& options
     const bool surveyGiven = !source.surveyPath.empty();
 
     Handover handover;
+    handover.feeding = sink.stream;
     io::Diagnostics readDiagnostics;
     std::thread reader([&] {
         try {

@@ -22,6 +22,11 @@ struct StreamedLoadSink {
     // How much of the log is read, 0 to 1 (rows read over the reader's estimate of the
     // rows to come), after each block; called on the reading thread.
     std::function<void(double fraction)> read;
+    // False: nothing is streamed (no stretch, no segment); the log is read on the reading thread
+    // with its progress (`read`) and the whole well built once it is in. For a well drawn from
+    // its whole geometry anyway (the window's well of a field held lean): each stretch's path
+    // and frames, placed again with the whole well's, are work done twice.
+    bool stream = true;
 };
 
 // loadWell, streamed: the log is read on a reading thread while this thread, the meshing

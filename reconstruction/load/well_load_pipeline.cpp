@@ -32,8 +32,10 @@ WellLoadPipeline::~WellLoadPipeline() {
     if (m_worker.joinable()) m_worker.join();
 }
 
-void WellLoadPipeline::start() {
-    if (!m_worker.joinable()) m_worker = std::thread([this] { run(); });
+void WellLoadPipeline::start(bool stream) {
+    if (m_worker.joinable()) return;
+    m_stream = stream;
+    m_worker = std::thread([this] { run(); });
 }
 
 void WellLoadPipeline::run() {
@@ -43,6 +45,7 @@ void WellLoadPipeline::run() {
         if (m_streamed) {
             StreamedLoadSink sink;
             sink.firstCoarseLevel = m_firstCoarseLevel;
+            sink.stream = m_stream;
             double drawnTo = -1.0e300;  // the path line sent so far ends here
             sink.stretch = [this, &drawnTo](const std::shared_ptr<const WellGeometry>& stretch) {
                 if (m_cancelled.load()) return;

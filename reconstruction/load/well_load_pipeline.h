@@ -68,7 +68,9 @@ public:
     WellLoadPipeline(const WellLoadPipeline&) = delete;
     WellLoadPipeline& operator=(const WellLoadPipeline&) = delete;
 
-    void start();
+    // `stream` false: a streamed load streams nothing (StreamedLoadSink::stream); its segments
+    // all come from the whole geometry once the log is read.
+    void start(bool stream = true);
     void cancel() { m_cancelled.store(true); }
     bool cancelled() const { return m_cancelled.load(); }
     // How much of the log a streamed load has read, 0 to 1 (any thread; 0 for other loaders
@@ -87,6 +89,7 @@ private:
     std::atomic<bool> m_cancelled{false};
     std::atomic<double> m_readFraction{0.0};
     int m_firstCoarseLevel = kFirstCoarseLevel;
+    bool m_stream = true;  // set before the worker starts
     std::thread m_worker;
 };
 

@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <random>
 #include <string>
@@ -110,6 +111,51 @@ TEST(WellLoadPipelineTest, StreamsStretchesAndTheirSegmentsWhileReadingThenTheWh
             EXPECT_EQ(again.levels[l].stripIndices, segments[s]->levels[l].stripIndices);
         }
     }
+}
+
+TEST(WellLoadPipelineTest, AWellNotStreamedSendsNoStretchAndTheWholeWellsSegmentsAfterIt) {
+    WellLoadPipeline streamed(WellSource{wellFile(), {}, {}, {}}, LoadOptions{}, Wellhead{});
+    WellLoadPipeline whole(WellSource{wellFile(), {}, {}, {}}, LoadOptions{}, Wellhead{});
+    streamed.start();
+    whole.start(false);
+    const std::vector<LoadEvent> a = drainAll(streamed), b = drainAll(whole);
+    EXPECT_EQ(whole.readFraction(), 1.0);
+    // Nothing before the whole geometry; then every segment, in order, then the spans.
+    ASSERT_TRUE(std::holds_alternative<LoadStarted>(b.front()));
+    const auto& placed = *std::get<LoadStarted>(b.front()).geometry;
+    const auto& reference = *std::get<LoadStarted>(*std::find_if(a.begin(), a.end(), [](auto& e) {
+                                 return std::holds_alternative<LoadStarted>(e);
+                             })).geometry;
+    ASSERT_EQ(placed.table().rowCount(), reference.table().rowCount());
+    EXPECT_EQ(placed.segmentCount(), reference.segmentCount());
+    std::vector<const SegmentMesh*> segments;
+    std::size_t spans = 0;
+    for (const LoadEvent& e : b) {
+        EXPECT_FALSE(std::holds_alternative<LoadStretch>(e));
+        if (const auto* segment = std::get_if<SegmentMesh>(&e)) {
+            EXPECT_EQ(spans, 0u) << "a segment after a span";
+            segments.push_back(segment);
+        }
+        if (std::holds_alternative<SpanMesh>(e)) ++spans;
+    }
+    EXPECT_EQ(std::get<LoadFinished>(b.back()).segments, 60u);
+    ASSERT_EQ(segments.size(), 60u);
+    EXPECT_GT(spans, 0u);
+    // The same segments as the streamed load's, bit for bit.
+    std::size_t s = 0;
+    for (const LoadEvent& e : a) {
+        const auto* segment = std::get_if<SegmentMesh>(&e);
+        if (!segment) continue;
+        ASSERT_LT(s, segments.size());
+        EXPECT_EQ(segment->index, segments[s]->index);
+        ASSERT_EQ(segment->levels.size(), segments[s]->levels.size());
+        for (std::size_t l = 0; l < segment->levels.size(); ++l) {
+            EXPECT_EQ(segment->levels[l].positions, segments[s]->levels[l].positions);
+            EXPECT_EQ(segment->levels[l].normals, segments[s]->levels[l].normals);
+        }
+        ++s;
+    }
+    EXPECT_EQ(s, 60u);
 }
 
 TEST(WellLoadPipelineTest, StreamsALogWithExtraCurves) {
