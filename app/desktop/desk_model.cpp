@@ -14,8 +14,7 @@ int DeskModel::addWell(DeskWell well) {
     m_wells.push_back(std::move(well));
     const int index = wellCount() - 1;
     emit wellsChanged();
-    if (m_well < 0 && m_wells.back().geometry)
-        setCurrentRow(index, firstMeasuredRow(*m_wells.back().geometry));
+    openOnFirstWell(index);
     return index;
 }
 
@@ -25,8 +24,13 @@ void DeskModel::updateWell(int i, DeskWell well) {
     // The current well held by other rows (read whole again, or restyled) keeps its depth.
     if (i == m_well && held && std::isfinite(m_depth_m)) m_row = nearestRow(*held, m_depth_m);
     emit wellChanged(i);
+    openOnFirstWell(i);
+}
+
+void DeskModel::openOnFirstWell(int i) {
     const auto& geometry = m_wells[static_cast<std::size_t>(i)].geometry;
-    if (m_well < 0 && geometry) setCurrentRow(i, firstMeasuredRow(*geometry));
+    if (!geometry || m_chosen || (m_well >= 0 && m_well <= i)) return;
+    moveTo(i, firstMeasuredRow(*geometry));
 }
 
 void DeskModel::setRunOf(int i, int mainId) {
@@ -81,6 +85,7 @@ void DeskModel::removeWell(int i) {
     const bool wasCurrent = m_well == i;
     if (m_well > i) --m_well;
     if (wasCurrent) {
+        m_chosen = false;
         m_well = -1;
         m_row = 0;
         m_depth_m = io::kNaN;
@@ -89,13 +94,12 @@ void DeskModel::removeWell(int i) {
     emit wellsChanged();
     if (!wasCurrent) return;
     emit currentChanged(m_well, m_depth_m);
-    for (int w = 0; w < wellCount() && m_well < 0; ++w)
-        if (const auto& g = m_wells[static_cast<std::size_t>(w)].geometry)
-            setCurrentRow(w, firstMeasuredRow(*g));
+    for (int w = 0; w < wellCount() && m_well < 0; ++w) openOnFirstWell(w);
 }
 
 void DeskModel::clearWells() {
     m_wells.clear();
+    m_chosen = false;
     m_well = -1;
     m_row = 0;
     m_depth_m = io::kNaN;
@@ -138,6 +142,13 @@ void DeskModel::setCurrent(int well, double md_m) {
 
 void DeskModel::setCurrentRow(int well, std::size_t row) {
     if (well < 0 || well >= wellCount()) return;
+    const auto& geometry = m_wells[static_cast<std::size_t>(well)].geometry;
+    if (!geometry || row >= geometry->table().rowCount()) return;
+    m_chosen = true;
+    moveTo(well, row);
+}
+
+void DeskModel::moveTo(int well, std::size_t row) {
     const DeskWell& w = m_wells[static_cast<std::size_t>(well)];
     if (!w.geometry || row >= w.geometry->table().rowCount()) return;
     if (well == m_well && row == m_row && std::isfinite(m_depth_m)) return;

@@ -72,8 +72,9 @@ public:
     int indexOf(int id) const;
 
     // Called by the well session as wells load.
-    // The first well with geometry becomes current at its first measured section
-    // (firstMeasuredRow): every view opens on data.
+    // Until a well is chosen (setCurrent, setCurrentRow), the first well in order that has
+    // geometry is current, at its first measured section (firstMeasuredRow): every view opens
+    // on data, and on the first file given however the wells' loads finish.
     int addWell(DeskWell well);  // emits wellsChanged
     // Emits wellChanged(i); the current well keeps its depth (its row found in the new geometry).
     void updateWell(int i, DeskWell well);
@@ -124,6 +125,10 @@ signals:
 
 private:
     std::vector<DeskWell> m_wells;
+    // Makes well `i` current when no well is chosen and none before it is (openOnFirstWell).
+    void openOnFirstWell(int i);
+    void moveTo(int well, std::size_t row);  // setCurrentRow's move, chosen or not
+    bool m_chosen = false;  // a well was made current by setCurrent or setCurrentRow
     int m_well = -1;
     std::size_t m_row = 0;
     double m_depth_m = io::kNaN;

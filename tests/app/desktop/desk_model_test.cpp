@@ -114,3 +114,34 @@ TEST(DeskModelTest, AWellOpensAtItsFirstMeasuredSection) {
     loading.updateWell(0, w);
     EXPECT_EQ(loading.currentRow(), 30u);
 }
+
+TEST(DeskModelTest, UntilOneIsChosenTheFirstWellPlacedInOrderIsCurrent) {
+    // A field's wells load side by side and are placed in any order: the views open on the
+    // first well given, whichever is placed first, until the user chooses one.
+    app::DeskModel model;
+    app::DeskWell pending = syntheticWell();
+    pending.geometry.reset();
+    for (int w = 0; w < 3; ++w) model.addWell(pending);
+    model.updateWell(1, syntheticWell());
+    EXPECT_EQ(model.currentWell(), 1);
+    model.updateWell(2, syntheticWell());
+    EXPECT_EQ(model.currentWell(), 1);
+    model.updateWell(0, syntheticWell());
+    EXPECT_EQ(model.currentWell(), 0);
+    EXPECT_EQ(model.currentRow(), app::DeskModel::firstMeasuredRow(*model.well(0).geometry));
+    // Chosen: a well placed before it no longer takes over.
+    app::DeskModel chosen;
+    for (int w = 0; w < 3; ++w) chosen.addWell(pending);
+    chosen.updateWell(2, syntheticWell());
+    chosen.updateWell(1, syntheticWell());
+    EXPECT_EQ(chosen.currentWell(), 1);
+    chosen.setCurrent(2, 10.0);
+    chosen.updateWell(0, syntheticWell());
+    EXPECT_EQ(chosen.currentWell(), 2);
+    EXPECT_DOUBLE_EQ(chosen.currentDepth_m(), 10.0);
+    // The well chosen closed: the first well is current again, and is until the next choice.
+    chosen.removeWell(2);
+    EXPECT_EQ(chosen.currentWell(), 0);
+    chosen.addWell(syntheticWell());
+    EXPECT_EQ(chosen.currentWell(), 0);
+}
