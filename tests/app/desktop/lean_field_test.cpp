@@ -60,6 +60,12 @@ protected:
         ASSERT_TRUE(open(lean, app::LoadOptions{})) << "the field held lean did not settle";
     }
 
+    // The field's first well alone, with the budget the second well passes.
+    static void openFirstWell(app::WellSession& session) {
+        session.setFieldRowBudget(40'000);
+        ASSERT_TRUE(open(session, app::LoadOptions{}, {field().front()}));
+    }
+
     // The first well held lean (-1: none).
     static int firstLean(const app::WellSession& session) {
         for (int i = 0; i < session.model().wellCount(); ++i)
@@ -197,10 +203,9 @@ TEST_F(LeanFieldTest, AWellLoadedPastTheBudgetIsMadeLeanWithoutBeingAnalysed) {
     // is made lean as its load ends: an analysis of it would be dropped.
     app::DeskModel model;
     app::WellSession session(model, nullptr);
-    session.setFieldRowBudget(40'000);
-    const std::vector<app::WellSource> wells = field();
-    ASSERT_TRUE(open(session, app::LoadOptions{}, {wells[0]}));
+    ASSERT_NO_FATAL_FAILURE(openFirstWell(session));
     ASSERT_NE(model.well(0).analysis, nullptr);
+    const std::vector<app::WellSource> wells = field();
     QSignalSpy analysed(&session, &app::WellSession::wellAnalysed);
     session.addWell(wells[1], app::LoadOptions{});
     session.addWell(wells[2], app::LoadOptions{});
@@ -219,9 +224,8 @@ TEST_F(LeanFieldTest, AWellMadeCurrentWhileItIsMadeLeanStaysWholeAndIsAnalysed) 
     // form is not taken, the well is analysed, and the well current before goes lean.
     app::DeskModel model;
     app::WellSession session(model, nullptr);
-    session.setFieldRowBudget(40'000);
+    ASSERT_NO_FATAL_FAILURE(openFirstWell(session));
     const std::vector<app::WellSource> wells = field();
-    ASSERT_TRUE(open(session, app::LoadOptions{}, {wells[0]}));
     bool moved = false;
     QObject::connect(&session, &app::WellSession::wellLoaded, [&] {
         if (moved || model.wellCount() < 2 || model.well(1).loadFraction < 1.0) return;
