@@ -1103,17 +1103,14 @@ void WellSession::startLeanForm(Well& well) {
                 if (!error.empty()) {  // it stays whole
                     w->leanRefused = true;
                     emit status(w->name + ": not held lean: " + QString::fromStdString(error));
-                    analyseIfWhole(*w);
-                    return;
+                } else if (generation != m_styleGeneration ||
+                           m_model.well(index).geometry != whole) {
+                    holdLeanWhereDue();  // restyled meanwhile: made again from the well as drawn
+                } else if (index != m_model.currentWell() && leanDue()) {
+                    holdLean(*w, form);
                 }
-                // Restyled meanwhile: made again from the well as drawn now.
-                if (generation != m_styleGeneration || m_model.well(index).geometry != whole) {
-                    holdLeanWhereDue();
-                    analyseIfWhole(*w);
-                    return;
-                }
-                if (index != m_model.currentWell() && leanDue()) holdLean(*w, form);
-                analyseIfWhole(*w);  // made current meanwhile
+                // Not made lean (refused, made current meanwhile, no longer due): analysed.
+                analyseIfWhole(*w);
                 if (leanJobsRunning() == 0) giveBackFreedMemory();
             };
         });
