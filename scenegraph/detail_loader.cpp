@@ -79,6 +79,17 @@ void DetailLoader::removeAll() {
     m_changed = true;
 }
 
+void DetailLoader::removeWell(const WellScene& scene) {
+    assertMainThread("DetailLoader::removeWell");
+    for (auto it = m_wells.begin(); it != m_wells.end(); ++it)
+        if (it->second.scene == &scene) {
+            if (it->second.readWhole) m_worker->forgetWholeWells();  // the whole well read for it
+            m_wells.erase(it);
+            m_changed = true;
+            return;
+        }
+}
+
 bool DetailLoader::tick() {
     assertMainThread("DetailLoader::tick");
     for (reconstruction::DetailResult& result : m_worker->results().drain(kAttachPerTick)) {

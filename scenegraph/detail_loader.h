@@ -48,6 +48,9 @@ public:
     // The scene must stay alive until removeAll (or the loader's end).
     void addWell(WellScene& scene, std::shared_ptr<const reconstruction::WellGeometry> geometry);
     void removeAll();
+    // Forgets `scene` (one about to be replaced or to go): what was asked for it is dropped as
+    // it comes back. Nothing where it has no entry.
+    void removeWell(const WellScene& scene);
     // What `scene`'s finer levels are built from from now on (added when it has no entry): its
     // geometry, or, held lean (docs/architecture.md, "A field held lean"), `readWhole`, which
     // reads the whole well as drawn, on the worker, when the camera first wants its finer levels.

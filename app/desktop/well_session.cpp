@@ -65,6 +65,10 @@ struct WellSession::Well {
     std::shared_ptr<const reconstruction::SectionValues> values;
     bool started = false;  // its pipeline runs (or has run); else it waits its turn
     bool done = false;
+    // False while a well loaded as its geometry only (LoadSends::geometryOnly) has no nodes
+    // but its path: drawn once, from its plan as it is made lean (holdLean), else whole
+    // (drawWhole). The load has not ended for the window until then.
+    bool drawn = true;
     FileStamp stamp;  // its log as the load found it: a log read again must be the same
     // How its wall's colours were last made from its own colouring (applyColourings): under the
     // range `shared` gives `sharedWells` wells, else its own; not at all (coloured false) while
@@ -367,7 +371,7 @@ scenegraph::SegmentFeeder::Callbacks WellSession::feederCallbacks(Well& w,
             w.view->setPicks(std::move(picks.picks));
         }
         annotate(w, *g, m_model.well(modelIndex(w)).options.radialExaggeration);
-        m_detail->addWell(w.view->scene(), g);
+        if (w.drawn) m_detail->addWell(w.view->scene(), g);
         edit(w, [&g](DeskWell& record) {
             if (!g->table().wellName.empty())
                 record.name = QString::fromStdString(g->table().wellName);
@@ -393,12 +397,14 @@ scenegraph::SegmentFeeder::Callbacks WellSession::feederCallbacks(Well& w,
         const DeskWell& record = m_model.well(modelIndex(w));
         const std::size_t warnings = record.diagnostics.warningCount;
         // One pass (QString::arg of several strings): the "%1" left for the exaggeration,
-        // which the load's end may choose, is not filled by the numbers after it.
-        m_loadedText =
-            QString("%1: %2 segments, %3 triangles at full detail, radii x%4, %5 warning%6")
-                .arg(w.name, QString::number(segments),
-                     QString::number(w.view->scene().fullDetailTriangles()), QStringLiteral("%1"),
-                     QString::number(warnings), warnings == 1 ? "" : "s");
+        // which the load's end may choose, is not filled by the numbers after it. (A well not
+        // drawn yet has no triangles to count.)
+        const QString triangles = w.drawn ? QString::number(w.view->scene().fullDetailTriangles()) +
+                                                " triangles at full detail, "
+                                          : QString();
+        m_loadedText = QString("%1: %2 segments, %3radii x%4, %5 warning%6")
+                           .arg(w.name, QString::number(segments), triangles, QStringLiteral("%1"),
+                                QString::number(warnings), warnings == 1 ? "" : "s");
         emit status(m_loadedText.arg(record.options.radialExaggeration));
         w.done = true;
         edit(w, [](DeskWell& r) { r.loadFraction = 1.0; });
@@ -420,6 +426,7 @@ scenegraph::SegmentFeeder::Callbacks WellSession::feederCallbacks(Well& w,
         const QString error = QString::fromStdString(message);
         emit status(w.name + ": failed: " + error);
         w.done = true;
+        w.drawn = true;  // nothing to draw
         edit(w, [&error](DeskWell& record) { record.error = error; });
         ++m_endsQueued;
         QMetaObject::invokeMethod(
@@ -536,16 +543,23 @@ void WellSession::startWaitingLoads() {
         if (running >= loadsAtOnce()) return;
         if (well->started || well->done || !well->pipeline) continue;
         well->started = true;
-        // A well that starts loading with the field past the budget will be drawn from its
-        // whole geometry (made lean as its load ends): it is read whole, then drawn, not
-        // streamed (StreamedLoadSink::stream).
-        well->pipeline->start(!leanDue());
+        // A well that starts loading with the field past the budget is made lean as its load
+        // ends: it is read whole, and drawn once, from its plan (holdLean), or whole where it
+        // is not made lean (drawWhole); no segment is built to be thrown away.
+        const bool lean = leanDue();
+        well->drawn = !lean;
+        well->pipeline->start(lean ? reconstruction::LoadSends::geometryOnly
+                                   : reconstruction::LoadSends::streamed);
         ++running;
     }
 }
 
 void WellSession::wellDone() {
     startWaitingLoads();
+    endLoadWhenDone();
+}
+
+void WellSession::endLoadWhenDone() {
     if (loading()) return;
     applyStyleAfterLoad();
     emit allWellsLoaded();
@@ -554,8 +568,8 @@ void WellSession::wellDone() {
 }
 
 bool WellSession::loading() const {
-    return m_endsQueued > 0 ||
-           std::any_of(m_wells.begin(), m_wells.end(), [](const auto& w) { return !w->done; });
+    return m_endsQueued > 0 || std::any_of(m_wells.begin(), m_wells.end(),
+                                           [](const auto& w) { return !w->done || !w->drawn; });
 }
 
 double WellSession::loadFraction(const Well& well) const {
@@ -828,6 +842,7 @@ void WellSession::applyColourings(double radialExaggeration,
             well->view->rebuild(*restyled, radialExaggeration);
         }
         ++m_annotationGeneration;
+        well->drawn = true;
         well->coloured = true;
         well->shared = it->shared;
         well->sharedWells = it->wells;
@@ -1042,10 +1057,27 @@ bool WellSession::mayHoldLean(const Well& well) const {
 }
 
 void WellSession::analyseOrHoldLean(Well& well) {
-    if (mayHoldLean(well) && leanDue())
+    if (mayHoldLean(well) && leanDue()) {
         startLeanForm(well);
-    else
+    } else {
+        drawWhole(well);
         analyse(well);
+    }
+}
+
+void WellSession::drawWhole(Well& well) {
+    if (well.drawn) return;
+    well.drawn = true;
+    const int index = modelIndex(well);
+    if (index < 0 || !well.view) return;
+    const auto& geometry = m_model.well(index).geometry;
+    if (geometry) {
+        m_detail->removeWell(well.view->scene());  // the scene goes
+        well.view->rebuild(*geometry, geometry->options().radialExaggeration);
+        ++m_annotationGeneration;
+        setDetail(well);
+    }
+    endLoadWhenDone();
 }
 
 void WellSession::analyseIfWhole(Well& well) {
@@ -1109,7 +1141,9 @@ void WellSession::startLeanForm(Well& well) {
                 } else if (index != m_model.currentWell() && leanDue()) {
                     holdLean(*w, form);
                 }
-                // Not made lean (refused, made current meanwhile, no longer due): analysed.
+                // Not made lean (refused, made current meanwhile, no longer due): drawn whole
+                // where its load drew nothing, and analysed.
+                if (!w->leanJobRunning) drawWhole(*w);
                 analyseIfWhole(*w);
                 if (leanJobsRunning() == 0) giveBackFreedMemory();
             };
@@ -1128,6 +1162,20 @@ void WellSession::holdLean(Well& well, std::shared_ptr<const LeanForm> form) {
         r.analysis.reset();
         r.wholeRows = rows;
     });
+    if (!well.drawn) {
+        // Its load drew nothing: drawn once, here, from its plan and the rows it holds (a few
+        // milliseconds a well), as render draws a field held lean.
+        m_detail->removeWell(well.view->scene());  // the scene goes
+        well.view->rebuild(
+            *sample,
+            reconstruction::buildCoarseMeshes(*sample, *well.lean->plan, well.lean->rows.get(), 1),
+            sample->options().radialExaggeration);
+        ++m_annotationGeneration;
+        well.drawn = true;
+        setDetail(well);
+        endLoadWhenDone();
+        return;
+    }
     setDetail(well);
 }
 

@@ -117,7 +117,8 @@ public:
     // starts the next. loadsRunning: the loads started and not ended.
     static int loadsAtOnce();
     int loadsRunning() const;
-    // True until every well's load has ended and what follows the last one is done: the
+    // True until every well's load has ended (one loaded as its geometry only: until it is
+    // drawn, Well::drawn) and what follows the last one is done: the
     // colours and exaggeration the whole set decides (applyStyleAfterLoad), allWellsLoaded.
     bool loading() const;
     LoadProgress progress() const;
@@ -217,6 +218,9 @@ private:
     // the end), its picks read from `picksPath` ("" none) once it is placed.
     scenegraph::SegmentFeeder::Callbacks feederCallbacks(Well& w, const std::string& picksPath);
     void wellDone();
+    // Once every well is loaded and drawn: the colours and exaggeration the set decides
+    // (applyStyleAfterLoad), then allWellsLoaded.
+    void endLoadWhenDone();
     double loadFraction(const Well& well) const;
     void applyStyleAfterLoad();
     // Depth ticks on the current well only when several wells have geometry (their labels
@@ -253,6 +257,9 @@ private:
     // At the end of a well's load: made lean straight away when due (it is not analysed: a well
     // held lean keeps no analysis), else analysed.
     void analyseOrHoldLean(Well& well);
+    // Draws a well whose load drew nothing (Well::drawn) from its whole geometry; ends the
+    // load where it was the last thing waited for.
+    void drawWhole(Well& well);
     // Analyses a well held whole that has no analysis, nor one under way (one not made lean).
     void analyseIfWhole(Well& well);
     // Starts making lean every loaded well that is held whole and may be held lean (once its

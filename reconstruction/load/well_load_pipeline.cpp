@@ -32,9 +32,9 @@ WellLoadPipeline::~WellLoadPipeline() {
     if (m_worker.joinable()) m_worker.join();
 }
 
-void WellLoadPipeline::start(bool stream) {
+void WellLoadPipeline::start(LoadSends sends) {
     if (m_worker.joinable()) return;
-    m_stream = stream;
+    m_sends = sends;
     m_worker = std::thread([this] { run(); });
 }
 
@@ -45,7 +45,7 @@ void WellLoadPipeline::run() {
         if (m_streamed) {
             StreamedLoadSink sink;
             sink.firstCoarseLevel = m_firstCoarseLevel;
-            sink.stream = m_stream;
+            sink.stream = m_sends == LoadSends::streamed;
             double drawnTo = -1.0e300;  // the path line sent so far ends here
             sink.stretch = [this, &drawnTo](const std::shared_ptr<const WellGeometry>& stretch) {
                 if (m_cancelled.load()) return;
@@ -69,6 +69,10 @@ void WellLoadPipeline::run() {
         m_readFraction.store(1.0);
         const std::shared_ptr<const WellGeometry> geometry = well.geometry;
         m_events.push(LoadStarted{geometry, std::move(well.diagnostics)});
+        if (m_streamed && m_sends == LoadSends::geometryOnly) {
+            m_events.push(LoadFinished{geometry->segmentCount()});
+            return;
+        }
         for (std::size_t s = built; s < geometry->segmentCount(); ++s) {
             if (m_cancelled.load()) break;
             m_events.push(buildCoarseSegment(*geometry, s, m_firstCoarseLevel));

@@ -45,6 +45,20 @@ struct LoadFailed {
 using LoadEvent =
     std::variant<LoadStretch, LoadStarted, SegmentMesh, SpanMesh, LoadFinished, LoadFailed>;
 
+// What a load sends between its geometry and LoadFinished.
+enum class LoadSends {
+    // Streamed (loadWellStreamed): each stretch's path and segments while the log is read,
+    // then the rest of the segments, then the spans.
+    streamed,
+    // The log read whole first (StreamedLoadSink::stream false), then every segment, then the
+    // spans: nothing is placed twice.
+    whole,
+    // The log read whole, then no segment and no span: a well the caller draws its own way
+    // (the window's well of a field held lean, from its plan). LoadFinished counts the well's
+    // segments.
+    geometryOnly,
+};
+
 // Owns one worker thread that loads a well (streamed, or by the loader it is
 // given), then pushes its segment meshes into its queue. Makes no Coin or Qt
 // call. Cancelled by a token checked per segment; the destructor cancels and
@@ -68,9 +82,8 @@ public:
     WellLoadPipeline(const WellLoadPipeline&) = delete;
     WellLoadPipeline& operator=(const WellLoadPipeline&) = delete;
 
-    // `stream` false: a streamed load streams nothing (StreamedLoadSink::stream); its segments
-    // all come from the whole geometry once the log is read.
-    void start(bool stream = true);
+    // What a streamed load sends (LoadSends); other loaders send every segment and span.
+    void start(LoadSends sends = LoadSends::streamed);
     void cancel() { m_cancelled.store(true); }
     bool cancelled() const { return m_cancelled.load(); }
     // How much of the log a streamed load has read, 0 to 1 (any thread; 0 for other loaders
@@ -89,7 +102,7 @@ private:
     std::atomic<bool> m_cancelled{false};
     std::atomic<double> m_readFraction{0.0};
     int m_firstCoarseLevel = kFirstCoarseLevel;
-    bool m_stream = true;  // set before the worker starts
+    LoadSends m_sends = LoadSends::streamed;  // set before the worker starts
     std::thread m_worker;
 };
 

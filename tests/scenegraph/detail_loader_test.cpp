@@ -111,6 +111,33 @@ TEST_F(DetailLoaderTest, OneBudgetServesEveryWellOfTheScene) {
     EXPECT_LE(a.fineTriangles() + b.fineTriangles(), loader.budgetTriangles());
 }
 
+TEST_F(DetailLoaderTest, AWellRemovedIsAskedNothingMoreWhileTheOthersKeepTheirDetail) {
+    // Two wells side by side; one is forgotten (its scene replaced) while its detail is asked
+    // for: the scene goes at once, what the worker built for it is dropped, and the other well
+    // still gets its own. (Under AddressSanitizer a scene touched after it went fails here.)
+    const auto kept = circleWell(0.0), gone = circleWell(0.5);
+    scenegraph::WellScene a;
+    auto b = std::make_unique<scenegraph::WellScene>();
+    a.buildAll(*kept);
+    b->buildAll(*gone);
+    std::optional<scenegraph::DetailView> camera =
+        scenegraph::DetailView{{0.0f, -2.5f, 0.0f}, scenegraph::lodViewFor(800, 0.8f)};
+    scenegraph::DetailLoader loader([&] { return camera; }, 4'000'000);
+    loader.addWell(a, kept);
+    loader.addWell(*b, gone);
+    loader.tick();  // both asked for
+    loader.removeWell(*b);
+    b.reset();
+    loader.removeWell(a);  // and `a` added again: forgotten, then as new
+    loader.addWell(a, kept);
+    ASSERT_TRUE(settle(loader));
+    EXPECT_EQ(a.heldFrom(2), 0);
+    EXPECT_GT(a.fineTriangles(), 0u);
+    camera->eye = {0.0f, -20.5f, 0.0f};
+    ASSERT_TRUE(settle(loader));
+    EXPECT_EQ(a.heldFrom(20), 0);
+}
+
 TEST_F(DetailLoaderTest, AWellHeldLeanIsReadWholeAgainOnceForItsFinerLevels) {
     // The same well twice: one scene's loader holds the geometry, the other's reads it whole
     // again (a well of a field held lean). Both draw the same finer levels wherever the camera

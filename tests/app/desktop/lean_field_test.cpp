@@ -244,6 +244,72 @@ TEST_F(LeanFieldTest, AWellMadeCurrentWhileItIsMadeLeanStaysWholeAndIsAnalysed) 
     EXPECT_TRUE(session.heldLean(2));
 }
 
+TEST_F(LeanFieldTest, AWellLoadedPastTheBudgetIsDrawnOnceFromItsPlanAsTheFieldHeldWhole) {
+    // A budget below one well: the two wells loaded first pass it, so the third is loaded as
+    // its geometry only. Its load ends with no nodes but its path; it is drawn once, from its
+    // plan as it is made lean, and only then has the field's load ended.
+    app::DeskModel wholeModel, leanModel;
+    app::WellSession whole(wholeModel, nullptr), lean(leanModel, nullptr);
+    whole.setFieldRowBudget(0);
+    lean.setFieldRowBudget(20'000);
+    std::vector<int> endedUndrawn;
+    QObject::connect(&lean, &app::WellSession::wellLoaded, [&] {
+        for (int i = 0; i < leanModel.wellCount(); ++i)
+            if (leanModel.well(i).loadFraction >= 1.0 && !lean.heldLean(i) &&
+                lean.scene(std::size_t(i))->segmentCount() == 0 &&
+                std::find(endedUndrawn.begin(), endedUndrawn.end(), i) == endedUndrawn.end())
+                endedUndrawn.push_back(i);
+    });
+    std::vector<std::size_t> segmentsAtTheEnd;
+    QObject::connect(&lean, &app::WellSession::allWellsLoaded, [&] {
+        for (int i = 0; i < leanModel.wellCount(); ++i)
+            segmentsAtTheEnd.push_back(lean.scene(std::size_t(i))->segmentCount());
+    });
+    ASSERT_TRUE(open(whole, app::LoadOptions{}));
+    ASSERT_TRUE(open(lean, app::LoadOptions{}));
+    EXPECT_EQ(endedUndrawn, std::vector<int>{2}) << "the third well was drawn by its load";
+    ASSERT_EQ(segmentsAtTheEnd.size(), 3u);
+    for (std::size_t i = 0; i < 3; ++i)
+        EXPECT_EQ(segmentsAtTheEnd[i], whole.scene(i)->segmentCount()) << "well " << i;
+    EXPECT_TRUE(lean.heldLean(2));
+    EXPECT_EQ(leanModel.well(2).wholeRows, 30001u);
+    EXPECT_GT(lean.scene(2)->fullDetailTriangles(), 0u);
+    EXPECT_DOUBLE_EQ(lean.look().radialExaggeration, whole.look().radialExaggeration);
+    expectSamePictures(whole, lean, 2);
+}
+
+TEST_F(LeanFieldTest, AWellLoadedPastTheBudgetAndMadeCurrentAsItEndsIsDrawnWholeAndAnalysed) {
+    // Well 1 passes the budget as it starts, so it is loaded as its geometry only; made current
+    // as its load ends, it is not made lean: it is drawn whole, as the field held whole draws
+    // it, and analysed; the well current before goes lean.
+    app::DeskModel wholeModel, model;
+    app::WellSession whole(wholeModel, nullptr), session(model, nullptr);
+    whole.setFieldRowBudget(0);
+    const std::vector<app::WellSource> wells = field();
+    ASSERT_TRUE(open(whole, app::LoadOptions{}, {wells[0], wells[1]}));
+    session.setFieldRowBudget(20'000);
+    ASSERT_TRUE(open(session, app::LoadOptions{}, {wells[0]}));
+    bool moved = false;
+    std::size_t segmentsAsItEnded = 1;
+    QObject::connect(&session, &app::WellSession::wellLoaded, [&] {
+        if (moved || model.wellCount() < 2 || model.well(1).loadFraction < 1.0) return;
+        moved = true;
+        segmentsAsItEnded = session.scene(1)->segmentCount();
+        model.setCurrent(1, 150.0);
+    });
+    session.addWell(wells[1], app::LoadOptions{});
+    ASSERT_TRUE(settle(session));
+    ASSERT_TRUE(moved);
+    EXPECT_EQ(segmentsAsItEnded, 0u) << "its load drew it";
+    EXPECT_EQ(model.currentWell(), 1);
+    EXPECT_FALSE(session.heldLean(1));
+    ASSERT_NE(model.well(1).analysis, nullptr) << "the well made current was not analysed";
+    EXPECT_EQ(model.well(1).analysis->sections.size(), 30001u);
+    EXPECT_EQ(session.scene(1)->segmentCount(), whole.scene(1)->segmentCount());
+    EXPECT_EQ(session.scene(1)->fullDetailTriangles(), whole.scene(1)->fullDetailTriangles());
+    EXPECT_TRUE(session.heldLean(0));
+}
+
 TEST_F(LeanFieldTest, ARestyledFieldHeldLeanIsReadAgainAndDrawsWhatItDrawsWhole) {
     // Coloured by ellipticity, drawn at x7: neither is what the wells held lean were planned
     // and coloured for, so they are read again, then drawn as the field held whole.

@@ -117,7 +117,7 @@ TEST(WellLoadPipelineTest, AWellNotStreamedSendsNoStretchAndTheWholeWellsSegment
     WellLoadPipeline streamed(WellSource{wellFile(), {}, {}, {}}, LoadOptions{}, Wellhead{});
     WellLoadPipeline whole(WellSource{wellFile(), {}, {}, {}}, LoadOptions{}, Wellhead{});
     streamed.start();
-    whole.start(false);
+    whole.start(LoadSends::whole);
     const std::vector<LoadEvent> a = drainAll(streamed), b = drainAll(whole);
     EXPECT_EQ(whole.readFraction(), 1.0);
     // Nothing before the whole geometry; then every segment, in order, then the spans.
@@ -156,6 +156,29 @@ TEST(WellLoadPipelineTest, AWellNotStreamedSendsNoStretchAndTheWholeWellsSegment
         ++s;
     }
     EXPECT_EQ(s, 60u);
+}
+
+TEST(WellLoadPipelineTest, AWellSentAsGeometryOnlySendsItsWholeGeometryAndNoMesh) {
+    WellLoadPipeline streamed(WellSource{wellFile(), {}, {}, {}}, LoadOptions{}, Wellhead{});
+    WellLoadPipeline bare(WellSource{wellFile(), {}, {}, {}}, LoadOptions{}, Wellhead{});
+    streamed.start();
+    bare.start(LoadSends::geometryOnly);
+    const std::vector<LoadEvent> a = drainAll(streamed), b = drainAll(bare);
+    EXPECT_EQ(bare.readFraction(), 1.0);
+    // The whole geometry, then the end counting the well's segments: nothing between.
+    ASSERT_EQ(b.size(), 2u);
+    ASSERT_TRUE(std::holds_alternative<LoadStarted>(b.front()));
+    ASSERT_TRUE(std::holds_alternative<LoadFinished>(b.back()));
+    const auto& placed = *std::get<LoadStarted>(b.front()).geometry;
+    const auto& reference = *std::get<LoadStarted>(*std::find_if(a.begin(), a.end(), [](auto& e) {
+                                 return std::holds_alternative<LoadStarted>(e);
+                             })).geometry;
+    ASSERT_EQ(placed.table().rowCount(), reference.table().rowCount());
+    EXPECT_EQ(placed.segmentCount(), 60u);
+    EXPECT_EQ(std::get<LoadFinished>(b.back()).segments, 60u);
+    EXPECT_EQ(std::get<LoadFinished>(a.back()).segments, 60u);
+    for (std::size_t row = 0; row < placed.table().rowCount(); row += 997)
+        EXPECT_EQ(placed.centre(row), reference.centre(row)) << row;
 }
 
 TEST(WellLoadPipelineTest, StreamsALogWithExtraCurves) {
