@@ -25,7 +25,8 @@ std::string environment(const char* name) {
 std::optional<std::string> hugePageTunables(const HugePageContext& context) {
     const bool always = context.setting == "always";
     if (!context.setting.empty() && !always) return std::nullopt;
-    if (!always && (context.window || context.inputBytes < context.threshold)) return std::nullopt;
+    const bool oneWellWindow = context.window && context.files < 2;
+    if (!always && (oneWellWindow || context.inputBytes < context.threshold)) return std::nullopt;
     if (context.tunables.find("glibc.malloc.hugetlb") != std::string::npos) return std::nullopt;
     if (context.thpMode.find("[madvise]") == std::string::npos) return std::nullopt;
     return context.tunables.empty() ? std::string(kHugeHeap) : context.tunables + ":" + kHugeHeap;
@@ -79,14 +80,18 @@ void restartWithHugePageMalloc(const HugePageContext& context,
 
 void preferHugePages(int argc, char** argv) {
     std::uintmax_t bytes = 0;
+    std::size_t files = 0;
     for (int i = 1; i < argc; ++i) {
         std::error_code error;
-        if (std::filesystem::is_regular_file(argv[i], error))
+        if (std::filesystem::is_regular_file(argv[i], error)) {
             bytes += std::filesystem::file_size(argv[i], error);
+            ++files;
+        }
     }
     // hugePageTunables decides: one small file read at start-up, the rule in one place.
     HugePageContext context = hugePageContext(bytes, kHugePagesFrom_bytes);
     context.window = argc > 1 && std::string(argv[1]) == "view";
+    context.files = files;
     restartWithHugePageMalloc(context, std::vector<std::string>(argv, argv + argc));
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -23,8 +24,10 @@ struct HugePageContext {
     std::uintmax_t threshold = 0;   // from how much of it they are asked for
     // The window: it keeps what it loads for as long as it is open, and part of a 2 MiB page
     // freed cannot be given back (the 4 km well held 628 MiB, against 592-609 MiB without,
-    // for a load its main thread paces, no faster with them).
+    // for a load its main thread paces, no faster with them). A window of a field (`files` 2 or
+    // more, held lean past its row budget) loads on both cores: it asks as the verbs do.
     bool window = false;
+    std::size_t files = 0;  // the command's arguments that are files
 };
 
 // A command's own arguments that are files, together, from this much (`batch`: always).
@@ -33,7 +36,8 @@ inline constexpr std::uintmax_t kHugePagesFrom_bytes = std::uintmax_t{64} << 20;
 // The GLIBC_TUNABLES to start again with, or nothing: the program goes on as it is. Nothing when
 // CALIPER3D_HUGE_PAGES says no (any value but "always"; the restart sets it), when the tunables
 // already say either way, when the kernel gives huge pages to every process or to none, or
-// below the threshold or for the window ("always" asks whatever the input and the verb).
+// below the threshold or for the window of one well ("always" asks whatever the input and the
+// verb).
 std::optional<std::string> hugePageTunables(const HugePageContext& context);
 
 // The context from this process's environment and the kernel's setting.
@@ -46,7 +50,7 @@ void restartWithHugePageMalloc(const HugePageContext& context,
                                const std::vector<std::string>& argv);
 
 // Called first in main: restarts with huge pages when the command's arguments that are files
-// come to kHugePagesFrom_bytes or more, the window (`view`) aside.
+// come to kHugePagesFrom_bytes or more, the window (`view`) of one file aside.
 void preferHugePages(int argc, char** argv);
 
 }  // namespace caliper3d::app

@@ -86,12 +86,19 @@ TEST(HugePagesTest, AskedForFromTheThresholdWhereTheKernelGivesThemOnRequest) {
         set.setting = no;
         EXPECT_FALSE(hugePageTunables(set)) << no;
     }
-    // The window: only when told "always".
+    // The window of one well: only when told "always".
     HugePageContext window = fieldOf(200 * kMiB);
     window.window = true;
+    window.files = 1;
     EXPECT_FALSE(hugePageTunables(window));
     window.setting = "always";
     EXPECT_TRUE(hugePageTunables(window));
+    // The window of a field: from the threshold, as the verbs.
+    window.setting.clear();
+    window.files = 2;
+    EXPECT_TRUE(hugePageTunables(window));
+    window.inputBytes = 63 * kMiB;
+    EXPECT_FALSE(hugePageTunables(window));
     // batch: from no input at all.
     HugePageContext batch = fieldOf(0);
     batch.threshold = 0;
