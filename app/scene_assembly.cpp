@@ -282,18 +282,10 @@ BuiltWell buildPlanned(std::shared_ptr<const reconstruction::WellGeometry> drawn
     if (nodes == scenegraph::SegmentNodes::now) {
         built.meshes = reconstruction::buildCoarseMeshes(*drawn, *plan, wholeRows.get(), threads);
     } else {
-        built.meshes.spans =
-            reconstruction::buildPlannedSpans(*drawn, *plan, wholeRows.get(), threads);
-        built.waiting.count = plan->segments.size();
-        built.waiting.boxes.reserve(plan->segments.size());
-        for (const reconstruction::SegmentPlan& segment : plan->segments) {
-            built.waiting.fullDetailTriangles += segment.fullDetailTriangles;
-            built.waiting.boxes.push_back(
-                reconstruction::plannedSegmentBox(*drawn, segment, wholeRows.get()));
-        }
-        built.waiting.build = [drawn, plan, wholeRows](std::size_t s) {
-            return reconstruction::finishSegmentLevels(*drawn, plan->segments[s], wholeRows.get());
-        };
+        scenegraph::PlannedWell planned =
+            scenegraph::planWaitingWell(drawn, plan, wholeRows, threads);
+        built.meshes.spans = std::move(planned.spans);
+        built.waiting = std::move(planned.waiting);
     }
     built.geometry = std::move(drawn);
     return built;

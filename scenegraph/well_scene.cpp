@@ -348,6 +348,25 @@ std::optional<WellScene::SpanRows> WellScene::spanOfLod(const SoNode* node) cons
                     span.lastRow};
 }
 
+PlannedWell planWaitingWell(const std::shared_ptr<const reconstruction::WellGeometry>& drawn,
+                            const std::shared_ptr<const reconstruction::CoarsePlan>& plan,
+                            const std::shared_ptr<const std::vector<std::size_t>>& wholeRows,
+                            int threads) {
+    PlannedWell out;
+    out.spans = reconstruction::buildPlannedSpans(*drawn, *plan, wholeRows.get(), threads);
+    out.waiting.count = plan->segments.size();
+    out.waiting.boxes.reserve(plan->segments.size());
+    for (const reconstruction::SegmentPlan& segment : plan->segments) {
+        out.waiting.fullDetailTriangles += segment.fullDetailTriangles;
+        out.waiting.boxes.push_back(
+            reconstruction::plannedSegmentBox(*drawn, segment, wholeRows.get()));
+    }
+    out.waiting.build = [drawn, plan, wholeRows](std::size_t s) {
+        return reconstruction::finishSegmentLevels(*drawn, plan->segments[s], wholeRows.get());
+    };
+    return out;
+}
+
 void WellScene::buildAllLevels(const reconstruction::WellGeometry& geometry) {
     setPath(geometry);
     for (std::size_t s = 0; s < geometry.segmentCount(); ++s) addSegment(geometry.buildSegment(s));

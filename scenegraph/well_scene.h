@@ -235,4 +235,18 @@ private:
     std::function<reconstruction::SegmentMesh(std::size_t)> m_waiting;  // builds one waiting
 };
 
+// A well drawn from its plan with its segments made when near (SegmentNodes::whenNear): every
+// span's merged mesh (reconstruction::buildPlannedSpans on `threads`) and the segments waiting,
+// each built from `drawn` as `plan` says when its span is first wanted (`wholeRows` as
+// reconstruction::buildCoarseMeshes takes it; null: `drawn` is the whole well). Reads only its
+// arguments, so any thread may make it; WellScene::attachAll(drawn, spans, waiting) shows it.
+struct PlannedWell {
+    std::vector<reconstruction::SpanMesh> spans;
+    WellScene::WaitingSegments waiting;
+};
+PlannedWell planWaitingWell(const std::shared_ptr<const reconstruction::WellGeometry>& drawn,
+                            const std::shared_ptr<const reconstruction::CoarsePlan>& plan,
+                            const std::shared_ptr<const std::vector<std::size_t>>& wholeRows,
+                            int threads);
+
 }  // namespace caliper3d::scenegraph

@@ -78,4 +78,14 @@ void WellView::rebuild(const reconstruction::WellGeometry& geometry,
     annotate(geometry, radialExaggeration);
 }
 
+void WellView::rebuild(const reconstruction::WellGeometry& geometry, PlannedWell planned,
+                       double radialExaggeration) {
+    assertMainThread("WellView");
+    auto scene = std::make_unique<WellScene>();
+    scene->attachAll(geometry, planned.spans, std::move(planned.waiting));
+    m_shown->replaceChild(m_scene->root(), scene->root());
+    m_scene = std::move(scene);
+    annotate(geometry, radialExaggeration);
+}
+
 }  // namespace caliper3d::scenegraph

@@ -21,6 +21,7 @@ namespace caliper3d::scenegraph {
 
 class WellScene;
 struct AnnotationView;
+struct PlannedWell;
 struct WellLabels;
 
 // The nodes one shown well owns (FreeCAD's view provider): a switch that shows or hides it,
@@ -66,6 +67,10 @@ public:
     // and the rows it holds: reconstruction::buildCoarseMeshes), `geometry` those rows as drawn.
     void rebuild(const reconstruction::WellGeometry& geometry,
                  const reconstruction::CoarseMeshes& meshes, double radialExaggeration);
+    // The same with its segments made when near (planWaitingWell): the spans now, each
+    // segment's nodes when the camera first comes near enough (WellScene::wantedDetail).
+    void rebuild(const reconstruction::WellGeometry& geometry, PlannedWell planned,
+                 double radialExaggeration);
     int firstCoarseLevel() const { return m_firstCoarseLevel; }
 
 private:

@@ -27,6 +27,7 @@
 #include "reconstruction/analysis/well_analysis.h"
 #include "reconstruction/load/well_load_pipeline.h"
 #include "reconstruction/mesh/lod_tree.h"
+#include "reconstruction/parallel/built_ahead.h"
 #include "scenegraph/picture_scale.h"
 #include "scenegraph/section_pick.h"
 #include "scenegraph/segment_feeder.h"
@@ -817,6 +818,15 @@ void WellSession::applyColourings(double radialExaggeration,
                                   const QElapsedTimer& clock) {
     ++m_styleGeneration;
     m_detail->removeAll();
+    // The wells restyled, each with its new colours and what it is drawn from.
+    struct Restyle {
+        Well* well = nullptr;
+        const ColouredWell* coloured = nullptr;
+        std::shared_ptr<const reconstruction::WellGeometry> whole;  // held whole
+        std::shared_ptr<const LeanForm> lean;                       // held lean
+        int firstLevel = reconstruction::kFirstCoarseLevel;
+    };
+    std::vector<Restyle> restyles;
     for (auto& well : m_wells) {
         const DeskWell& record = m_model.well(modelIndex(*well));
         // A well closed, or loaded again, since its colours were made keeps its own.
@@ -827,20 +837,46 @@ void WellSession::applyColourings(double radialExaggeration,
             setDetail(*well);
             continue;
         }
-        std::shared_ptr<const reconstruction::WellGeometry> restyled;
-        if (well->lean) {
-            // Drawn from its plan and the rows it holds (a few milliseconds a well).
-            restyled = std::make_shared<const reconstruction::WellGeometry>(
-                well->lean->base->restyled(radialExaggeration, it->colouring));
-            well->view->rebuild(*restyled,
-                                reconstruction::buildCoarseMeshes(*restyled, *well->lean->plan,
-                                                                  well->lean->rows.get(), 2),
-                                radialExaggeration);
-        } else {
-            restyled = std::make_shared<const reconstruction::WellGeometry>(
-                record.geometry->restyled(radialExaggeration, it->colouring));
-            well->view->rebuild(*restyled, radialExaggeration);
-        }
+        restyles.push_back(
+            {well.get(), &*it, record.geometry, well->lean, well->view->firstCoarseLevel()});
+    }
+    // Each well's restyled geometry and coarse meshes, built on two workers ahead of the main
+    // thread, which makes their nodes in order (Coin nodes are made on the main thread only:
+    // docs/threading.md). A well held lean is drawn from its plan and the rows it holds, its
+    // segments made when near (a few milliseconds); one held whole is planned and built whole.
+    struct Drawn {
+        std::shared_ptr<const reconstruction::WellGeometry> geometry;
+        reconstruction::CoarseMeshes meshes;  // held whole
+        scenegraph::PlannedWell planned;      // held lean
+    };
+    reconstruction::BuiltAhead<Drawn> ahead(
+        restyles.size(),
+        [&restyles, radialExaggeration](std::size_t k) {
+            const Restyle& r = restyles[k];
+            Drawn drawn;
+            if (r.lean) {
+                drawn.geometry = std::make_shared<const reconstruction::WellGeometry>(
+                    r.lean->base->restyled(radialExaggeration, r.coloured->colouring));
+                drawn.planned =
+                    scenegraph::planWaitingWell(drawn.geometry, r.lean->plan, r.lean->rows, 1);
+            } else {
+                drawn.geometry = std::make_shared<const reconstruction::WellGeometry>(
+                    r.whole->restyled(radialExaggeration, r.coloured->colouring));
+                drawn.meshes = reconstruction::buildCoarseMeshes(*drawn.geometry, r.firstLevel);
+            }
+            return drawn;
+        },
+        2, 2);
+    for (std::size_t k = 0; k < restyles.size(); ++k) {
+        Well* const well = restyles[k].well;
+        const ColouredWell* const it = restyles[k].coloured;
+        Drawn drawn = ahead.take(k);
+        const std::shared_ptr<const reconstruction::WellGeometry> restyled = drawn.geometry;
+        if (restyles[k].lean)
+            well->view->rebuild(*restyled, std::move(drawn.planned), radialExaggeration);
+        else
+            well->view->rebuild(*restyled, drawn.meshes, radialExaggeration);
+        drawn.meshes = {};
         ++m_annotationGeneration;
         well->drawn = true;
         well->coloured = true;
@@ -1163,13 +1199,13 @@ void WellSession::holdLean(Well& well, std::shared_ptr<const LeanForm> form) {
         r.wholeRows = rows;
     });
     if (!well.drawn) {
-        // Its load drew nothing: drawn once, here, from its plan and the rows it holds (a few
-        // milliseconds a well), as render draws a field held lean.
+        // Its load drew nothing: drawn once, here, from its plan and the rows it holds, its
+        // segments made when near (a few milliseconds a well), as render draws a field held
+        // lean.
         m_detail->removeWell(well.view->scene());  // the scene goes
-        well.view->rebuild(
-            *sample,
-            reconstruction::buildCoarseMeshes(*sample, *well.lean->plan, well.lean->rows.get(), 1),
-            sample->options().radialExaggeration);
+        well.view->rebuild(*sample,
+                           scenegraph::planWaitingWell(sample, well.lean->plan, well.lean->rows, 1),
+                           sample->options().radialExaggeration);
         ++m_annotationGeneration;
         well.drawn = true;
         setDetail(well);
