@@ -34,6 +34,8 @@ struct DeskWell {
     // sample, and no analysis until it is read whole again as the current well; 0 while the
     // geometry holds every row.
     std::size_t wholeRows = 0;
+    // Its lean form is being made on a worker (WellSession): it is not analysed meanwhile.
+    bool makingLean = false;
     io::Diagnostics diagnostics;  // reader, survey and geometry warnings
     std::vector<io::Pick> picks;  // image-log picks (--picks), shown in the 3D, rose and log track
     QString error;                // why the load failed (empty when it did not)

@@ -1168,6 +1168,7 @@ void WellSession::startLeanForm(Well& well) {
                 w->leanJobRunning = false;
                 const int index = modelIndex(*w);
                 if (index < 0) return;
+                edit(*w, [](DeskWell& r) { r.makingLean = false; });
                 if (!error.empty()) {  // it stays whole
                     w->leanRefused = true;
                     emit status(w->name + ": not held lean: " + QString::fromStdString(error));
@@ -1184,6 +1185,7 @@ void WellSession::startLeanForm(Well& well) {
                 if (leanJobsRunning() == 0) giveBackFreedMemory();
             };
         });
+    edit(well, [](DeskWell& r) { r.makingLean = true; });  // after `record` is read
 }
 
 void WellSession::holdLean(Well& well, std::shared_ptr<const LeanForm> form) {

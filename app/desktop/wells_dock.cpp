@@ -182,17 +182,22 @@ void WellsDock::fill(QTreeWidgetItem* item, int well) {
     // While it loads, how far: reading the log, then drawing its segments.
     const QString done = QString(" %1%").arg(std::floor(100.0 * w.loadFraction), 0, 'f', 0);
     item->setText(State, !w.error.isEmpty()      ? QString("failed")
-                         : w.loadFraction >= 1.0 ? (w.analysis        ? QString("loaded")
+                         : w.loadFraction >= 1.0 ? (w.makingLean      ? QString("making lean")
+                                                    : w.analysis      ? QString("loaded")
                                                     : w.wholeRows > 0 ? QString("held lean")
                                                                       : QString("analysing"))
                          : w.geometry            ? "drawing" + done
                                                  : "reading" + done);
-    item->setToolTip(State, w.wholeRows > 0 && w.error.isEmpty()
-                                ? QString("A sample of its %1 rows is held (the field is large): "
-                                          "it is read whole again, and analysed, when it becomes "
-                                          "the current well")
-                                      .arg(w.wholeRows)
-                                : w.error);
+    item->setToolTip(
+        State, !w.error.isEmpty() ? w.error
+               : w.makingLean ? QString("The field is large: the plan of its coarse meshes and a "
+                                        "sample of its rows are being made, and it is not "
+                                        "analysed unless it becomes the current well")
+               : w.wholeRows > 0 ? QString("A sample of its %1 rows is held (the field is large): "
+                                           "it is read whole again, and analysed, when it becomes "
+                                           "the current well")
+                                       .arg(w.wholeRows)
+                                 : QString());
     if (run && !mainRun && w.error.isEmpty() && w.analysis) {
         // Its depth match to the main run (as `caliper3d compare MAIN RUN` finds it).
         if (w.mapping)

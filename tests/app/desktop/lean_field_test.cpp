@@ -12,6 +12,7 @@
 
 #include <QObject>
 #include <QSignalSpy>
+#include <QTreeWidget>
 
 #include <Inventor/SbViewportRegion.h>
 #include <Inventor/nodes/SoPerspectiveCamera.h>
@@ -19,6 +20,7 @@
 
 #include "app/desktop/desk_model.h"
 #include "app/desktop/well_session.h"
+#include "app/desktop/wells_dock.h"
 #include "desktop_test_support.h"
 #include "reconstruction/well_geometry.h"
 #include "scenegraph/camera_setup.h"
@@ -251,15 +253,19 @@ TEST_F(LeanFieldTest, AWellLoadedPastTheBudgetIsDrawnOnceFromItsPlanAsTheFieldHe
     // plan as it is made lean, and only then has the field's load ended.
     app::DeskModel wholeModel, leanModel;
     app::WellSession whole(wholeModel, nullptr), lean(leanModel, nullptr);
+    app::WellsDock dock(leanModel);
     whole.setFieldRowBudget(0);
     lean.setFieldRowBudget(20'000);
     std::vector<int> endedUndrawn;
+    QString stateAsItEnded;
     QObject::connect(&lean, &app::WellSession::wellLoaded, [&] {
         for (int i = 0; i < leanModel.wellCount(); ++i)
             if (leanModel.well(i).loadFraction >= 1.0 && !lean.heldLean(i) &&
                 lean.scene(std::size_t(i))->segmentCount() == 0 &&
-                std::find(endedUndrawn.begin(), endedUndrawn.end(), i) == endedUndrawn.end())
+                std::find(endedUndrawn.begin(), endedUndrawn.end(), i) == endedUndrawn.end()) {
                 endedUndrawn.push_back(i);
+                stateAsItEnded = dock.tree()->topLevelItem(i)->text(app::WellsDock::State);
+            }
     });
     std::vector<std::size_t> segmentsAtTheEnd;
     QObject::connect(&lean, &app::WellSession::allWellsLoaded, [&] {
@@ -269,6 +275,9 @@ TEST_F(LeanFieldTest, AWellLoadedPastTheBudgetIsDrawnOnceFromItsPlanAsTheFieldHe
     ASSERT_TRUE(open(whole, app::LoadOptions{}));
     ASSERT_TRUE(open(lean, app::LoadOptions{}));
     EXPECT_EQ(endedUndrawn, std::vector<int>{2}) << "the third well was drawn by its load";
+    // The wells dock says what is being done to it, then what it holds.
+    EXPECT_EQ(stateAsItEnded, "making lean");
+    EXPECT_EQ(dock.tree()->topLevelItem(2)->text(app::WellsDock::State), "held lean");
     ASSERT_EQ(segmentsAtTheEnd.size(), 3u);
     for (std::size_t i = 0; i < 3; ++i)
         EXPECT_EQ(segmentsAtTheEnd[i], whole.scene(i)->segmentCount()) << "well " << i;
