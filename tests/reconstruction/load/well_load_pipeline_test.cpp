@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <variant>
@@ -46,6 +47,15 @@ std::vector<LoadEvent> drainAll(WellLoadPipeline& pipeline) {
             std::holds_alternative<LoadFailed>(events.back()))
             return events;
     }
+}
+
+// The whole geometry a load sent (LoadStarted), where among its events it came.
+const WellGeometry& geometrySent(const std::vector<LoadEvent>& events) {
+    const auto started = std::find_if(events.begin(), events.end(), [](const LoadEvent& e) {
+        return std::holds_alternative<LoadStarted>(e);
+    });
+    if (started == events.end()) throw std::runtime_error("no LoadStarted among the events");
+    return *std::get<LoadStarted>(*started).geometry;
 }
 
 }  // namespace
@@ -122,10 +132,8 @@ TEST(WellLoadPipelineTest, AWellNotStreamedSendsNoStretchAndTheWholeWellsSegment
     EXPECT_EQ(whole.readFraction(), 1.0);
     // Nothing before the whole geometry; then every segment, in order, then the spans.
     ASSERT_TRUE(std::holds_alternative<LoadStarted>(b.front()));
-    const auto& placed = *std::get<LoadStarted>(b.front()).geometry;
-    const auto& reference = *std::get<LoadStarted>(*std::find_if(a.begin(), a.end(), [](auto& e) {
-                                 return std::holds_alternative<LoadStarted>(e);
-                             })).geometry;
+    const WellGeometry& placed = geometrySent(b);
+    const WellGeometry& reference = geometrySent(a);
     ASSERT_EQ(placed.table().rowCount(), reference.table().rowCount());
     EXPECT_EQ(placed.segmentCount(), reference.segmentCount());
     std::vector<const SegmentMesh*> segments;
@@ -169,10 +177,8 @@ TEST(WellLoadPipelineTest, AWellSentAsGeometryOnlySendsItsWholeGeometryAndNoMesh
     ASSERT_EQ(b.size(), 2u);
     ASSERT_TRUE(std::holds_alternative<LoadStarted>(b.front()));
     ASSERT_TRUE(std::holds_alternative<LoadFinished>(b.back()));
-    const auto& placed = *std::get<LoadStarted>(b.front()).geometry;
-    const auto& reference = *std::get<LoadStarted>(*std::find_if(a.begin(), a.end(), [](auto& e) {
-                                 return std::holds_alternative<LoadStarted>(e);
-                             })).geometry;
+    const WellGeometry& placed = geometrySent(b);
+    const WellGeometry& reference = geometrySent(a);
     ASSERT_EQ(placed.table().rowCount(), reference.table().rowCount());
     EXPECT_EQ(placed.segmentCount(), 60u);
     EXPECT_EQ(std::get<LoadFinished>(b.back()).segments, 60u);
