@@ -546,8 +546,10 @@ void WellSession::startWaitingLoads() {
         well->started = true;
         // A well that starts loading with the field past the budget is made lean as its load
         // ends: it is read whole, and drawn once, from its plan (holdLean), or whole where it
-        // is not made lean (drawWhole); no segment is built to be thrown away.
-        const bool lean = leanDue();
+        // is not made lean (drawWhole); no segment is built to be thrown away. A run of a well
+        // stays whole (mayHoldLean): it streams.
+        const int index = modelIndex(*well);
+        const bool lean = leanDue() && index >= 0 && m_model.well(index).runOf < 0;
         well->drawn = !lean;
         well->pipeline->start(lean ? reconstruction::LoadSends::geometryOnly
                                    : reconstruction::LoadSends::streamed);

@@ -288,6 +288,34 @@ TEST_F(LeanFieldTest, AWellLoadedPastTheBudgetIsDrawnOnceFromItsPlanAsTheFieldHe
     expectSamePictures(whole, lean, 2);
 }
 
+TEST_F(LeanFieldTest, ARunAddedToAFieldPastTheBudgetIsStreamedAndHeldWhole) {
+    // Two wells load; a run of the first waits its turn and starts with the field past the
+    // budget. The runs of one well stay whole, so it is streamed as ever, drawn by its load.
+    app::DeskModel model;
+    app::WellSession session(model, nullptr);
+    session.setFieldRowBudget(20'000);
+    const std::vector<app::WellSource> wells = field();
+    const int first = session.openWell(wells[0], app::LoadOptions{});
+    session.addWell(wells[1], app::LoadOptions{});
+    const int run = session.addRun(wells[2], app::LoadOptions{}, first);
+    // Each load's end says what it drew; one that drew nothing (its geometry only) counts no
+    // triangles.
+    QStringList ends;
+    QObject::connect(&session, &app::WellSession::status, [&](const QString& text) {
+        if (text.contains(" segments, ")) ends << text;
+    });
+    ASSERT_TRUE(settle(session));
+    const int index = model.indexOf(run);
+    ASSERT_GE(index, 0);
+    EXPECT_GE(model.well(index).runOf, 0);
+    ASSERT_GE(ends.size(), 3) << ends.join("; ").toStdString();  // the last said again at the end
+    for (const QString& end : ends)
+        EXPECT_TRUE(end.contains("triangles at full detail")) << end.toStdString();
+    EXPECT_FALSE(session.heldLean(index));
+    ASSERT_NE(model.well(index).analysis, nullptr);
+    EXPECT_EQ(model.well(index).analysis->sections.size(), 30001u);
+}
+
 TEST_F(LeanFieldTest, AWellLoadedPastTheBudgetAndMadeCurrentAsItEndsIsDrawnWholeAndAnalysed) {
     // Well 1 passes the budget as it starts, so it is loaded as its geometry only; made current
     // as its load ends, it is not made lean: it is drawn whole, as the field held whole draws
