@@ -58,6 +58,20 @@ const WellGeometry& geometrySent(const std::vector<LoadEvent>& events) {
     return *std::get<LoadStarted>(*started).geometry;
 }
 
+// Every event of the test well loaded as `sends` says, and how much of it was read by the end.
+struct Sent {
+    std::vector<LoadEvent> events;
+    double readFraction = 0.0;
+};
+Sent loadSending(LoadSends sends) {
+    WellLoadPipeline pipeline(WellSource{wellFile(), {}, {}, {}}, LoadOptions{}, Wellhead{});
+    pipeline.start(sends);
+    Sent sent;
+    sent.events = drainAll(pipeline);
+    sent.readFraction = pipeline.readFraction();
+    return sent;
+}
+
 }  // namespace
 
 TEST(WellLoadPipelineTest, StreamsStretchesAndTheirSegmentsWhileReadingThenTheWholeWell) {
@@ -124,12 +138,10 @@ TEST(WellLoadPipelineTest, StreamsStretchesAndTheirSegmentsWhileReadingThenTheWh
 }
 
 TEST(WellLoadPipelineTest, AWellNotStreamedSendsNoStretchAndTheWholeWellsSegmentsAfterIt) {
-    WellLoadPipeline streamed(WellSource{wellFile(), {}, {}, {}}, LoadOptions{}, Wellhead{});
-    WellLoadPipeline whole(WellSource{wellFile(), {}, {}, {}}, LoadOptions{}, Wellhead{});
-    streamed.start();
-    whole.start(LoadSends::whole);
-    const std::vector<LoadEvent> a = drainAll(streamed), b = drainAll(whole);
-    EXPECT_EQ(whole.readFraction(), 1.0);
+    const Sent streamed = loadSending(LoadSends::streamed), whole = loadSending(LoadSends::whole);
+    const std::vector<LoadEvent>& a = streamed.events;
+    const std::vector<LoadEvent>& b = whole.events;
+    EXPECT_EQ(whole.readFraction, 1.0);
     // Nothing before the whole geometry; then every segment, in order, then the spans.
     ASSERT_TRUE(std::holds_alternative<LoadStarted>(b.front()));
     const WellGeometry& placed = geometrySent(b);
@@ -167,12 +179,11 @@ TEST(WellLoadPipelineTest, AWellNotStreamedSendsNoStretchAndTheWholeWellsSegment
 }
 
 TEST(WellLoadPipelineTest, AWellSentAsGeometryOnlySendsItsWholeGeometryAndNoMesh) {
-    WellLoadPipeline streamed(WellSource{wellFile(), {}, {}, {}}, LoadOptions{}, Wellhead{});
-    WellLoadPipeline bare(WellSource{wellFile(), {}, {}, {}}, LoadOptions{}, Wellhead{});
-    streamed.start();
-    bare.start(LoadSends::geometryOnly);
-    const std::vector<LoadEvent> a = drainAll(streamed), b = drainAll(bare);
-    EXPECT_EQ(bare.readFraction(), 1.0);
+    const Sent streamed = loadSending(LoadSends::streamed),
+               bare = loadSending(LoadSends::geometryOnly);
+    const std::vector<LoadEvent>& a = streamed.events;
+    const std::vector<LoadEvent>& b = bare.events;
+    EXPECT_EQ(bare.readFraction, 1.0);
     // The whole geometry, then the end counting the well's segments: nothing between.
     ASSERT_EQ(b.size(), 2u);
     ASSERT_TRUE(std::holds_alternative<LoadStarted>(b.front()));
