@@ -59,13 +59,19 @@ void WellView::show(SoSeparator* annotations, const reconstruction::WellGeometry
     m_annotations = annotations;
 }
 
+void WellView::replaceScene(std::unique_ptr<WellScene> scene,
+                            const reconstruction::WellGeometry& geometry,
+                            double radialExaggeration) {
+    m_shown->replaceChild(m_scene->root(), scene->root());
+    m_scene = std::move(scene);
+    annotate(geometry, radialExaggeration);  // the tick marks stand off the wall as now drawn
+}
+
 void WellView::rebuild(const reconstruction::WellGeometry& geometry, double radialExaggeration) {
     assertMainThread("WellView");
     auto scene = std::make_unique<WellScene>();
     scene->buildAll(geometry, m_firstCoarseLevel);
-    m_shown->replaceChild(m_scene->root(), scene->root());
-    m_scene = std::move(scene);
-    annotate(geometry, radialExaggeration);  // the tick marks stand off the wall as now drawn
+    replaceScene(std::move(scene), geometry, radialExaggeration);
 }
 
 void WellView::rebuild(const reconstruction::WellGeometry& geometry,
@@ -73,9 +79,7 @@ void WellView::rebuild(const reconstruction::WellGeometry& geometry,
     assertMainThread("WellView");
     auto scene = std::make_unique<WellScene>();
     scene->attachAll(geometry, meshes);
-    m_shown->replaceChild(m_scene->root(), scene->root());
-    m_scene = std::move(scene);
-    annotate(geometry, radialExaggeration);
+    replaceScene(std::move(scene), geometry, radialExaggeration);
 }
 
 void WellView::rebuild(const reconstruction::WellGeometry& geometry, PlannedWell planned,
@@ -83,9 +87,7 @@ void WellView::rebuild(const reconstruction::WellGeometry& geometry, PlannedWell
     assertMainThread("WellView");
     auto scene = std::make_unique<WellScene>();
     scene->attachAll(geometry, planned.spans, std::move(planned.waiting));
-    m_shown->replaceChild(m_scene->root(), scene->root());
-    m_scene = std::move(scene);
-    annotate(geometry, radialExaggeration);
+    replaceScene(std::move(scene), geometry, radialExaggeration);
 }
 
 }  // namespace caliper3d::scenegraph

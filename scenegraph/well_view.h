@@ -74,6 +74,9 @@ public:
     int firstCoarseLevel() const { return m_firstCoarseLevel; }
 
 private:
+    // Shows `scene` in place of the scene shown, and its annotations for `geometry`.
+    void replaceScene(std::unique_ptr<WellScene> scene,
+                      const reconstruction::WellGeometry& geometry, double radialExaggeration);
     // Shows `annotations` (the well's, made for `radialExaggeration`) with the picks.
     void show(SoSeparator* annotations, const reconstruction::WellGeometry& geometry,
               double radialExaggeration);

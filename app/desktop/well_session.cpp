@@ -1109,12 +1109,19 @@ void WellSession::drawWhole(Well& well) {
     const int index = modelIndex(well);
     if (index < 0 || !well.view) return;
     const auto& geometry = m_model.well(index).geometry;
-    if (geometry) {
-        m_detail->removeWell(well.view->scene());  // the scene goes
-        well.view->rebuild(*geometry, geometry->options().radialExaggeration);
-        ++m_annotationGeneration;
-        setDetail(well);
-    }
+    if (geometry)
+        drawNow(well,
+                [&] { well.view->rebuild(*geometry, geometry->options().radialExaggeration); });
+    else
+        endLoadWhenDone();
+}
+
+void WellSession::drawNow(Well& well, const std::function<void()>& rebuild) {
+    m_detail->removeWell(well.view->scene());  // the scene goes
+    rebuild();
+    ++m_annotationGeneration;
+    well.drawn = true;
+    setDetail(well);
     endLoadWhenDone();
 }
 
@@ -1206,14 +1213,11 @@ void WellSession::holdLean(Well& well, std::shared_ptr<const LeanForm> form) {
         // Its load drew nothing: drawn once, here, from its plan and the rows it holds, its
         // segments made when near (a few milliseconds a well), as render draws a field held
         // lean.
-        m_detail->removeWell(well.view->scene());  // the scene goes
-        well.view->rebuild(*sample,
-                           scenegraph::planWaitingWell(sample, well.lean->plan, well.lean->rows, 1),
-                           sample->options().radialExaggeration);
-        ++m_annotationGeneration;
-        well.drawn = true;
-        setDetail(well);
-        endLoadWhenDone();
+        drawNow(well, [&] {
+            well.view->rebuild(
+                *sample, scenegraph::planWaitingWell(sample, well.lean->plan, well.lean->rows, 1),
+                sample->options().radialExaggeration);
+        });
         return;
     }
     setDetail(well);

@@ -260,6 +260,9 @@ private:
     // Draws a well whose load drew nothing (Well::drawn) from its whole geometry; ends the
     // load where it was the last thing waited for.
     void drawWhole(Well& well);
+    // Draws a well its load left undrawn by `rebuild` (its view's scene replaced: the detail
+    // loader forgets the old one), then ends the load where it was the last thing waited for.
+    void drawNow(Well& well, const std::function<void()>& rebuild);
     // Analyses a well held whole that has no analysis, nor one under way (one not made lean).
     void analyseIfWhole(Well& well);
     // Starts making lean every loaded well that is held whole and may be held lean (once its
