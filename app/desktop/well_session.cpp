@@ -1191,7 +1191,9 @@ void WellSession::startLeanForm(Well& well) {
                 // where its load drew nothing, and analysed.
                 if (!w->leanJobRunning) drawWhole(*w);
                 analyseIfWhole(*w);
-                if (leanJobsRunning() == 0) giveBackFreedMemory();
+                // Not while the field loads: the next wells' reads would fault in fresh pages
+                // for what the trim gave back (docs/benchmarks.md, "The window's field load").
+                if (leanJobsRunning() == 0 && !loading()) giveBackFreedMemory();
             };
         });
     edit(well, [](DeskWell& r) { r.makingLean = true; });  // after `record` is read
