@@ -5,6 +5,13 @@
 
 namespace caliper3d::app {
 
+double smallestBitSize_mm(const io::SectionTable& table) {
+    double smallest = NAN;
+    for (const double b : table.bitSize_mm)
+        if (std::isfinite(b) && !(b >= smallest)) smallest = b;
+    return smallest;
+}
+
 const DeskWell* DeskModel::current() const {
     return m_well >= 0 && m_well < wellCount() ? &m_wells[static_cast<std::size_t>(m_well)]
                                                : nullptr;

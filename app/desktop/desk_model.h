@@ -36,6 +36,11 @@ struct DeskWell {
     std::size_t wholeRows = 0;
     // Its lean form is being made on a worker (WellSession): it is not analysed meanwhile.
     bool makingLean = false;
+    // The smallest bit size among every row of the log (NaN: none in the log), taken once from
+    // the whole geometry as it is placed (WellSession), so that a well held lean still says
+    // the whole log's; unset where no session took it (the Wells dock then takes it from
+    // `geometry`).
+    std::optional<double> smallestBit_mm;
     io::Diagnostics diagnostics;  // reader, survey and geometry warnings
     std::vector<io::Pick> picks;  // image-log picks (--picks), shown in the 3D, rose and log track
     QString error;                // why the load failed (empty when it did not)
@@ -53,6 +58,9 @@ struct DeskWell {
     std::optional<reconstruction::DepthMapping> mapping;
     QString matchError;
 };
+
+// The smallest finite bit size among the table's rows; NaN where it has none.
+double smallestBitSize_mm(const io::SectionTable& table);
 
 // The window's shared state: the wells, and the one current well, depth and angle that
 // every view follows (the 3D camera, the section inspector, the log track, the unrolled

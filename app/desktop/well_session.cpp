@@ -377,6 +377,9 @@ scenegraph::SegmentFeeder::Callbacks WellSession::feederCallbacks(Well& w,
             if (!g->table().wellName.empty())
                 record.name = QString::fromStdString(g->table().wellName);
             record.geometry = g;
+            // Once a load, not each time the dock shows the well (its row is filled on every
+            // step of its load), and from every row, which a well held lean no longer has.
+            record.smallestBit_mm = smallestBitSize_mm(g->table());
         });
         tickCurrentWell();
     };

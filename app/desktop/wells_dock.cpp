@@ -153,9 +153,7 @@ void WellsDock::fill(QTreeWidgetItem* item, int well) {
     QString bit = "-", units = "-", rows = "-", depths = "-";
     if (w.geometry) {
         const io::SectionTable& t = w.geometry->table();
-        double smallest = NAN;
-        for (double b : t.bitSize_mm)
-            if (std::isfinite(b) && !(b >= smallest)) smallest = b;
+        const double smallest = w.smallestBit_mm ? *w.smallestBit_mm : smallestBitSize_mm(t);
         bit =
             std::isfinite(smallest)
                 ? QString("%1 mm (%2 in)").arg(smallest, 0, 'f', 1).arg(smallest / 25.4, 0, 'f', 3)

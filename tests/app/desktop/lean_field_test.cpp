@@ -22,6 +22,8 @@
 #include "app/desktop/well_session.h"
 #include "app/desktop/wells_dock.h"
 #include "desktop_test_support.h"
+#include "io/column_text_writer.h"
+#include "reconstruction/synthetic/synthetic_well.h"
 #include "reconstruction/well_geometry.h"
 #include "scenegraph/camera_setup.h"
 #include "scenegraph/node_ref.h"
@@ -220,6 +222,35 @@ TEST_F(LeanFieldTest, AWellLoadedPastTheBudgetIsMadeLeanWithoutBeingAnalysed) {
         EXPECT_EQ(model.well(w).wholeRows, 30001u) << "well " << w;
     }
     EXPECT_EQ(analysed.count(), 0) << "a well made lean was analysed first";
+}
+
+TEST_F(LeanFieldTest, AWellHeldLeanShowsTheSmallestBitSizeOfItsWholeLog) {
+    // One section of the log on a smaller bit (as where a bit was changed for a few
+    // centimetres): the Wells dock says it for every well, held lean or not, though the
+    // sample a well is held by does not hold that row.
+    io::SectionTable table =
+        reconstruction::makeSyntheticWell(reconstruction::syntheticProfile("example", 300.0, 0.01));
+    ASSERT_EQ(table.bitSize_mm.size(), table.rowCount());
+    const double usual = table.bitSize_mm.front();
+    table.bitSize_mm[1] = 150.0;
+    const auto log = test::scratch("lean_field_bit_step.txt");
+    io::writeColumnTextFile(log.string(), table);
+
+    app::DeskModel model;
+    app::WellSession session(model, nullptr);
+    app::WellsDock dock(model);
+    session.setFieldRowBudget(40'000);
+    ASSERT_TRUE(open(session, app::LoadOptions{}, field(log)));
+    ASSERT_TRUE(session.heldLean(1));
+    // What the well is held by no longer has the row on the smaller bit.
+    EXPECT_DOUBLE_EQ(app::smallestBitSize_mm(model.well(1).geometry->table()), usual);
+    for (int w = 0; w < 3; ++w)
+        EXPECT_TRUE(dock.tree()
+                        ->topLevelItem(w)
+                        ->text(app::WellsDock::BitSize)
+                        .startsWith("150.0 mm (5.906 in)"))
+            << "well " << w << ": "
+            << dock.tree()->topLevelItem(w)->text(app::WellsDock::BitSize).toStdString();
 }
 
 TEST_F(LeanFieldTest, AWellMadeCurrentWhileItIsMadeLeanStaysWholeAndIsAnalysed) {
