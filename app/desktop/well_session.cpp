@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <stdexcept>
 #include <thread>
@@ -344,6 +345,13 @@ bool WellSession::allAnalysed() const {
 }
 
 namespace {
+// The size of the file at `path`; 0 where it cannot be told.
+std::uintmax_t fileBytes(const std::string& path) {
+    std::error_code error;
+    const std::uintmax_t bytes = std::filesystem::file_size(path, error);
+    return error ? 0 : bytes;
+}
+
 // A well's image-log picks (a small file, read where the markers are made); a file that
 // cannot be read is a warning of the well, not a failed load.
 io::PickFile picksOf(const std::string& path) {
@@ -547,12 +555,13 @@ void WellSession::startWaitingLoads() {
         if (running >= loadsAtOnce()) return;
         if (well->started || well->done || !well->pipeline) continue;
         well->started = true;
-        // A well that starts loading with the field past the budget is made lean as its load
-        // ends: it is read whole, and drawn once, from its plan (holdLean), or whole where it
-        // is not made lean (drawWhole); no segment is built to be thrown away. A run of a well
-        // stays whole (mayHoldLean): it streams.
+        // A well that starts loading with the field past the budget, or bound to pass it once
+        // every well is read, is made lean as its load ends: it is read whole, and drawn once, from
+        // its plan (holdLean), or whole where it is not made lean (drawWhole); no segment is built
+        // to be thrown away. A run of a well stays whole (mayHoldLean): it streams.
         const int index = modelIndex(*well);
-        const bool lean = leanDue() && index >= 0 && m_model.well(index).runOf < 0;
+        const bool lean =
+            (leanDue() || leanExpected()) && index >= 0 && m_model.well(index).runOf < 0;
         well->drawn = !lean;
         well->pipeline->start(lean ? reconstruction::LoadSends::geometryOnly
                                    : reconstruction::LoadSends::streamed);
@@ -1087,6 +1096,35 @@ bool WellSession::leanDue() const {
     return rows > m_rowBudget;
 }
 
+bool WellSession::leanExpected() const {
+    if (m_rowBudget == 0 || m_wells.size() < 2 ||
+        m_look.colour.quantity == reconstruction::kChangeQuantity)
+        return false;
+    // The rows and file bytes of the wells placed, and the bytes of the files of those not yet
+    // placed.
+    std::size_t rows = 0;
+    std::uintmax_t placedBytes = 0, waitingBytes = 0;
+    for (const auto& well : m_wells) {
+        const int index = well ? modelIndex(*well) : -1;
+        if (index < 0) continue;
+        const DeskWell& record = m_model.well(index);
+        if (well->lean || record.geometry) {
+            rows += well->lean ? well->lean->wholeRows : record.geometry->table().rowCount();
+            placedBytes += fileBytes(record.source.path);
+        } else if (record.error.isEmpty()) {
+            waitingBytes += fileBytes(record.source.path);
+        }
+    }
+    if (rows == 0 || placedBytes == 0) return false;  // nothing to go by yet
+    // The waiting files' rows at the bytes a row took in the files placed, halved: a log of
+    // the field may write twice the bytes a row (more curves, wider numbers). Where that
+    // still overestimates, the wells loaded as their geometry only are drawn whole as their
+    // loads end (drawWhole), as a well no longer due to be lean is.
+    const double perByte = static_cast<double>(rows) / static_cast<double>(placedBytes);
+    return static_cast<double>(rows) + 0.5 * perByte * static_cast<double>(waitingBytes) >
+           static_cast<double>(m_rowBudget);
+}
+
 bool WellSession::mayHoldLean(const Well& well) const {
     const int index = modelIndex(well);
     if (index < 0 || index == m_model.currentWell() || well.lean || well.leanJobRunning ||
@@ -1100,6 +1138,9 @@ bool WellSession::mayHoldLean(const Well& well) const {
 void WellSession::analyseOrHoldLean(Well& well) {
     if (mayHoldLean(well) && leanDue()) {
         startLeanForm(well);
+        // And the wells loaded and analysed whole before this one took the field past the
+        // budget: no analysis ending after it would make them lean.
+        holdLeanWhereDue();
     } else {
         drawWhole(well);
         analyse(well);

@@ -251,6 +251,9 @@ private:
 
     // A field held lean (setFieldRowBudget).
     bool leanDue() const;  // the wells hold more rows than the budget
+    // They will once every well is read, by the wells placed and the files of those not yet
+    // placed (WellSession::startWaitingLoads).
+    bool leanExpected() const;
     // Whether a loaded well held whole may be made lean: not the current well, not a run of one
     // well, not being made lean and not refused.
     bool mayHoldLean(const Well& well) const;

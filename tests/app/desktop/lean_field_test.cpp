@@ -319,6 +319,34 @@ TEST_F(LeanFieldTest, AWellLoadedPastTheBudgetIsDrawnOnceFromItsPlanAsTheFieldHe
     expectSamePictures(whole, lean, 2);
 }
 
+TEST_F(LeanFieldTest, AWellStartedWhileTheFieldIsBoundToPassTheBudgetIsLoadedAsItsGeometryOnly) {
+    // Four wells of 30,001 rows and a budget of 65,000: as the third starts, the wells placed
+    // hold at most 60,002 rows, under the budget, but the files still to be read are bound to
+    // take the field past it. The third is loaded as its geometry only, as the fourth is, and
+    // not streamed to be made lean afterwards.
+    std::vector<app::WellSource> wells = field();
+    wells.push_back({wells[0].path, {}, reconstruction::Wellhead{90.0, 0.0, 0.0}, {}});
+    app::DeskModel model;
+    app::WellSession session(model, nullptr);
+    session.setFieldRowBudget(65'000);
+    std::vector<int> endedUndrawn;
+    QObject::connect(&session, &app::WellSession::wellLoaded, [&] {
+        for (int i = 0; i < model.wellCount(); ++i)
+            if (model.well(i).loadFraction >= 1.0 && !session.heldLean(i) &&
+                session.scene(std::size_t(i))->segmentCount() == 0 &&
+                std::find(endedUndrawn.begin(), endedUndrawn.end(), i) == endedUndrawn.end())
+                endedUndrawn.push_back(i);
+    });
+    ASSERT_TRUE(open(session, app::LoadOptions{}, wells));
+    std::sort(endedUndrawn.begin(), endedUndrawn.end());
+    EXPECT_EQ(endedUndrawn, (std::vector<int>{2, 3})) << "a well was streamed to be made lean";
+    EXPECT_EQ(model.currentWell(), 0);
+    for (int w = 1; w < 4; ++w) {
+        EXPECT_TRUE(session.heldLean(w)) << "well " << w;
+        EXPECT_GT(session.scene(std::size_t(w))->segmentCount(), 0u) << "well " << w;
+    }
+}
+
 TEST_F(LeanFieldTest, ARunAddedToAFieldPastTheBudgetIsStreamedAndHeldWhole) {
     // Two wells load; a run of the first waits its turn and starts with the field past the
     // budget. The runs of one well stay whole, so it is streamed as ever, drawn by its load.
