@@ -68,9 +68,25 @@ void planFieldWell(benchmark::State& state) {
         static_cast<double>(table->rowCount()) * state.iterations(), benchmark::Counter::kIsRate);
 }
 
+// The same well placed (the minimum-curvature path, each row's orientation reading and the
+// dogleg severity over a 30 m course) on one thread, as a field's wells are read two at once.
+void placeFieldWell(benchmark::State& state) {
+    static const auto table = std::make_shared<const io::SectionTable>(
+        makeSyntheticWell(syntheticProfile("example", 1000.0, 0.0025)));
+    GeometryOptions options;
+    options.threads = 1;
+    for (auto _ : state) {
+        const WellGeometry geometry(table, options);
+        benchmark::DoNotOptimize(geometry.path().data());
+    }
+    state.counters["sections/s"] = benchmark::Counter(
+        static_cast<double>(table->rowCount()) * state.iterations(), benchmark::Counter::kIsRate);
+}
+
 }  // namespace
 
 BENCHMARK(planFieldWell)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(10);
+BENCHMARK(placeFieldWell)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(10);
 BENCHMARK(pathSplineAnalysis)
     ->Arg(1)
     ->Arg(2)

@@ -17,56 +17,56 @@ glm::dvec3 tangent(const PathPoint& p) {
     return {std::sin(inc) * std::cos(azi), std::sin(inc) * std::sin(azi), std::cos(inc)};
 }
 
-// Prefix sums of the unit tangents and of the depths: the mean direction over an interval of
-// md, and the mean depth it belongs to.
-class MeanDirection {
+// The mean hole direction (and depth) of the points with md in a window that only moves down
+// the hole: each point is added to running sums as the window's bottom passes it and taken away
+// as its top does, so a mean costs what the points entering and leaving cost. (Prefix sums of
+// the tangents and depths did the same with two arrays as long as the path written and read
+// again: on a log of a million rows that memory took more time than the rest of the loop.)
+class SlidingMean {
 public:
     // `tangents`: each point's unit tangent, or null to take it from the point's angles.
-    MeanDirection(const std::vector<PathPoint>& path, const glm::dvec3* tangents) : m_path(path) {
-        m_sum.reserve(path.size() + 1);
-        m_sum.emplace_back(0.0);
-        m_mdSum.reserve(path.size() + 1);
-        m_mdSum.push_back(0.0);
-        for (std::size_t i = 0; i < path.size(); ++i) {
-            m_sum.push_back(m_sum.back() + (tangents ? tangents[i] : tangent(path[i])));
-            m_mdSum.push_back(m_mdSum.back() + path[i].md);
-        }
-    }
+    SlidingMean(const std::vector<PathPoint>& path, const glm::dvec3* tangents)
+        : m_path(path), m_tangents(tangents) {}
 
     struct Mean {
         glm::dvec3 direction;
         double md;
     };
 
-    // The points with md in [from, to] as rows [lo, hi): what std::lower_bound(from) and
-    // std::upper_bound(to) give, found by stepping forward from the last call's rows, since the
-    // course's ends only move down the hole (two binary searches a point cost more than the
-    // rest of the loop on a log of a million rows).
-    struct Window {
-        std::size_t lo = 0, hi = 0;
-    };
-
     // Mean tangent (and depth) of the points with md in [from, to]; the nearest point's when
-    // none is. `from` and `to` never decrease from one call with `window` to the next.
-    Mean operator()(Window& window, double from, double to) const {
+    // none is. `from` and `to` never decrease from one call to the next.
+    Mean operator()(double from, double to) {
         const std::size_t n = m_path.size();
-        while (window.lo < n && m_path[window.lo].md < from) ++window.lo;
-        while (window.hi < n && !(to < m_path[window.hi].md)) ++window.hi;
-        const std::size_t a = window.lo, b = window.hi;
-        if (a < b) {
-            const glm::dvec3 s = m_sum[b] - m_sum[a];
-            const double length = glm::length(s);
-            if (length > 0.0)
-                return {s / length, (m_mdSum[b] - m_mdSum[a]) / static_cast<double>(b - a)};
+        // In first, then out: a point below `from` is at most `to`, so it was added.
+        for (; m_hi < n && !(to < m_path[m_hi].md); ++m_hi) {
+            m_sum += tangentOf(m_hi);
+            m_mdSum += m_path[m_hi].md;
         }
-        const PathPoint& near = m_path[a == n ? a - 1 : a];
+        for (; m_lo < m_hi && m_path[m_lo].md < from; ++m_lo) {
+            m_sum -= tangentOf(m_lo);
+            m_mdSum -= m_path[m_lo].md;
+        }
+        if (m_lo == m_hi) {  // empty: the sums start again from nothing, with no rounding left
+            m_sum = glm::dvec3(0.0);
+            m_mdSum = 0.0;
+        } else {
+            const double length = glm::length(m_sum);
+            if (length > 0.0) return {m_sum / length, m_mdSum / static_cast<double>(m_hi - m_lo)};
+        }
+        const PathPoint& near = m_path[m_lo == n ? m_lo - 1 : m_lo];
         return {tangent(near), near.md};
     }
 
 private:
+    glm::dvec3 tangentOf(std::size_t i) const {
+        return m_tangents ? m_tangents[i] : tangent(m_path[i]);
+    }
+
     const std::vector<PathPoint>& m_path;
-    std::vector<glm::dvec3> m_sum;
-    std::vector<double> m_mdSum;
+    const glm::dvec3* m_tangents;
+    std::size_t m_lo = 0, m_hi = 0;  // the points in the window: [m_lo, m_hi)
+    glm::dvec3 m_sum{0.0};
+    double m_mdSum = 0.0;
 };
 
 }  // namespace
@@ -76,15 +76,14 @@ namespace {
 void setDls(std::vector<PathPoint>& path, const glm::dvec3* tangents, double course_m,
             double window_m) {
     if (path.size() < 2 || !(path.back().md - path.front().md >= 1.0)) return;
-    const MeanDirection mean(path, tangents);
+    SlidingMean upper(path, tangents), lower(path, tangents);
     const double top = path.front().md, bottom = path.back().md;
-    MeanDirection::Window upper, lower;
     for (PathPoint& p : path) {
         const double a = std::max(top, p.md - course_m / 2.0);
         const double b = std::min(bottom, p.md + course_m / 2.0);
         // Each end's direction belongs to the mean depth of the points averaged there.
-        const MeanDirection::Mean ta = mean(upper, a - window_m, a + window_m);
-        const MeanDirection::Mean tb = mean(lower, b - window_m, b + window_m);
+        const SlidingMean::Mean ta = upper(a - window_m, a + window_m);
+        const SlidingMean::Mean tb = lower(b - window_m, b + window_m);
         const double dogleg =
             glm::degrees(std::atan2(glm::length(glm::cross(ta.direction, tb.direction)),
                                     glm::dot(ta.direction, tb.direction)));

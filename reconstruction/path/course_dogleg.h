@@ -19,7 +19,8 @@ constexpr double kDlsDirectionWindow_m = 1.5;
 // (cut at the path's ends): the angle between the mean hole directions at the course's two
 // ends, each averaged over `window_m` either side, per 30 m of the measured depth between
 // them. Points must be in increasing md; a path shorter than a metre keeps its values.
-// By hand: a prefix sum of unit tangents gives each mean direction in constant time.
+// By hand: running sums of the unit tangents in a window sliding down the hole give each mean
+// direction for the points entering and leaving it.
 void setCourseLengthDls(std::vector<PathPoint>& path, double course_m = kDlsCourseLength_m,
                         double window_m = kDlsDirectionWindow_m);
 // The same, with each point's unit tangent (north, east, down) given, as placing the path took

@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/geometric.hpp>
+
 #include "reconstruction/analysis/well_analysis.h"
 #include "reconstruction/load/well_input.h"
 #include "reconstruction/path/hole_direction.h"
@@ -115,4 +117,59 @@ TEST(CourseDoglegTest, StarLogReportsAStraightHole) {
     double worst = 0.0;
     for (const PathPoint& p : geometry.path()) worst = std::max(worst, p.dls_degPer30m);
     EXPECT_LT(worst, 1.0);
+}
+
+// Every severity is the one its definition gives, each end's direction the mean of the points
+// within the window of it taken afresh (the nearest point's where none is): over a turning,
+// building path with a 5 m stretch of no points (both ends' windows empty there) and points
+// of uneven spacing.
+TEST(CourseDoglegTest, EverySeverityIsTheMeanDirectionsTakenAfresh) {
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> step(0.01, 0.2);
+    std::vector<PathPoint> path;
+    for (double md = 50.0; md < 400.0; md += step(random)) {
+        if (md > 200.0 && md < 205.0) continue;
+        PathPoint p;
+        p.md = md;
+        p.inc_deg = 10.0 + md / 12.0;
+        p.azi_deg = 40.0 + 20.0 * std::sin(md / 25.0);
+        path.push_back(p);
+    }
+    const auto tangentOf = [](const PathPoint& p) {
+        const double inc = p.inc_deg * M_PI / 180.0, azi = p.azi_deg * M_PI / 180.0;
+        return glm::dvec3(std::sin(inc) * std::cos(azi), std::sin(inc) * std::sin(azi),
+                          std::cos(inc));
+    };
+    // The mean direction and depth of the points within `window` of `md`.
+    const auto mean = [&](double md, double window) {
+        glm::dvec3 sum(0.0);
+        double depth = 0.0;
+        int count = 0;
+        for (const PathPoint& p : path)
+            if (p.md >= md - window && p.md <= md + window) {
+                sum += tangentOf(p);
+                depth += p.md;
+                ++count;
+            }
+        if (count > 0) return std::make_pair(glm::normalize(sum), depth / count);
+        const auto near =
+            std::lower_bound(path.begin(), path.end(), md - window,
+                             [](const PathPoint& p, double value) { return p.md < value; });
+        const PathPoint& p = near == path.end() ? path.back() : *near;
+        return std::make_pair(tangentOf(p), p.md);
+    };
+    std::vector<PathPoint> computed = path;
+    setCourseLengthDls(computed, 30.0, 1.5);
+    int emptyWindows = 0;
+    for (std::size_t i = 0; i < path.size(); ++i) {
+        const double a = std::max(path.front().md, path[i].md - 15.0);
+        const double b = std::min(path.back().md, path[i].md + 15.0);
+        const auto [ta, mdA] = mean(a, 1.5);
+        const auto [tb, mdB] = mean(b, 1.5);
+        emptyWindows += (a > 201.5 && a < 203.5) || (b > 201.5 && b < 203.5);
+        const double dogleg =
+            std::atan2(glm::length(glm::cross(ta, tb)), glm::dot(ta, tb)) * 180.0 / M_PI;
+        EXPECT_NEAR(computed[i].dls_degPer30m, dogleg * 30.0 / (mdB - mdA), 1e-9) << path[i].md;
+    }
+    EXPECT_GT(emptyWindows, 20);
 }
