@@ -111,10 +111,12 @@ void padDeviations(const WellGeometry& g, const std::vector<std::size_t>& candid
                 // widened by far more than rounding can take from it, so a row is passed over
                 // only where its distance, as computed below, could not raise any F's worst:
                 // the worst at one F is the same whichever other factors are listed.
+                // (Every factor, with no early way out: most rows beat none, and the loop
+                // without a branch is taken two or four factors at once.)
                 bool beats = false;
-                for (std::size_t f = 0; f < fs.size() && !beats; ++f) {
+                for (std::size_t f = 0; f < fs.size(); ++f) {
                     const double bound = (centroidDistance + fs[f] * shape) * (1.0 + 1e-9);
-                    beats = bound * bound > worst2[f];
+                    beats |= bound * bound > worst2[f];
                 }
                 if (!beats) continue;
                 const double cc = glm::dot(dc, dc);
@@ -176,7 +178,11 @@ SpanPlan planSpan(const WellGeometry& g, int depth, std::size_t index,
             plan.maxRadius_mm = std::max(plan.maxRadius_mm, child.maxRadius_mm);
         }
     }
-    std::vector<double> values(candidates.size() * knots, 0.0);
+    // The candidates' knots, measured rows only (nothing reads an unmeasured row's): a buffer
+    // of the thread's, not a fresh one cleared for each span.
+    thread_local std::vector<double> scratch;
+    if (scratch.size() < candidates.size() * knots) scratch.resize(candidates.size() * knots);
+    std::vector<double>& values = scratch;
     for (std::size_t c = 0; c < candidates.size(); ++c)
         if (g.measured(candidates[c])) {
             g.sectionKnots(candidates[c], values.data() + c * knots);
@@ -201,20 +207,30 @@ SpanPlan planSpan(const WellGeometry& g, int depth, std::size_t index,
     plan.padCentroid_mm += childCentroid;
     plan.padShape_mm += childShape;
 
-    // How far the straight path between kept rows strays from the candidates' centres.
-    std::size_t k = 0;
-    for (const std::size_t candidate : candidates) {
-        while (k + 1 < plan.rows.size() && plan.rows[k + 1] < candidate) ++k;
-        if (k + 1 >= plan.rows.size()) break;
-        plan.centreDeviation_m = std::max(
-            plan.centreDeviation_m, distanceToChord(g.centre(candidate), g.centre(plan.rows[k]),
-                                                    g.centre(plan.rows[k + 1])));
-    }
+    // How far the straight path between kept rows strays from the candidates' centres, and
+    // how far the candidates reach from the span's middle: each centre taken once.
     const glm::dvec3 a = toScene(g.centre(first)), b = toScene(g.centre(last));
-    const glm::dvec3 centre = (a + b) / 2.0;
+    const glm::dvec3 middle = (a + b) / 2.0;
     plan.reach_m = glm::length(b - a) / 2.0;
-    for (std::size_t r : candidates)
-        plan.reach_m = std::max(plan.reach_m, glm::length(toScene(g.centre(r)) - centre));
+    const std::size_t kept = plan.rows.size();
+    std::size_t k = 0;  // the chord from kept row k to k + 1
+    Ned from(0.0), to(0.0);
+    if (kept >= 2) {
+        from = g.centre(plan.rows[0]);
+        to = g.centre(plan.rows[1]);
+    }
+    for (const std::size_t candidate : candidates) {
+        const Ned c = g.centre(candidate);
+        plan.reach_m = std::max(plan.reach_m, glm::length(toScene(c) - middle));
+        while (k + 1 < kept && plan.rows[k + 1] < candidate) {
+            if (++k + 1 < kept) {
+                from = to;
+                to = g.centre(plan.rows[k + 1]);
+            }
+        }
+        if (k + 1 < kept)
+            plan.centreDeviation_m = std::max(plan.centreDeviation_m, distanceToChord(c, from, to));
+    }
     return plan;
 }
 

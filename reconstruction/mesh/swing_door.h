@@ -49,9 +49,12 @@ std::vector<std::size_t> swingDoor(const WellGeometry& g, std::size_t count, Row
                 break;
             }
             // c may end the run when the straight line to it stays inside every corridor.
+            // (Slopes times 1/dd, not divided by dd: three divisions a knot were most of a
+            // field's planning; the corridors move by a rounding at most.)
+            const double perMetre = 1.0 / dd;
             bool fits = true;
             for (std::size_t k = 0; k < knots && fits; ++k) {
-                const double slope = (value(c, k) - value(anchor, k)) / dd;
+                const double slope = (value(c, k) - value(anchor, k)) * perMetre;
                 fits = slope >= lo[k] && slope <= hi[k];
             }
             if (!fits) break;
@@ -59,8 +62,10 @@ std::vector<std::size_t> swingDoor(const WellGeometry& g, std::size_t count, Row
             if (c == last || gapRow(g, row(c))) break;
             bool open = true;
             for (std::size_t k = 0; k < knots; ++k) {
-                lo[k] = std::max(lo[k], (value(c, k) - level.tolerance_mm - value(anchor, k)) / dd);
-                hi[k] = std::min(hi[k], (value(c, k) + level.tolerance_mm - value(anchor, k)) / dd);
+                lo[k] = std::max(lo[k],
+                                 (value(c, k) - level.tolerance_mm - value(anchor, k)) * perMetre);
+                hi[k] = std::min(hi[k],
+                                 (value(c, k) + level.tolerance_mm - value(anchor, k)) * perMetre);
                 open = open && lo[k] <= hi[k];
             }
             if (!open) break;
