@@ -1079,27 +1079,30 @@ bool WellSession::settled() const {
     return true;
 }
 
+bool WellSession::mayBeLean() const {
+    return m_rowBudget != 0 && m_wells.size() >= 2 &&
+           m_look.colour.quantity != reconstruction::kChangeQuantity;
+}
+
+std::optional<std::size_t> WellSession::placedRows(const Well& well) const {
+    const int index = modelIndex(well);
+    if (index < 0) return std::nullopt;
+    if (well.lean) return well.lean->wholeRows;
+    const auto& geometry = m_model.well(index).geometry;
+    if (geometry) return geometry->table().rowCount();
+    return std::nullopt;
+}
+
 bool WellSession::leanDue() const {
-    if (m_rowBudget == 0 || m_wells.size() < 2 ||
-        m_look.colour.quantity == reconstruction::kChangeQuantity)
-        return false;
+    if (!mayBeLean()) return false;
     std::size_t rows = 0;
-    for (const auto& well : m_wells) {
-        const int index = well ? modelIndex(*well) : -1;
-        if (index < 0) continue;
-        const auto& geometry = m_model.well(index).geometry;
-        if (well->lean)
-            rows += well->lean->wholeRows;
-        else if (geometry)
-            rows += geometry->table().rowCount();
-    }
+    for (const auto& well : m_wells)
+        if (well) rows += placedRows(*well).value_or(0);
     return rows > m_rowBudget;
 }
 
 bool WellSession::leanExpected() const {
-    if (m_rowBudget == 0 || m_wells.size() < 2 ||
-        m_look.colour.quantity == reconstruction::kChangeQuantity)
-        return false;
+    if (!mayBeLean()) return false;
     // The rows and file bytes of the wells placed, and the bytes of the files of those not yet
     // placed.
     std::size_t rows = 0;
@@ -1108,8 +1111,8 @@ bool WellSession::leanExpected() const {
         const int index = well ? modelIndex(*well) : -1;
         if (index < 0) continue;
         const DeskWell& record = m_model.well(index);
-        if (well->lean || record.geometry) {
-            rows += well->lean ? well->lean->wholeRows : record.geometry->table().rowCount();
+        if (const std::optional<std::size_t> placed = placedRows(*well)) {
+            rows += *placed;
             placedBytes += fileBytes(record.source.path);
         } else if (record.error.isEmpty()) {
             waitingBytes += fileBytes(record.source.path);

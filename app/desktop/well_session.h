@@ -250,6 +250,9 @@ private:
                          const std::vector<ColouredWell>& coloured, const QElapsedTimer& clock);
 
     // A field held lean (setFieldRowBudget).
+    bool mayBeLean() const;  // a budget is set, there are wells to hold lean, no change colouring
+    // The rows of a well placed (its whole rows where it is held lean); nullopt while it is not.
+    std::optional<std::size_t> placedRows(const Well& well) const;
     bool leanDue() const;  // the wells hold more rows than the budget
     // They will once every well is read, by the wells placed and the files of those not yet
     // placed (WellSession::startWaitingLoads).
