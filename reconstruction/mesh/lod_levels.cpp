@@ -179,6 +179,8 @@ void extendByLevel(const WellGeometry& g, const std::vector<std::size_t>& rows, 
                      });
 }
 
+}  // namespace
+
 // The unit vectors at `points` equal angles from arm 1 (cos, sin), kept per thread for each
 // count asked: a field's coarse meshes draw millions of rings of a few counts, and the sines
 // and cosines took a fifth of their time.
@@ -195,8 +197,6 @@ const std::vector<glm::dvec2>& unitRing(std::size_t points) {
     }
     return unit;
 }
-
-}  // namespace
 
 void drawnRing(const std::vector<double>& radii_mm, double exaggeration,
                std::vector<glm::dvec2>& out) {
@@ -276,20 +276,27 @@ std::vector<LodLevel> lodPyramid(const GeometryOptions& options) {
 
 namespace {
 
-// The spline knots of every measured row of [first, last], computed once for a segment: its
-// largest radius and every level's decimation read them.
+// The spline knots of every measured row of [first, last], computed once for a segment (or
+// for the span of depth 1 it is in: `shared`, row after row, lod_tree.cpp): its largest radius
+// and every level's decimation read them.
 struct SegmentKnots {
-    SegmentKnots(const WellGeometry& g, std::size_t first_, std::size_t last_)
-        : first(first_),
-          last(last_),
-          knots(static_cast<std::size_t>(g.knotCount())),
-          values((last_ - first_ + 1) * knots) {
-        for (std::size_t r = first; r <= last; ++r)
-            if (g.measured(r)) g.sectionKnots(r, values.data() + (r - first) * knots);
+    SegmentKnots(const WellGeometry& g, std::size_t first_, std::size_t last_,
+                 const double* shared = nullptr)
+        : first(first_), last(last_), knots(static_cast<std::size_t>(g.knotCount())) {
+        if (!shared) {
+            owned.resize((last_ - first_ + 1) * knots);
+            for (std::size_t r = first; r <= last; ++r)
+                if (g.measured(r)) g.sectionKnots(r, owned.data() + (r - first) * knots);
+            shared = owned.data();
+        }
+        values = shared;
     }
+    SegmentKnots(const SegmentKnots&) = delete;
+    SegmentKnots& operator=(const SegmentKnots&) = delete;
     double value(std::size_t row, std::size_t k) const { return values[(row - first) * knots + k]; }
     std::size_t first, last, knots;
-    std::vector<double> values;  // unmeasured rows: zeros, never read
+    const double* values = nullptr;  // unmeasured rows: zeros, never read
+    std::vector<double> owned;
 };
 
 // Rows `level` keeps among [first, last], a range within `segment`'s rows.
@@ -400,7 +407,8 @@ void segmentBounds(SegmentMesh& out, const WellGeometry& g, const std::vector<Lo
 std::pair<double, std::size_t> segmentSize(const WellGeometry& g, const SegmentKnots& knots,
                                            const LodLevel& finest) {
     double maxRadius_mm = 0.0;
-    for (double k : knots.values) maxRadius_mm = std::max(maxRadius_mm, k);
+    const std::size_t count = (knots.last - knots.first + 1) * knots.knots;
+    for (std::size_t i = 0; i < count; ++i) maxRadius_mm = std::max(maxRadius_mm, knots.values[i]);
     std::size_t triangles = 0;
     for (std::size_t r = knots.first; r < knots.last; ++r)
         if (g.measured(r) && g.measured(r + 1))
@@ -418,7 +426,8 @@ std::size_t drawnRow(const std::vector<std::size_t>* wholeRows, std::size_t row)
     return static_cast<std::size_t>(it - wholeRows->begin());
 }
 
-SegmentPlan planSegmentLevels(const WellGeometry& whole, std::size_t segment, int from, int to) {
+SegmentPlan planSegmentLevels(const WellGeometry& whole, std::size_t segment, int from, int to,
+                              const double* knotValues) {
     if (segment >= whole.segmentCount())
         throw std::out_of_range("planSegmentLevels: no segment " + std::to_string(segment));
     const std::vector<LodLevel> pyramid = lodPyramid(whole.options());
@@ -428,7 +437,7 @@ SegmentPlan planSegmentLevels(const WellGeometry& whole, std::size_t segment, in
     plan.index = segment;
     std::tie(plan.firstRow, plan.lastRow) = whole.segmentRows(segment);
     plan.firstLevel = from;
-    const SegmentKnots knots(whole, plan.firstRow, plan.lastRow);
+    const SegmentKnots knots(whole, plan.firstRow, plan.lastRow, knotValues);
     std::tie(plan.maxRadius_mm, plan.fullDetailTriangles) =
         segmentSize(whole, knots, pyramid.front());
     for (int i = from; i < to; ++i)

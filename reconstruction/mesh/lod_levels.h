@@ -64,7 +64,10 @@ struct SegmentPlan {
     std::size_t fullDetailTriangles = 0;
     std::vector<std::vector<std::size_t>> levelRows;  // per level, from firstLevel
 };
-SegmentPlan planSegmentLevels(const WellGeometry& whole, std::size_t segment, int from, int to);
+// `knots`: where given, the knots of the segment's rows, row after row from its first
+// (WellGeometry::sectionKnots; zeros for a row without data), computed once for several plans.
+SegmentPlan planSegmentLevels(const WellGeometry& whole, std::size_t segment, int from, int to,
+                              const double* knots = nullptr);
 // Those levels drawn from `drawn`: the whole well, or a copy holding at least the planned rows
 // and every row without data between them (wholeRows[i] the whole well's row that is drawn's
 // row i; null: drawn is the whole well). The same meshes buildSegmentLevels(whole restyled
@@ -112,6 +115,9 @@ Mesh buildRingMesh(const WellGeometry& geometry, const std::vector<std::size_t>&
 // its area as every level draws it.
 void drawnRing(const std::vector<double>& radii_mm, double exaggeration,
                std::vector<glm::dvec2>& out);
+// The unit vectors drawnRing draws `points` radii along (cos, sin of equal angles from arm 1),
+// kept per thread.
+const std::vector<glm::dvec2>& unitRing(std::size_t points);
 // The centroid of a ring's area (shoelace), about which drawnRing draws it larger; the tool
 // axis (0, 0) when the ring has no area.
 glm::dvec2 ringCentroid(const std::vector<glm::dvec2>& ring);

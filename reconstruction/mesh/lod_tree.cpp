@@ -59,69 +59,87 @@ std::pair<std::size_t, std::size_t> childSpans(std::size_t index, std::size_t ch
 // polygon's point p is c + F (p - c), so a distance is |dc + F ds|: dc between the centroids
 // and ds between the points about them. Both are taken once per point; each F costs a few
 // multiplications. Also the largest |dc| and |ds| (SpanPlan::padCentroid_mm, padShape_mm).
+// `knotsOf(c)`: candidate c's knots.
+//
+// Written from the radii, not from the polygons' points (drawnRing, ringCentroid): the points
+// lie at the radii along the same unit vectors u_j for every row, so with d_j the radius' own
+// difference from the straight line, ds_j = d_j u_j - dc, and the centroid (the shoelace's, each
+// cross product r_j r_j+1 times the same sine) is the sum of r_j (m_j-1 + m_j) u_j over three
+// times the sum of m_j, m_j = r_j r_j+1. With the knots taken once (planCoarseMeshes), a
+// field's well is planned in 35-36 ms against 43-44 (docs/benchmarks.md, "Plans from the
+// radii").
+template <class KnotsOf>
 void padDeviations(const WellGeometry& g, const std::vector<std::size_t>& candidates,
-                   const std::vector<double>& values, std::size_t knots,
-                   const std::vector<std::size_t>& kept, const std::vector<double>& fs,
-                   SpanPlan& plan) {
+                   KnotsOf knotsOf, std::size_t knots, const std::vector<std::size_t>& kept,
+                   const std::vector<double>& fs, SpanPlan& plan) {
     const std::vector<double>& depth = g.table().depth_m;
-    std::vector<double> pads(knots);
-    // A candidate's polygon about its centroid, and the centroid (drawnRing at F = 1 is the
-    // polygon itself; at any other F it is drawn about this centroid).
-    struct Polygon {
-        std::vector<glm::dvec2> about;
-        glm::dvec2 centroid{0.0};
-    };
-    auto polygon = [&](std::size_t c, Polygon& out) {
-        std::copy_n(values.begin() + static_cast<std::ptrdiff_t>(c * knots), knots, pads.begin());
-        drawnRing(pads, 1.0, out.about);
-        out.centroid = ringCentroid(out.about);
-        for (glm::dvec2& p : out.about) p -= out.centroid;
+    const std::vector<glm::dvec2>& unit = unitRing(knots);
+    // The cross product of consecutive unit vectors: the same for every pair.
+    const double turn = knots > 1 ? unit[0].x * unit[1].y - unit[1].x * unit[0].y : 0.0;
+    // A candidate's centroid as ringCentroid takes it of drawnRing(radii, 1): the tool axis
+    // where the polygon has no area.
+    auto centroid = [&](const double* r) {
+        double area = 0.0;
+        glm::dvec2 sum(0.0);
+        double before = r[knots - 1] * r[0];  // m_j-1 for j = 0
+        for (std::size_t j = 0; j < knots; ++j) {
+            const double m = r[j] * r[j + 1 == knots ? 0 : j + 1];
+            area += m;
+            sum += (r[j] * (before + m)) * unit[j];
+            before = m;
+        }
+        const double area2 = area * turn;
+        return std::abs(area2) > 1e-6 ? sum * (1.0 / (3.0 * area)) : glm::dvec2(0.0);
     };
     std::vector<double> worst2(fs.size(), 0.0);
-    double worstCentroid = 0.0, worstShape = 0.0;
-    Polygon from, to, here;
-    std::vector<glm::dvec2> ds(knots);
-    std::size_t a = 0;  // the candidate that is kept[k]; every kept row is a candidate
+    double worstCentroid2 = 0.0, worstShape2 = 0.0;  // squared: one square root in all
+    std::vector<double> along(knots);                // d_j: the radius less the straight line's
+    std::size_t a = 0;  // the candidate that is kept[k]; every kept row is one
     for (std::size_t k = 0; k + 1 < kept.size(); ++k) {
         while (candidates[a] < kept[k]) ++a;
         std::size_t b = a;
         while (candidates[b] < kept[k + 1]) ++b;
         if (b > a + 1 && g.measured(kept[k]) && g.measured(kept[k + 1])) {
-            polygon(a, from);
-            polygon(b, to);
+            const double* from = knotsOf(a);
+            const double* to = knotsOf(b);
+            const glm::dvec2 fromCentroid = centroid(from), toCentroid = centroid(to);
             const double length = depth[kept[k + 1]] - depth[kept[k]];
             for (std::size_t c = a + 1; c < b; ++c) {
                 if (!g.measured(candidates[c])) continue;
-                polygon(c, here);
+                const double* here = knotsOf(c);
                 const double t =
                     length > 0.0 ? (depth[candidates[c]] - depth[kept[k]]) / length : 0.0;
                 const glm::dvec2 dc =
-                    here.centroid - (from.centroid + t * (to.centroid - from.centroid));
-                const double centroidDistance = glm::length(dc);
-                worstCentroid = std::max(worstCentroid, centroidDistance);
-                double shape2 = 0.0;  // one square root a row, not one a pad
+                    centroid(here) - (fromCentroid + t * (toCentroid - fromCentroid));
+                const double cc = glm::dot(dc, dc);
+                worstCentroid2 = std::max(worstCentroid2, cc);
+                double shape2 = 0.0;
                 for (std::size_t j = 0; j < knots; ++j) {
-                    ds[j] = here.about[j] - (from.about[j] + t * (to.about[j] - from.about[j]));
-                    shape2 = std::max(shape2, glm::dot(ds[j], ds[j]));
+                    along[j] = here[j] - (from[j] + t * (to[j] - from[j]));
+                    // |d_j u_j - dc|^2, u_j a unit vector
+                    shape2 =
+                        std::max(shape2, along[j] * (along[j] - 2.0 * glm::dot(unit[j], dc)) + cc);
                 }
-                const double shape = std::sqrt(shape2);
-                worstShape = std::max(worstShape, shape);
+                shape2 = std::max(shape2, 0.0);
+                worstShape2 = std::max(worstShape2, shape2);
                 // Each point is within |dc| + F |ds| at F: a row that cannot beat the worst
-                // found at any F is passed over (most rows, once a few are in). The bound is
+                // found at any F is passed over (most rows, once a few are in). The bound,
+                // squared (|dc|^2 + 2 F |dc| |ds| + F^2 |ds|^2: one square root a row), is
                 // widened by far more than rounding can take from it, so a row is passed over
                 // only where its distance, as computed below, could not raise any F's worst:
                 // the worst at one F is the same whichever other factors are listed.
                 // (Every factor, with no early way out: most rows beat none, and the loop
                 // without a branch is taken two or four factors at once.)
+                const double cross = 2.0 * std::sqrt(cc * shape2);
                 bool beats = false;
                 for (std::size_t f = 0; f < fs.size(); ++f) {
-                    const double bound = (centroidDistance + fs[f] * shape) * (1.0 + 1e-9);
-                    beats |= bound * bound > worst2[f];
+                    const double bound2 = (cc + fs[f] * (cross + fs[f] * shape2)) * (1.0 + 1e-8);
+                    beats |= bound2 > worst2[f];
                 }
                 if (!beats) continue;
-                const double cc = glm::dot(dc, dc);
                 for (std::size_t j = 0; j < knots; ++j) {
-                    const double cs = glm::dot(dc, ds[j]), ss = glm::dot(ds[j], ds[j]);
+                    const glm::dvec2 ds = along[j] * unit[j] - dc;
+                    const double cs = glm::dot(dc, ds), ss = glm::dot(ds, ds);
                     for (std::size_t f = 0; f < fs.size(); ++f)
                         worst2[f] = std::max(worst2[f], cc + fs[f] * (2.0 * cs + fs[f] * ss));
                 }
@@ -131,20 +149,72 @@ void padDeviations(const WellGeometry& g, const std::vector<std::size_t>& candid
     }
     plan.padError_mm.resize(fs.size());
     for (std::size_t f = 0; f < fs.size(); ++f) plan.padError_mm[f] = std::sqrt(worst2[f]);
-    plan.padCentroid_mm = worstCentroid;
-    plan.padShape_mm = worstShape;
+    plan.padCentroid_mm = std::sqrt(worstCentroid2);
+    plan.padShape_mm = std::sqrt(worstShape2);
 }
 
-double distanceToChord(const Ned& p, const Ned& a, const Ned& b) {
+// The squared distance from `p` to the chord from `a` to `b`.
+double distanceToChord2(const Ned& p, const Ned& a, const Ned& b) {
     const Ned ab = b - a;
     const double len2 = glm::dot(ab, ab);
     const double t = len2 > 0.0 ? std::clamp(glm::dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-    return glm::length(p - (a + t * ab));
+    const Ned d = p - (a + t * ab);
+    return glm::dot(d, d);
+}
+
+// How far the straight path between `plan`'s kept rows strays from the candidates' centres
+// (SpanPlan::centreDeviation_m), and how far the candidates reach from the span's middle
+// (SpanPlan::reach_m).
+void pathDeviation(const WellGeometry& g, const std::vector<std::size_t>& candidates,
+                   SpanPlan& plan) {
+    const std::size_t first = plan.firstRow, last = plan.lastRow;
+    // Each centre taken once, each distance squared (the square root of the largest is the
+    // largest square root).
+    const glm::dvec3 a = toScene(g.centre(first)), b = toScene(g.centre(last));
+    const glm::dvec3 middle = (a + b) / 2.0;
+    double reach2 = glm::dot(b - a, b - a) / 4.0, deviation2 = 0.0;
+    const std::size_t kept = plan.rows.size();
+    std::size_t k = 0;  // the chord from kept row k to k + 1
+    Ned from(0.0), to(0.0);
+    if (kept >= 2) {
+        from = g.centre(plan.rows[0]);
+        to = g.centre(plan.rows[1]);
+    }
+    for (const std::size_t candidate : candidates) {
+        const Ned c = g.centre(candidate);
+        const glm::dvec3 out = toScene(c) - middle;
+        reach2 = std::max(reach2, glm::dot(out, out));
+        while (k + 1 < kept && plan.rows[k + 1] < candidate) {
+            if (++k + 1 < kept) {
+                from = to;
+                to = g.centre(plan.rows[k + 1]);
+            }
+        }
+        if (k + 1 < kept) deviation2 = std::max(deviation2, distanceToChord2(c, from, to));
+    }
+    plan.reach_m = std::sqrt(reach2);
+    plan.centreDeviation_m = std::sqrt(deviation2);
+}
+
+// The knots of every row of [first, last], row after row, at `out` (zeros for a row without
+// data, never read).
+void rowKnots(const WellGeometry& g, std::size_t first, std::size_t last, double* out) {
+    const auto knots = static_cast<std::size_t>(g.knotCount());
+    for (std::size_t r = first; r <= last; ++r) {
+        double* at = out + (r - first) * knots;
+        if (g.measured(r))
+            g.sectionKnots(r, at);
+        else
+            std::fill(at, at + knots, 0.0);
+    }
 }
 
 // What a span decides on the whole well (SpanPlan), from its children's plans at depth > 1.
+// At depth 1, `spanKnots` may hold the knots of the span's rows (rowKnots), computed once for
+// its segments' plans and its own.
 SpanPlan planSpan(const WellGeometry& g, int depth, std::size_t index,
-                  const std::vector<SpanPlan>& children, const std::vector<double>& fs) {
+                  const std::vector<SpanPlan>& children, const std::vector<double>& fs,
+                  const double* spanKnots = nullptr) {
     const std::size_t segments = g.segmentCount();
     const auto [s0, s1] = spanSegments(depth, index, segments);
     const std::size_t first = g.segmentRows(s0).first, last = g.segmentRows(s1).second;
@@ -161,10 +231,24 @@ SpanPlan planSpan(const WellGeometry& g, int depth, std::size_t index,
     std::vector<std::size_t> candidates;
     std::vector<double> childPad(fs.size(), 0.0);
     double childCentroid = 0.0, childShape = 0.0;
+    // A buffer of the thread's, not a fresh one cleared for each span.
+    thread_local std::vector<double> scratch;
     if (depth == 1) {
         candidates.reserve(last - first + 1);
         for (std::size_t r = first; r <= last; ++r)
             if (r == first || r == last || g.measured(r)) candidates.push_back(r);
+        if (!spanKnots) {
+            if (scratch.size() < (last - first + 1) * knots)
+                scratch.resize((last - first + 1) * knots);
+            rowKnots(g, first, last, scratch.data());
+            spanKnots = scratch.data();
+        }
+        double largest = 0.0;  // (not plan.maxRadius_mm: stored at every knot)
+        for (std::size_t r = first; r <= last; ++r)
+            if (g.measured(r))
+                for (std::size_t k = 0; k < knots; ++k)
+                    largest = std::max(largest, spanKnots[(r - first) * knots + k]);
+        plan.maxRadius_mm = largest;
     } else {
         const auto [from, to] = childSpans(index, children.size());
         for (std::size_t c = from; c < to; ++c) {
@@ -177,60 +261,36 @@ SpanPlan planSpan(const WellGeometry& g, int depth, std::size_t index,
             childShape = std::max(childShape, child.padShape_mm);
             plan.maxRadius_mm = std::max(plan.maxRadius_mm, child.maxRadius_mm);
         }
+        // The candidates' knots, measured rows only (nothing reads an unmeasured row's).
+        if (scratch.size() < candidates.size() * knots) scratch.resize(candidates.size() * knots);
+        for (std::size_t c = 0; c < candidates.size(); ++c)
+            if (g.measured(candidates[c]))
+                g.sectionKnots(candidates[c], scratch.data() + c * knots);
     }
-    // The candidates' knots, measured rows only (nothing reads an unmeasured row's): a buffer
-    // of the thread's, not a fresh one cleared for each span.
-    thread_local std::vector<double> scratch;
-    if (scratch.size() < candidates.size() * knots) scratch.resize(candidates.size() * knots);
-    std::vector<double>& values = scratch;
-    for (std::size_t c = 0; c < candidates.size(); ++c)
-        if (g.measured(candidates[c])) {
-            g.sectionKnots(candidates[c], values.data() + c * knots);
-            if (depth == 1)
-                for (std::size_t k = 0; k < knots; ++k)
-                    plan.maxRadius_mm = std::max(plan.maxRadius_mm, values[c * knots + k]);
-        }
+    // Candidate c's knots: by row at depth 1, in candidate order above.
+    const double* const values = depth == 1 ? spanKnots : scratch.data();
+    const std::size_t offset = depth == 1 ? first : 0;
+    const bool byRow = depth == 1;
+    auto knotsOf = [&candidates, values, offset, byRow, knots](std::size_t c) {
+        return values + ((byRow ? candidates[c] - offset : c) * knots);
+    };
 
     const LodLevel level = spanLevel(g.options(), static_cast<int>(knots), depth);
     plan.rows = swingDoor(
         g, candidates.size(), [&candidates](std::size_t c) { return candidates[c]; },
-        [&values, knots](std::size_t c, std::size_t k) { return values[c * knots + k]; }, knots,
-        level);
+        [&knotsOf](std::size_t c, std::size_t k) { return knotsOf(c)[k]; }, knots, level);
     // The error is measured, not the tolerance assumed: the kept rows' straight lines differ
     // from the candidates' by at most `level.tolerance_mm` (times the exaggeration), and
     // mostly far less on a smooth wall. Both the children's polygons and this span's are
     // piecewise linear in depth with breaks at the candidates (this span keeps a subset of
     // them), so their largest difference lies on a candidate; adding the children's error
     // bounds the distance to every measured row's polygon (the triangle inequality).
-    padDeviations(g, candidates, values, knots, plan.rows, fs, plan);
+    padDeviations(g, candidates, knotsOf, knots, plan.rows, fs, plan);
     for (std::size_t f = 0; f < fs.size(); ++f) plan.padError_mm[f] += childPad[f];
     plan.padCentroid_mm += childCentroid;
     plan.padShape_mm += childShape;
 
-    // How far the straight path between kept rows strays from the candidates' centres, and
-    // how far the candidates reach from the span's middle: each centre taken once.
-    const glm::dvec3 a = toScene(g.centre(first)), b = toScene(g.centre(last));
-    const glm::dvec3 middle = (a + b) / 2.0;
-    plan.reach_m = glm::length(b - a) / 2.0;
-    const std::size_t kept = plan.rows.size();
-    std::size_t k = 0;  // the chord from kept row k to k + 1
-    Ned from(0.0), to(0.0);
-    if (kept >= 2) {
-        from = g.centre(plan.rows[0]);
-        to = g.centre(plan.rows[1]);
-    }
-    for (const std::size_t candidate : candidates) {
-        const Ned c = g.centre(candidate);
-        plan.reach_m = std::max(plan.reach_m, glm::length(toScene(c) - middle));
-        while (k + 1 < kept && plan.rows[k + 1] < candidate) {
-            if (++k + 1 < kept) {
-                from = to;
-                to = g.centre(plan.rows[k + 1]);
-            }
-        }
-        if (k + 1 < kept)
-            plan.centreDeviation_m = std::max(plan.centreDeviation_m, distanceToChord(c, from, to));
-    }
+    pathDeviation(g, candidates, plan);
     return plan;
 }
 
@@ -335,15 +395,16 @@ void eachOnThreads(std::size_t count, int threads, const std::atomic<bool>* canc
     }
 }
 
-// Every span's plan, depth 1 first; what it has planned when `cancel` is set.
+// Every span's plan, depth 1 first, given those of depth 1 (`children`) or none; what it has
+// planned when `cancel` is set.
 std::vector<SpanPlan> planSpans(const WellGeometry& g, const std::vector<double>& fs, int threads,
-                                const std::atomic<bool>* cancel) {
+                                const std::atomic<bool>* cancel,
+                                std::vector<SpanPlan> children = {}) {
     std::vector<SpanPlan> out;
     const std::size_t segments = g.segmentCount();
     if (segments == 0) return out;
     const int depth = lodTreeDepth(segments);
-    std::vector<SpanPlan> children;  // the previous depth's
-    for (int d = 1; d <= depth; ++d) {
+    for (int d = children.empty() ? 1 : 2; d <= depth; ++d) {
         const std::size_t count = spanCount(d, segments);
         std::vector<SpanPlan> built(count);
         eachOnThreads(count, threads, cancel,
@@ -432,11 +493,25 @@ CoarsePlan planCoarseMeshes(const WellGeometry& whole, int firstLevel,
     plan.exaggerations = std::move(exaggerations);
     const std::size_t count = whole.segmentCount();
     plan.segments.resize(count);
-    eachOnThreads(count, threads, nullptr, [&](std::size_t s) {
-        plan.segments[s] =
-            planSegmentLevels(whole, s, plan.firstLevel, std::numeric_limits<int>::max());
+    if (count == 0) return plan;
+    // Span by span of depth 1: its rows' knots once, for its segments' levels and itself (each
+    // took them afresh).
+    const auto knots = static_cast<std::size_t>(whole.knotCount());
+    std::vector<SpanPlan> depth1(spanCount(1, count));
+    eachOnThreads(depth1.size(), threads, nullptr, [&](std::size_t i) {
+        const auto [s0, s1] = spanSegments(1, i, count);
+        const std::size_t first = whole.segmentRows(s0).first;
+        const std::size_t last = whole.segmentRows(s1).second;
+        thread_local std::vector<double> values;
+        if (values.size() < (last - first + 1) * knots) values.resize((last - first + 1) * knots);
+        rowKnots(whole, first, last, values.data());
+        for (std::size_t s = s0; s <= s1; ++s)
+            plan.segments[s] =
+                planSegmentLevels(whole, s, plan.firstLevel, std::numeric_limits<int>::max(),
+                                  values.data() + (whole.segmentRows(s).first - first) * knots);
+        depth1[i] = planSpan(whole, 1, i, {}, plan.exaggerations, values.data());
     });
-    plan.spans = planSpans(whole, plan.exaggerations, threads, nullptr);
+    plan.spans = planSpans(whole, plan.exaggerations, threads, nullptr, std::move(depth1));
     return plan;
 }
 

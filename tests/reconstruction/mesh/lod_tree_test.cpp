@@ -378,3 +378,92 @@ TEST(LodTreeTest, APlannedWellDrawsFromTheRowsItKeepsWhatTheWholeWellDraws) {
         }
     }
 }
+
+TEST(LodTreeTest, AWellsPlanTakesEachRowsKnotsOnceAndDecidesAsEachPlanAlone) {
+    // planCoarseMeshes takes each row's knots once for a span of depth 1 and its sixteen
+    // segments: every segment planned alone (planSegmentLevels) and every span planned on its
+    // own (buildSpanMeshes) decide the same rows, radii and errors, through a stretch without
+    // data, a breakout and a washout, on six arms and on a 40-finger tool.
+    SyntheticWellSpec fingers = syntheticProfile("example", 120.0, 0.01);
+    fingers.armCount = 40;
+    const std::vector<std::shared_ptr<const SectionTable>> tables = {
+        exampleWell(300.0, 0.01), std::make_shared<const SectionTable>(makeSyntheticWell(fingers))};
+    for (const auto& table : tables) {
+        SCOPED_TRACE(std::to_string(table->armCount) + " arms");
+        GeometryOptions options;
+        options.radialExaggeration = 20.0;
+        const WellGeometry g(table, options);
+        const CoarsePlan plan = planCoarseMeshes(g, kFieldFirstCoarseLevel, {20.0}, 2);
+        ASSERT_EQ(plan.segments.size(), g.segmentCount());
+        for (std::size_t s = 0; s < g.segmentCount(); ++s) {
+            const SegmentPlan alone =
+                planSegmentLevels(g, s, kFieldFirstCoarseLevel, std::numeric_limits<int>::max());
+            EXPECT_EQ(plan.segments[s].levelRows, alone.levelRows) << s;
+            EXPECT_EQ(plan.segments[s].maxRadius_mm, alone.maxRadius_mm) << s;
+            EXPECT_EQ(plan.segments[s].fullDetailTriangles, alone.fullDetailTriangles) << s;
+        }
+        const std::vector<SpanMesh> planned = buildPlannedSpans(g, plan);
+        const std::vector<SpanMesh> own = buildSpanMeshes(g);
+        ASSERT_EQ(planned.size(), own.size());
+        for (std::size_t i = 0; i < own.size(); ++i) {
+            const std::string span =
+                std::to_string(own[i].depth) + "/" + std::to_string(own[i].index);
+            EXPECT_EQ(planned[i].error_mm, own[i].error_mm) << span;
+            EXPECT_EQ(planned[i].radius, own[i].radius) << span;
+            EXPECT_EQ(planned[i].maxRadius_m, own[i].maxRadius_m) << span;
+            expectSameMesh(planned[i].mesh, own[i].mesh, "span " + span);
+        }
+    }
+}
+
+TEST(LodTreeTest, ASpansPadErrorIsTheDrawnDistanceBetweenTheRowsPolygonAndTheLine) {
+    // A gauge hole with two rows pushed off round inside the tolerance of the first depth: the
+    // span keeps neither, and its pads' error at each exaggeration F is the largest distance
+    // between a pushed row's polygon and the gauge polygon, each drawn F times larger about
+    // its own centroid (drawnRing, ringCentroid): |dc + F ds| over the pads, dc between the
+    // centroids, ds between the points about them.
+    SyntheticWellSpec spec = syntheticProfile("circle", 40.0, 0.02);
+    spec.toolRotation_degPerM = 0.0;
+    SectionTable t = makeSyntheticWell(spec);
+    const std::vector<std::pair<double, std::vector<double>>> pushed = {
+        {5.31, {9.0, 0.0, 0.0, 0.0, 0.0, 0.0}}, {11.17, {0.0, 4.0, -6.0, 0.0, 3.0, 0.0}}};
+    for (const auto& [depth_m, by] : pushed) {
+        const auto row = static_cast<std::size_t>(std::lround(depth_m / spec.step_m));
+        for (int a = 0; a < t.armCount; ++a) t.radii(row)[a] += by[static_cast<std::size_t>(a)];
+    }
+    const WellGeometry g(std::make_shared<const SectionTable>(t), GeometryOptions{});
+    const std::vector<double> fs = {1.0, 20.0};
+    const CoarsePlan plan = planCoarseMeshes(g, kFieldFirstCoarseLevel, fs, 1);
+    ASSERT_FALSE(plan.spans.empty());
+    const SpanPlan& span = plan.spans.front();
+    ASSERT_EQ(span.depth, 1);
+    const double gaugeRadius = spec.bitSize_mm / 2.0;
+    std::vector<glm::dvec2> gauge;
+    drawnRing(std::vector<double>(6, gaugeRadius), 1.0, gauge);
+    const glm::dvec2 gaugeCentroid = ringCentroid(gauge);
+    std::vector<double> expected(fs.size(), 0.0);
+    double centroidWorst = 0.0, shapeWorst = 0.0;
+    for (const auto& [depth_m, by] : pushed) {
+        const auto row = static_cast<std::size_t>(std::lround(depth_m / spec.step_m));
+        ASSERT_FALSE(std::binary_search(span.rows.begin(), span.rows.end(), row)) << depth_m;
+        std::vector<double> radii(6);
+        for (std::size_t a = 0; a < 6; ++a) radii[a] = gaugeRadius + by[a];
+        std::vector<glm::dvec2> ring;
+        drawnRing(radii, 1.0, ring);
+        const glm::dvec2 centroid = ringCentroid(ring);
+        const glm::dvec2 dc = centroid - gaugeCentroid;
+        centroidWorst = std::max(centroidWorst, glm::length(dc));
+        for (std::size_t j = 0; j < 6; ++j) {
+            const glm::dvec2 ds = (ring[j] - centroid) - (gauge[j] - gaugeCentroid);
+            shapeWorst = std::max(shapeWorst, glm::length(ds));
+            for (std::size_t f = 0; f < fs.size(); ++f)
+                expected[f] = std::max(expected[f], glm::length(dc + fs[f] * ds));
+        }
+    }
+    ASSERT_GT(centroidWorst, 1.0);  // the pushed rows' centroids moved
+    ASSERT_EQ(span.padError_mm.size(), fs.size());
+    for (std::size_t f = 0; f < fs.size(); ++f)
+        EXPECT_NEAR(span.padError_mm[f], expected[f], 1e-9 * expected[f]) << "x" << fs[f];
+    EXPECT_NEAR(span.padCentroid_mm, centroidWorst, 1e-9);
+    EXPECT_NEAR(span.padShape_mm, shapeWorst, 1e-9);
+}
