@@ -260,8 +260,15 @@ std::vector<std::string> MainWindow::caption() const {
 }
 
 void MainWindow::setCaption(const std::string& namesLine) {
-    std::vector<std::string> lines{
-        scenegraph::exaggerationCaption(m_session->look().radialExaggeration)};
+    // While a field loads its wells may be drawn at two exaggerations (WellSession::
+    // drawnExaggerations): the caption says both.
+    const std::vector<double> drawn = m_session->drawnExaggerations();
+    std::vector<std::string> lines{scenegraph::exaggerationCaption(drawn.back())};
+    if (drawn.size() > 1)
+        lines.front() = QString("radii x %1 to x %2 while the wells load")
+                            .arg(drawn.front())
+                            .arg(drawn.back())
+                            .toStdString();
     if (!namesLine.empty()) lines.push_back(namesLine);
     m_overlay->setCaption(lines);
 }

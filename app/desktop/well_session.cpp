@@ -85,6 +85,11 @@ struct WellSession::Well {
     // log changed since it was loaded).
     bool leanRefused = false;
     bool readRefused = false;
+    // The lean form it was last drawn from with that form's own colours, and at what
+    // exaggeration (holdLean while a field loads): a restyle to the same draws it the same.
+    std::weak_ptr<const LeanForm> drawnOwn;
+    double drawnOwnAt = 0.0;
+    bool detailDeferred = false;  // held lean, not given its detail while the field loads
 };
 
 // What a well held lean keeps (docs/architecture.md, "The window holds a field lean"): the plan
@@ -258,6 +263,7 @@ int WellSession::openWell(const WellSource& source, const LoadOptions& options) 
     m_model.clearWells();
     emit warningsChanged();
     m_framed = false;
+    m_loadExaggerationWells = 0;
     m_origin = reconstruction::sceneOrigin({source});
     return addWell(source, options);
 }
@@ -577,6 +583,8 @@ void WellSession::wellDone() {
 void WellSession::endLoadWhenDone() {
     if (loading()) return;
     applyStyleAfterLoad();
+    for (const auto& well : m_wells)
+        if (well->detailDeferred) setDetail(*well);
     emit allWellsLoaded();
     // An analysis that ended while this end was queued found the session still loading.
     if (allAnalysed()) giveBackFreedMemory();
@@ -851,6 +859,20 @@ void WellSession::applyColourings(double radialExaggeration,
             setDetail(*well);
             continue;
         }
+        // Drawn from its plan in its own colours at this exaggeration while the field loaded
+        // (holdLean): this restyle would draw it the same.
+        if (well->lean && well->drawnOwn.lock() == well->lean &&
+            well->drawnOwnAt == radialExaggeration && !it->shared &&
+            it->colouring == well->lean->ownHeld && well->lean->ownRequest == colour &&
+            record.geometry->options().radialExaggeration == radialExaggeration) {
+            well->coloured = true;
+            well->shared.reset();
+            well->sharedWells = it->wells;
+            edit(*well, [&](DeskWell& r) { r.options.colour = colour; });
+            setDetail(*well);
+            continue;
+        }
+        well->drawnOwn.reset();
         restyles.push_back(
             {well.get(), &*it, record.geometry, well->lean, well->view->firstCoarseLevel()});
     }
@@ -994,6 +1016,33 @@ bool WellSession::startChangeColouring(double radialExaggeration,
         });
     emit status("Comparing the runs to colour the wall by their change...");
     return true;
+}
+
+std::vector<double> WellSession::drawnExaggerations() const {
+    std::vector<double> out;
+    for (const auto& well : m_wells) {
+        const int index = modelIndex(*well);
+        if (index < 0 || !well->drawn || !m_model.well(index).geometry) continue;
+        const double f = m_model.well(index).geometry->options().radialExaggeration;
+        if (std::find(out.begin(), out.end(), f) == out.end()) out.push_back(f);
+    }
+    if (out.empty()) out.push_back(m_look.radialExaggeration);
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+double WellSession::loadExaggeration() {
+    if (m_exaggerationKept) return m_look.radialExaggeration;
+    std::vector<std::shared_ptr<const reconstruction::WellGeometry>> geometries;
+    for (int i = 0; i < m_model.wellCount(); ++i)
+        if (m_model.well(i).geometry) geometries.push_back(m_model.well(i).geometry);
+    const int placed = static_cast<int>(geometries.size());
+    if (m_loadExaggerationWells == 0 || placed >= 2 * m_loadExaggerationWells) {
+        m_loadExaggeration = scenegraph::chooseExaggeration(
+            geometries, 0.0, std::numeric_limits<double>::infinity(), kRenderHeight_px);
+        m_loadExaggerationWells = std::max(1, placed);
+    }
+    return m_loadExaggeration;
 }
 
 // Once every well is loaded: its colours as asked (a quantity other than the departure from
@@ -1248,25 +1297,39 @@ void WellSession::startLeanForm(Well& well) {
 
 void WellSession::holdLean(Well& well, std::shared_ptr<const LeanForm> form) {
     const DeskWell& record = m_model.well(modelIndex(well));
+    // A well its load drew nothing of, while a field loads: drawn at the exaggeration the
+    // wells placed so far would get, in its own colours, as the restyle at the load's end
+    // draws it where the field gets that exaggeration too (applyColourings then keeps it): the
+    // field reads as tubes while it loads, and its end rebuilds only the wells drawn otherwise.
+    const bool ownLook = !well.drawn && !well.coloured && loading() &&
+                         form->draws(loadExaggeration(), form->ownRequest);
+    const double exaggeration =
+        ownLook ? loadExaggeration() : record.geometry->options().radialExaggeration;
     const auto sample = std::make_shared<const reconstruction::WellGeometry>(form->base->restyled(
-        record.geometry->options().radialExaggeration,
-        drawnColouring(form->ownHeld, well.coloured, well.shared, well.sharedWells)));
+        exaggeration,
+        ownLook ? form->ownHeld
+                : drawnColouring(form->ownHeld, well.coloured, well.shared, well.sharedWells)));
+    well.drawnOwn = ownLook ? std::weak_ptr<const LeanForm>(form) : std::weak_ptr<const LeanForm>();
+    well.drawnOwnAt = exaggeration;
     well.lean = std::move(form);
     well.values.reset();
-    edit(well, [&sample, rows = well.lean->wholeRows](DeskWell& r) {
+    edit(well, [&sample, rows = well.lean->wholeRows, exaggeration](DeskWell& r) {
         r.geometry = sample;
         r.analysis.reset();
         r.wholeRows = rows;
+        r.options.radialExaggeration = exaggeration;
     });
     if (!well.drawn) {
         // Its load drew nothing: drawn once, here, from its plan and the rows it holds, its
         // segments made when near (a few milliseconds a well), as render draws a field held
         // lean.
+        const std::vector<double> before = drawnExaggerations();
         drawNow(well, [&] {
             well.view->rebuild(
                 *sample, scenegraph::planWaitingWell(sample, well.lean->plan, well.lean->rows, 1),
                 sample->options().radialExaggeration);
         });
+        if (drawnExaggerations() != before) emit lookChanged();  // the caption says them
         return;
     }
     setDetail(well);
@@ -1294,6 +1357,13 @@ void WellSession::setDetail(Well& well) {
     if (index < 0 || !well.view) return;
     const auto& geometry = m_model.well(index).geometry;
     if (!geometry) return;
+    // A well held lean reads its log again for what its camera wants finer: not while the
+    // field loads, beside the load's own reads (endLoadWhenDone gives it its detail then).
+    well.detailDeferred = well.lean && loading();
+    if (well.detailDeferred) {
+        m_detail->removeWell(well.view->scene());
+        return;
+    }
     if (well.lean)
         m_detail->setWell(well.view->scene(), wholeReader(well));
     else

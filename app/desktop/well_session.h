@@ -133,6 +133,10 @@ public:
     // What every well is drawn with (radial exaggeration, colouring): all a newly opened
     // well takes from those shown.
     const LoadOptions& look() const { return m_look; }
+    // The radial exaggerations the wells shown are drawn at, increasing: the look's alone,
+    // but while a field loads, where its wells drawn from their plans already take the one
+    // the field is bound for (loadExaggeration) and those drawn as they loaded do not yet.
+    std::vector<double> drawnExaggerations() const;
     // The legend of the wall's colours (null before a well is loaded).
     const reconstruction::ColourLegend* legend() const;
     // The visible wells' scenes: their logs, without the path above or the labels.
@@ -223,6 +227,10 @@ private:
     void endLoadWhenDone();
     double loadFraction(const Well& well) const;
     void applyStyleAfterLoad();
+    // The exaggeration a field's well drawn from its plan while the field loads is drawn at:
+    // the one the wells placed so far would get (applyStyleAfterLoad's choice), taken again
+    // each time their count doubles; the look's where it is kept.
+    double loadExaggeration();
     // Depth ticks on the current well only when several wells have geometry (their labels
     // would pile up), on the one well otherwise; re-annotates the wells whose ticks change.
     void tickCurrentWell();
@@ -297,6 +305,9 @@ private:
     reconstruction::Wellhead m_origin;  // the first well's wellhead
     bool m_framed = false;              // firstSegmentsShown sent for this opening
     bool m_exaggerationKept = false;
+    // loadExaggeration's, and the count of wells it was taken over (0: none yet).
+    double m_loadExaggeration = 1.0;
+    int m_loadExaggerationWells = 0;
     unsigned m_annotationGeneration = 0;
     // Loads that have ended and whose end the event loop has still to take (wellDone):
     // loading() stays true until it has.

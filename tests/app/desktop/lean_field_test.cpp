@@ -12,6 +12,7 @@
 
 #include <QObject>
 #include <QSignalSpy>
+#include <QTimer>
 #include <QTreeWidget>
 
 #include <Inventor/SbViewportRegion.h>
@@ -345,6 +346,65 @@ TEST_F(LeanFieldTest, AWellStartedWhileTheFieldIsBoundToPassTheBudgetIsLoadedAsI
         EXPECT_TRUE(session.heldLean(w)) << "well " << w;
         EXPECT_GT(session.scene(std::size_t(w))->segmentCount(), 0u) << "well " << w;
     }
+}
+
+TEST_F(LeanFieldTest, AWellDrawnFromItsPlanAsTheFieldLoadsTakesItsExaggerationAndIsKept) {
+    // Six wells 30 m apart past a budget of 65,000 rows: the wells loaded as their geometry
+    // only are drawn from their plans at the exaggeration the wells placed so far would get,
+    // not to scale, and the caption says both while the current well is still drawn as it
+    // loaded. The field's end restyles to the exaggeration chosen over every well; a well
+    // drawn at it already keeps its scene, the others are drawn again.
+    std::vector<app::WellSource> wells = field();
+    for (const double east : {90.0, 120.0, 150.0})
+        wells.push_back({wells[0].path, {}, reconstruction::Wellhead{east, 0.0, 0.0}, {}});
+    app::DeskModel model;
+    app::WellSession session(model, nullptr);
+    session.setFieldRowBudget(65'000);
+    struct Drawn {
+        double exaggeration = 0.0;
+        const scenegraph::WellScene* scene = nullptr;
+    };
+    std::vector<std::optional<Drawn>> drawn(wells.size());
+    std::vector<std::vector<double>> captions;            // drawnExaggerations while loading
+    std::vector<bool> endedUndrawn(wells.size(), false);  // loaded as their geometry only
+    QObject::connect(&session, &app::WellSession::wellLoaded, [&] {
+        for (int i = 0; i < model.wellCount(); ++i)
+            if (model.well(i).loadFraction >= 1.0 && !session.heldLean(i) &&
+                session.scene(std::size_t(i))->segmentCount() == 0)
+                endedUndrawn[std::size_t(i)] = true;
+    });
+    QObject::connect(&model, &app::DeskModel::wellChanged, &session, [&](int i) {
+        // After the call that drew it (holdLean edits the record, then draws).
+        QTimer::singleShot(0, &session, [&, i] {
+            if (!session.loading() || drawn[std::size_t(i)] || !endedUndrawn[std::size_t(i)] ||
+                !session.heldLean(i) || session.scene(std::size_t(i))->segmentCount() == 0)
+                return;
+            drawn[std::size_t(i)] = Drawn{model.well(i).geometry->options().radialExaggeration,
+                                          session.scene(std::size_t(i))};
+            captions.push_back(session.drawnExaggerations());
+        });
+    });
+    ASSERT_TRUE(open(session, app::LoadOptions{}, wells));
+    const double chosen = session.look().radialExaggeration;
+    ASSERT_GT(chosen, 1.0);
+    EXPECT_EQ(session.drawnExaggerations(), std::vector<double>{chosen});
+    int kept = 0;
+    for (std::size_t w = 0; w < wells.size(); ++w) {
+        EXPECT_DOUBLE_EQ(model.well(int(w)).geometry->options().radialExaggeration, chosen) << w;
+        if (!drawn[w]) continue;
+        EXPECT_GT(drawn[w]->exaggeration, 1.0) << "well " << w << " drawn to scale as it loaded";
+        if (drawn[w]->exaggeration == chosen) {
+            EXPECT_EQ(session.scene(w), drawn[w]->scene) << "well " << w << " drawn again";
+            ++kept;
+        } else {
+            EXPECT_NE(session.scene(w), drawn[w]->scene) << "well " << w << " not drawn again";
+        }
+    }
+    EXPECT_GT(kept, 0) << "no well drawn from its plan kept its scene";
+    ASSERT_FALSE(captions.empty());
+    // The current well is drawn to scale until the end, beside the wells drawn from plans.
+    EXPECT_EQ(captions.back().front(), 1.0);
+    EXPECT_GT(captions.back().back(), 1.0);
 }
 
 TEST_F(LeanFieldTest, ARunAddedToAFieldPastTheBudgetIsStreamedAndHeldWhole) {
