@@ -16,6 +16,18 @@ double ratioFactor(double b) {
     }
     return 2.0 / b * std::tan(b / 2.0);
 }
+
+// sin(x) of a half-angle step. Consecutive rows of a log 2.5 mm apart differ by thousandths of
+// a degree, and std::sin took a tenth of placing a field's well (docs/benchmarks.md, "Half-angle
+// sines by their series"): below 0.01 rad the series to x^7, whose next term is under 3e-22
+// of x, so the result is std::sin's to a rounding.
+double halfAngleSine(double x) {
+    if (std::abs(x) < 1e-2) {
+        const double x2 = x * x;
+        return x + x * x2 * (-1.0 / 6.0 + x2 * (1.0 / 120.0 - x2 * (1.0 / 5040.0)));
+    }
+    return std::sin(x);
+}
 }  // namespace
 
 MinimumCurvatureStep minimumCurvatureStep(const SurveyStation& a, const SurveyStation& b) {
@@ -29,8 +41,8 @@ MinimumCurvatureStep minimumCurvatureStep(double mdA, const HoleDirection& a, do
     const double a1 = glm::radians(a.azi_deg), a2 = glm::radians(b.azi_deg);
     // Dogleg from the dot product of the unit tangents, written with the
     // half-angle (haversine) form, which stays accurate for tiny angles.
-    const double sinHalfI = std::sin((i2 - i1) / 2.0);
-    const double sinHalfA = std::sin((a2 - a1) / 2.0);
+    const double sinHalfI = halfAngleSine((i2 - i1) / 2.0);
+    const double sinHalfA = halfAngleSine((a2 - a1) / 2.0);
     const double h = sinHalfI * sinHalfI + a.sinInc * b.sinInc * sinHalfA * sinHalfA;
     const double dogleg = 2.0 * std::asin(std::sqrt(std::clamp(h, 0.0, 1.0)));
     const double rf = ratioFactor(dogleg);

@@ -54,6 +54,32 @@ TEST(MinimumCurvatureTest, TinyDoglegUsesSeriesWithoutLosingDigits) {
     EXPECT_NEAR(s.dTvd, 0.0025 * std::cos(glm::radians(10.0)), 1e-12);
 }
 
+TEST(MinimumCurvatureTest, AStepsDoglegIsTheAngleBetweenItsTangents) {
+    // From a hundred-thousandth of a degree (rows 2.5 mm apart) to five degrees a step, either
+    // side of the half-angle sine's series (below 0.01 rad, about 1.15 degrees), and across
+    // north: the dogleg is the angle between the two unit tangents (atan2 of their cross and
+    // dot products, in long double), to 1e-12 of itself.
+    auto tangent = [](double inc_deg, double azi_deg) {
+        const long double i = glm::radians(inc_deg), a = glm::radians(azi_deg);
+        return std::vector<long double>{std::sin(i) * std::cos(a), std::sin(i) * std::sin(a),
+                                        std::cos(i)};
+    };
+    for (const double inc : {0.3, 12.5, 87.0})
+        for (const double azi : {0.002, 140.0, 359.999})
+            for (const double step : {1e-5, 3e-4, 0.02, 1.1, 1.2, 2.3, 5.0}) {
+                const SurveyStation a{100.0, inc, azi}, b{100.0025, inc + step, azi - 0.7 * step};
+                const std::vector<long double> t = tangent(a.inc_deg, a.azi_deg),
+                                               u = tangent(b.inc_deg, b.azi_deg);
+                const long double cx = t[1] * u[2] - t[2] * u[1], cy = t[2] * u[0] - t[0] * u[2],
+                                  cz = t[0] * u[1] - t[1] * u[0];
+                const long double dot = t[0] * u[0] + t[1] * u[1] + t[2] * u[2];
+                const double angle =
+                    static_cast<double>(std::atan2(std::sqrt(cx * cx + cy * cy + cz * cz), dot));
+                EXPECT_NEAR(minimumCurvatureStep(a, b).dogleg_rad, angle, 1e-12 * angle)
+                    << "inc " << inc << " azi " << azi << " step " << step;
+            }
+}
+
 TEST(MinimumCurvatureTest, DoglegSeverityPer30Metres) {
     EXPECT_DOUBLE_EQ(doglegSeverity_degPer30m(3.0, 30.0), 3.0);
     EXPECT_DOUBLE_EQ(doglegSeverity_degPer30m(1.0, 10.0), 3.0);
