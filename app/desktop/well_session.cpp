@@ -85,10 +85,9 @@ struct WellSession::Well {
     // log changed since it was loaded).
     bool leanRefused = false;
     bool readRefused = false;
-    // The lean form it was last drawn from with that form's own colours, and at what
-    // exaggeration (holdLean while a field loads): a restyle to the same draws it the same.
+    // The lean form it was last drawn from in that form's own colours (holdLean while a field
+    // loads), at its record's exaggeration: a restyle to the same draws it the same.
     std::weak_ptr<const LeanForm> drawnOwn;
-    double drawnOwnAt = 0.0;
     bool detailDeferred = false;  // held lean, not given its detail while the field loads
 };
 
@@ -861,8 +860,7 @@ void WellSession::applyColourings(double radialExaggeration,
         }
         // Drawn from its plan in its own colours at this exaggeration while the field loaded
         // (holdLean): this restyle would draw it the same.
-        if (well->lean && well->drawnOwn.lock() == well->lean &&
-            well->drawnOwnAt == radialExaggeration && !it->shared &&
+        if (well->lean && well->drawnOwn.lock() == well->lean && !it->shared &&
             it->colouring == well->lean->ownHeld && well->lean->ownRequest == colour &&
             record.geometry->options().radialExaggeration == radialExaggeration) {
             well->coloured = true;
@@ -1301,16 +1299,18 @@ void WellSession::holdLean(Well& well, std::shared_ptr<const LeanForm> form) {
     // wells placed so far would get, in its own colours, as the restyle at the load's end
     // draws it where the field gets that exaggeration too (applyColourings then keeps it): the
     // field reads as tubes while it loads, and its end rebuilds only the wells drawn otherwise.
-    const bool ownLook = !well.drawn && !well.coloured && loading() &&
-                         form->draws(loadExaggeration(), form->ownRequest);
-    const double exaggeration =
-        ownLook ? loadExaggeration() : record.geometry->options().radialExaggeration;
+    double exaggeration = record.geometry->options().radialExaggeration;
+    bool ownLook = false;
+    if (!well.drawn && !well.coloured) {
+        const double bound = loadExaggeration();
+        ownLook = form->draws(bound, form->ownRequest);
+        if (ownLook) exaggeration = bound;
+    }
     const auto sample = std::make_shared<const reconstruction::WellGeometry>(form->base->restyled(
         exaggeration,
         ownLook ? form->ownHeld
                 : drawnColouring(form->ownHeld, well.coloured, well.shared, well.sharedWells)));
     well.drawnOwn = ownLook ? std::weak_ptr<const LeanForm>(form) : std::weak_ptr<const LeanForm>();
-    well.drawnOwnAt = exaggeration;
     well.lean = std::move(form);
     well.values.reset();
     edit(well, [&sample, rows = well.lean->wholeRows, exaggeration](DeskWell& r) {
