@@ -6,7 +6,6 @@
 #include <exception>
 #include <filesystem>
 #include <optional>
-#include <thread>
 
 #ifdef __GLIBC__
 #include <malloc.h>
@@ -118,14 +117,21 @@ private:
 };
 
 // The window loads on many short-lived threads (two loads at once, each read's pieces, each
-// well's analysis or lean form), and glibc's malloc gives threads up to eight arenas a core: a
-// well's memory freed in one arena is not what the next load, in another, allocates from, so
-// it faults in fresh pages and the freed ones stay resident. One arena a core: 100 wells of
-// 1 km at 2.5 mm load in 39.9 s against 43.1 s and peak at 1,495 MB against 1,682 MB
-// (docs/benchmarks.md, "The window's field load"). Set before any thread starts; glibc only.
-void oneMallocArenaACore() {
+// well's analysis or lean form), each of which allocates a well's table and placement (about
+// 100 MB a well of 1 km at 2.5 mm) and frees them once the well is planned. glibc's malloc by
+// default gives threads arenas of their own and hands large blocks back to the kernel as they
+// are freed, so each well faulted in (and the kernel zeroed) fresh pages: 80-100 thousand
+// faults for 100 wells. One arena, blocks up to 256 MiB kept in it and its top kept while
+// loading: the next well reuses the memory the last one freed (18-19 thousand faults), and
+// WellSession::giveBackFreedMemory (malloc_trim) hands it all back once the load and the
+// analyses end. 100 wells of 1 km at 2.5 mm load in 12.4-14.2 s against 12.8-15.4 s at the
+// same peak (docs/benchmarks.md, "Freed memory reused while a field loads"). Set before any
+// thread starts; glibc only.
+void keepFreedMemoryWhileLoading() {
 #ifdef __GLIBC__
-    mallopt(M_ARENA_MAX, static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
+    mallopt(M_ARENA_MAX, 1);
+    mallopt(M_MMAP_THRESHOLD, 256 << 20);
+    mallopt(M_TRIM_THRESHOLD, 1 << 30);
 #endif
 }
 
@@ -133,7 +139,7 @@ int showWindow(int argc, char** argv, const std::vector<WellToOpen>& wells,
                std::optional<double> at_m = std::nullopt, bool exaggerationGiven = false,
                int status = kExitOk, bool runs = false,
                std::optional<std::chrono::steady_clock::time_point> statsFrom = std::nullopt) {
-    oneMallocArenaACore();
+    keepFreedMemoryWhileLoading();
     QApplication application(argc, argv);
     initGui();
     MainWindow window;
