@@ -69,6 +69,19 @@ private:
     double m_mdSum = 0.0;
 };
 
+// The angle between unit vectors a and b, radians. |a - b| is 2 sin(angle / 2); most courses of
+// a log turn by far less than a degree, where the angle is taken from that chord by the series of
+// arcsine to x^7 (the next term is under 3e-17 of x below x = 0.01): std::atan2 of the cross and
+// dot products, taken for every row twice, was a tenth of the dogleg severities' time.
+double angleBetweenUnit(const glm::dvec3& a, const glm::dvec3& b) {
+    const double x = glm::length(a - b) / 2.0;
+    if (x < 1e-2) {
+        const double x2 = x * x;
+        return 2.0 * (x + x * x2 * (1.0 / 6.0 + x2 * (3.0 / 40.0 + x2 * (5.0 / 112.0))));
+    }
+    return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
+}
+
 }  // namespace
 
 namespace {
@@ -84,9 +97,7 @@ void setDls(std::vector<PathPoint>& path, const glm::dvec3* tangents, double cou
         // Each end's direction belongs to the mean depth of the points averaged there.
         const SlidingMean::Mean ta = upper(a - window_m, a + window_m);
         const SlidingMean::Mean tb = lower(b - window_m, b + window_m);
-        const double dogleg =
-            glm::degrees(std::atan2(glm::length(glm::cross(ta.direction, tb.direction)),
-                                    glm::dot(ta.direction, tb.direction)));
+        const double dogleg = glm::degrees(angleBetweenUnit(ta.direction, tb.direction));
         const double course = tb.md - ta.md;
         p.dls_degPer30m = course > 0.0 ? dogleg * 30.0 / course : 0.0;
     }

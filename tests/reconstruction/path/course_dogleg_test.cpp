@@ -73,6 +73,23 @@ TEST(CourseDoglegTest, GivenTangentsGiveTheSeveritiesTheAnglesGive) {
     EXPECT_THROW(setCourseLengthDls(given, tangents), std::invalid_argument);
 }
 
+// Slow builds, whose courses turn by less than the 1.15 degrees below which the angle between
+// the ends' directions is taken by a series, and by more: each gives its rate to 1e-9 of it.
+TEST(CourseDoglegTest, SlowBuildsEitherSideOfTheSeriesGiveTheirRates) {
+    for (const double rate : {0.05, 0.5, 1.1, 1.2, 2.0}) {
+        static double perMetre = 0.0;
+        perMetre = rate / 30.0;
+        std::vector<PathPoint> path = stations(
+            0.0, 200.0, 0.1, [](double md) { return 5.0 + md * perMetre; },
+            [](double) { return 120.0; });
+        setCourseLengthDls(path);
+        for (const PathPoint& p : path)
+            if (p.md >= 20.0 && p.md <= 180.0) {
+                ASSERT_NEAR(p.dls_degPer30m, rate, 1e-9 * rate) << rate << " at " << p.md;
+            }
+    }
+}
+
 // A turn of 3 deg/30 m in azimuth at 30 degrees inclination: 1.5 deg/30 m (= 3 sin 30).
 TEST(CourseDoglegTest, TurnAtThirtyDegreesGivesHalfItsRate) {
     std::vector<PathPoint> path = stations(
