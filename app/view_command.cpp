@@ -7,10 +7,6 @@
 #include <filesystem>
 #include <optional>
 
-#ifdef __GLIBC__
-#include <malloc.h>
-#endif
-
 #include <QApplication>
 #include <QTimer>
 
@@ -116,30 +112,10 @@ private:
     QTimer m_settle;
 };
 
-// The window loads on many short-lived threads (two loads at once, each read's pieces, each
-// well's analysis or lean form), each of which allocates a well's table and placement (about
-// 100 MB a well of 1 km at 2.5 mm) and frees them once the well is planned. glibc's malloc by
-// default gives threads arenas of their own and hands large blocks back to the kernel as they
-// are freed, so each well faulted in (and the kernel zeroed) fresh pages: 80-100 thousand
-// faults for 100 wells. One arena, blocks up to 256 MiB kept in it and its top kept while
-// loading: the next well reuses the memory the last one freed (18-19 thousand faults), and
-// WellSession::giveBackFreedMemory (malloc_trim) hands it all back once the load and the
-// analyses end. 100 wells of 1 km at 2.5 mm load in 12.4-14.2 s against 12.8-15.4 s at the
-// same peak (docs/benchmarks.md, "Freed memory reused while a field loads"). Set before any
-// thread starts; glibc only.
-void keepFreedMemoryWhileLoading() {
-#ifdef __GLIBC__
-    mallopt(M_ARENA_MAX, 1);
-    mallopt(M_MMAP_THRESHOLD, 256 << 20);
-    mallopt(M_TRIM_THRESHOLD, 1 << 30);
-#endif
-}
-
 int showWindow(int argc, char** argv, const std::vector<WellToOpen>& wells,
                std::optional<double> at_m = std::nullopt, bool exaggerationGiven = false,
                int status = kExitOk, bool runs = false,
                std::optional<std::chrono::steady_clock::time_point> statsFrom = std::nullopt) {
-    keepFreedMemoryWhileLoading();
     QApplication application(argc, argv);
     initGui();
     MainWindow window;

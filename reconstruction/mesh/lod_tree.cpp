@@ -128,8 +128,7 @@ void padDeviations(const WellGeometry& g, const std::vector<std::size_t>& candid
                 // widened by far more than rounding can take from it, so a row is passed over
                 // only where its distance, as computed below, could not raise any F's worst:
                 // the worst at one F is the same whichever other factors are listed.
-                // (Every factor, with no early way out: most rows beat none, and the loop
-                // without a branch is taken two or four factors at once.)
+                // (Every factor, with no early way out: most rows beat none.)
                 const double cross = 2.0 * std::sqrt(cc * shape2);
                 bool beats = false;
                 for (std::size_t f = 0; f < fs.size(); ++f) {
