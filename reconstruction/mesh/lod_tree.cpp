@@ -52,6 +52,73 @@ std::pair<std::size_t, std::size_t> childSpans(std::size_t index, std::size_t ch
     return {from, std::min(from + kLodTreeFanOut, children)};
 }
 
+// Which rows can raise the worst distance at some exaggeration F_f (padDeviations). A row
+// whose polygon lies within p of the line's centroid and q of its shape (p = |dc|, q the largest
+// |ds|) is drawn within p + F q at F, so it cannot raise the worst w_f at any F_f where
+// p + F_f q <= s_f, s_f the root of w_f narrowed by far more than rounding can take. That holds
+// at every F_f where p <= h(q), h the lower envelope of the lines s_f - F_f q: a few pieces,
+// walked in order of q, rebuilt only when a worst rises. (Before, each row tested every F_f:
+// with the fourteen factors a field's well is planned for, a fifth of its plan.) Written here:
+// no library has the envelope of a handful of lines.
+class PassOver {
+public:
+    explicit PassOver(const std::vector<double>& fs) : m_fs(fs), m_roots(fs.size(), 0.0) {
+        rebuild();
+    }
+
+    // The worst squared distances changed: the envelope from them.
+    void update(const std::vector<double>& worst2) {
+        for (std::size_t f = 0; f < m_fs.size(); ++f)
+            m_roots[f] = std::sqrt(worst2[f] / (1.0 + 1e-8));
+        rebuild();
+    }
+
+    // True where a row within p of the centroid's line and q of the shape's may raise a worst.
+    bool mayRaise(double p, double q) const {
+        std::size_t piece = 0;
+        while (piece + 1 < m_from.size() && m_from[piece + 1] <= q) ++piece;
+        const std::size_t f = m_line[piece];
+        return p > m_roots[f] - m_fs[f] * q;
+    }
+
+private:
+    // From q = 0, the line lowest there (the steeper of equals); then, at each step, the
+    // steeper line that crosses the current one first.
+    void rebuild() {
+        m_from.clear();
+        m_line.clear();
+        if (m_fs.empty()) return;
+        std::size_t current = 0;
+        for (std::size_t f = 1; f < m_fs.size(); ++f)
+            if (m_roots[f] < m_roots[current] ||
+                (m_roots[f] == m_roots[current] && m_fs[f] > m_fs[current]))
+                current = f;
+        double from = 0.0;
+        for (;;) {
+            m_from.push_back(from);
+            m_line.push_back(current);
+            std::size_t next = current;
+            double at = std::numeric_limits<double>::infinity();
+            for (std::size_t f = 0; f < m_fs.size(); ++f) {
+                if (!(m_fs[f] > m_fs[current])) continue;
+                const double cross = (m_roots[f] - m_roots[current]) / (m_fs[f] - m_fs[current]);
+                if (cross < at || (cross == at && m_fs[f] > m_fs[next])) {
+                    at = cross;
+                    next = f;
+                }
+            }
+            if (next == current) return;
+            from = std::max(from, at);
+            current = next;
+        }
+    }
+
+    const std::vector<double>& m_fs;
+    std::vector<double> m_roots;      // s_f
+    std::vector<double> m_from;       // where each piece starts, in q
+    std::vector<std::size_t> m_line;  // the factor whose line each piece is
+};
+
 // The pads' part of a span's error at each exaggeration `fs` (SpanPlan::padError_mm): the
 // largest drawn distance between a measured candidate's pad polygon and the straight line (in
 // depth) between the polygons of the kept rows on either side of it, each polygon drawn about
@@ -92,6 +159,7 @@ void padDeviations(const WellGeometry& g, const std::vector<std::size_t>& candid
         return std::abs(area2) > 1e-6 ? sum * (1.0 / (3.0 * area)) : glm::dvec2(0.0);
     };
     std::vector<double> worst2(fs.size(), 0.0);
+    PassOver passOver(fs);
     double worstCentroid2 = 0.0, worstShape2 = 0.0;  // squared: one square root in all
     std::vector<double> along(knots);                // d_j: the radius less the straight line's
     std::size_t a = 0;  // the candidate that is kept[k]; every kept row is one
@@ -122,26 +190,21 @@ void padDeviations(const WellGeometry& g, const std::vector<std::size_t>& candid
                 }
                 shape2 = std::max(shape2, 0.0);
                 worstShape2 = std::max(worstShape2, shape2);
-                // Each point is within |dc| + F |ds| at F: a row that cannot beat the worst
-                // found at any F is passed over (most rows, once a few are in). The bound,
-                // squared (|dc|^2 + 2 F |dc| |ds| + F^2 |ds|^2: one square root a row), is
-                // widened by far more than rounding can take from it, so a row is passed over
-                // only where its distance, as computed below, could not raise any F's worst:
-                // the worst at one F is the same whichever other factors are listed.
-                // (Every factor, with no early way out: most rows beat none.)
-                const double cross = 2.0 * std::sqrt(cc * shape2);
-                bool beats = false;
-                for (std::size_t f = 0; f < fs.size(); ++f) {
-                    const double bound2 = (cc + fs[f] * (cross + fs[f] * shape2)) * (1.0 + 1e-8);
-                    beats |= bound2 > worst2[f];
-                }
-                if (!beats) continue;
+                // Each point is within |dc| + F |ds| at F: a row that cannot raise the worst
+                // found at any F is passed over (most rows, once a few are in; PassOver). The
+                // worst at one F is the same whichever other factors are listed.
+                if (!passOver.mayRaise(std::sqrt(cc), std::sqrt(shape2))) continue;
+                bool raised = false;
                 for (std::size_t j = 0; j < knots; ++j) {
                     const glm::dvec2 ds = along[j] * unit[j] - dc;
                     const double cs = glm::dot(dc, ds), ss = glm::dot(ds, ds);
-                    for (std::size_t f = 0; f < fs.size(); ++f)
-                        worst2[f] = std::max(worst2[f], cc + fs[f] * (2.0 * cs + fs[f] * ss));
+                    for (std::size_t f = 0; f < fs.size(); ++f) {
+                        const double d2 = cc + fs[f] * (2.0 * cs + fs[f] * ss);
+                        raised |= d2 > worst2[f];
+                        worst2[f] = std::max(worst2[f], d2);
+                    }
                 }
+                if (raised) passOver.update(worst2);
             }
         }
         a = b;

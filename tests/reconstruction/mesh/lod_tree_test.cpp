@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -466,4 +467,72 @@ TEST(LodTreeTest, ASpansPadErrorIsTheDrawnDistanceBetweenTheRowsPolygonAndTheLin
         EXPECT_NEAR(span.padError_mm[f], expected[f], 1e-9 * expected[f]) << "x" << fs[f];
     EXPECT_NEAR(span.padCentroid_mm, centroidWorst, 1e-9);
     EXPECT_NEAR(span.padShape_mm, shapeWorst, 1e-9);
+}
+
+// Many rows pushed off round by different amounts, in random order of size along the span: the
+// rows passed over as unable to raise the worst at any factor (the envelope of the factors'
+// lines) never could. The pads' error at each of fourteen factors, listed out of order, is the
+// largest drawn distance over every pushed row, as each polygon is drawn (drawnRing,
+// ringCentroid).
+TEST(LodTreeTest, ASpansPadErrorAtEveryFactorIsTheLargestOverEveryRow) {
+    SyntheticWellSpec spec = syntheticProfile("circle", 40.0, 0.02);
+    spec.toolRotation_degPerM = 0.0;
+    SectionTable t = makeSyntheticWell(spec);
+    std::mt19937 random(5);
+    std::uniform_real_distribution<double> push(-0.3, 0.3);
+    std::vector<std::pair<std::size_t, std::vector<double>>> pushed;
+    for (std::size_t row = 20; row < 780; row += 7) {
+        std::vector<double> by(6);
+        // Pushes of every size: most small, a few large, anywhere along the span.
+        const double scale = (row % 49 == 0) ? 2.5 : (row % 5 == 0 ? 0.2 : 1.0);  // up to 0.75 mm
+        for (double& b : by) b = scale * push(random);
+        pushed.emplace_back(row, by);
+    }
+    // A row moved off the axis whole (its centroid 3 mm away, its shape nearly round), and after
+    // it one made oval about the axis (its centroid on the axis, its shape 1.2 mm off): the first
+    // is the farther at x 1, the second at x 1000, where only the steepest factors' lines can
+    // tell that it may raise their worst.
+    std::vector<double> moved(6), oval(6);
+    for (std::size_t a = 0; a < 6; ++a) {
+        const double angle = glm::radians(60.0 * static_cast<double>(a));
+        moved[a] = 3.0 * std::cos(angle - 0.4);
+        oval[a] = 2.0 * std::cos(2.0 * angle);
+    }
+    pushed.emplace_back(101, moved);
+    pushed.emplace_back(506, oval);  // between the random rows (20 + 7 k)
+    std::sort(pushed.begin(), pushed.end());
+    for (const auto& [row, by] : pushed)
+        for (int a = 0; a < t.armCount; ++a) t.radii(row)[a] += by[static_cast<std::size_t>(a)];
+    const WellGeometry g(std::make_shared<const SectionTable>(t), GeometryOptions{});
+    const std::vector<double> fs = {30, 1, 1000, 3, 50, 7, 2, 300, 10, 500, 5, 100, 20, 200};
+    const CoarsePlan plan = planCoarseMeshes(g, kFieldFirstCoarseLevel, fs, 1);
+    ASSERT_FALSE(plan.spans.empty());
+    const SpanPlan& span = plan.spans.front();
+    ASSERT_EQ(span.depth, 1);
+    const double gaugeRadius = spec.bitSize_mm / 2.0;
+    std::vector<glm::dvec2> gauge;
+    drawnRing(std::vector<double>(6, gaugeRadius), 1.0, gauge);
+    const glm::dvec2 gaugeCentroid = ringCentroid(gauge);
+    std::vector<double> expected(fs.size(), 0.0);
+    std::size_t counted = 0;
+    for (const auto& [row, by] : pushed) {
+        if (row > span.lastRow) break;
+        ASSERT_FALSE(std::binary_search(span.rows.begin(), span.rows.end(), row)) << row;
+        ++counted;
+        std::vector<double> radii(6);
+        for (std::size_t a = 0; a < 6; ++a) radii[a] = gaugeRadius + by[a];
+        std::vector<glm::dvec2> ring;
+        drawnRing(radii, 1.0, ring);
+        const glm::dvec2 centroid = ringCentroid(ring);
+        const glm::dvec2 dc = centroid - gaugeCentroid;
+        for (std::size_t j = 0; j < 6; ++j) {
+            const glm::dvec2 ds = (ring[j] - centroid) - (gauge[j] - gaugeCentroid);
+            for (std::size_t f = 0; f < fs.size(); ++f)
+                expected[f] = std::max(expected[f], glm::length(dc + fs[f] * ds));
+        }
+    }
+    ASSERT_GT(counted, 50u);
+    ASSERT_EQ(span.padError_mm.size(), fs.size());
+    for (std::size_t f = 0; f < fs.size(); ++f)
+        EXPECT_NEAR(span.padError_mm[f], expected[f], 1e-9 * expected[f]) << "x" << fs[f];
 }
