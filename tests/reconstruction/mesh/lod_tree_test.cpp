@@ -417,6 +417,42 @@ TEST(LodTreeTest, AWellsPlanTakesEachRowsKnotsOnceAndDecidesAsEachPlanAlone) {
     }
 }
 
+namespace {
+// What the span of a gauge hole with rows pushed off round measures where it keeps none of
+// them (its kept rows all gauge): at each exaggeration F, the largest distance between a
+// pushed row's polygon and the gauge polygon, each drawn F times larger about its own centroid
+// (drawnRing, ringCentroid): |dc + F ds| over the pads, dc between the centroids, ds between
+// the points about them; and the largest |dc| and |ds|. `pushes`: each row's push of each arm.
+struct DrawnPadErrors {
+    std::vector<double> at;  // at each of the factors
+    double centroid = 0.0, shape = 0.0;
+};
+DrawnPadErrors drawnPadErrors(double gaugeRadius, const std::vector<std::vector<double>>& pushes,
+                              const std::vector<double>& fs) {
+    std::vector<glm::dvec2> gauge;
+    drawnRing(std::vector<double>(6, gaugeRadius), 1.0, gauge);
+    const glm::dvec2 gaugeCentroid = ringCentroid(gauge);
+    DrawnPadErrors out;
+    out.at.assign(fs.size(), 0.0);
+    for (const std::vector<double>& by : pushes) {
+        std::vector<double> radii(6);
+        for (std::size_t a = 0; a < 6; ++a) radii[a] = gaugeRadius + by[a];
+        std::vector<glm::dvec2> ring;
+        drawnRing(radii, 1.0, ring);
+        const glm::dvec2 centroid = ringCentroid(ring);
+        const glm::dvec2 dc = centroid - gaugeCentroid;
+        out.centroid = std::max(out.centroid, glm::length(dc));
+        for (std::size_t j = 0; j < 6; ++j) {
+            const glm::dvec2 ds = (ring[j] - centroid) - (gauge[j] - gaugeCentroid);
+            out.shape = std::max(out.shape, glm::length(ds));
+            for (std::size_t f = 0; f < fs.size(); ++f)
+                out.at[f] = std::max(out.at[f], glm::length(dc + fs[f] * ds));
+        }
+    }
+    return out;
+}
+}  // namespace
+
 TEST(LodTreeTest, ASpansPadErrorIsTheDrawnDistanceBetweenTheRowsPolygonAndTheLine) {
     // A gauge hole with two rows pushed off round inside the tolerance of the first depth: the
     // span keeps neither, and its pads' error at each exaggeration F is the largest distance
@@ -438,29 +474,15 @@ TEST(LodTreeTest, ASpansPadErrorIsTheDrawnDistanceBetweenTheRowsPolygonAndTheLin
     ASSERT_FALSE(plan.spans.empty());
     const SpanPlan& span = plan.spans.front();
     ASSERT_EQ(span.depth, 1);
-    const double gaugeRadius = spec.bitSize_mm / 2.0;
-    std::vector<glm::dvec2> gauge;
-    drawnRing(std::vector<double>(6, gaugeRadius), 1.0, gauge);
-    const glm::dvec2 gaugeCentroid = ringCentroid(gauge);
-    std::vector<double> expected(fs.size(), 0.0);
-    double centroidWorst = 0.0, shapeWorst = 0.0;
+    std::vector<std::vector<double>> pushes;
     for (const auto& [depth_m, by] : pushed) {
         const auto row = static_cast<std::size_t>(std::lround(depth_m / spec.step_m));
         ASSERT_FALSE(std::binary_search(span.rows.begin(), span.rows.end(), row)) << depth_m;
-        std::vector<double> radii(6);
-        for (std::size_t a = 0; a < 6; ++a) radii[a] = gaugeRadius + by[a];
-        std::vector<glm::dvec2> ring;
-        drawnRing(radii, 1.0, ring);
-        const glm::dvec2 centroid = ringCentroid(ring);
-        const glm::dvec2 dc = centroid - gaugeCentroid;
-        centroidWorst = std::max(centroidWorst, glm::length(dc));
-        for (std::size_t j = 0; j < 6; ++j) {
-            const glm::dvec2 ds = (ring[j] - centroid) - (gauge[j] - gaugeCentroid);
-            shapeWorst = std::max(shapeWorst, glm::length(ds));
-            for (std::size_t f = 0; f < fs.size(); ++f)
-                expected[f] = std::max(expected[f], glm::length(dc + fs[f] * ds));
-        }
+        pushes.push_back(by);
     }
+    const DrawnPadErrors drawn = drawnPadErrors(spec.bitSize_mm / 2.0, pushes, fs);
+    const std::vector<double>& expected = drawn.at;
+    const double centroidWorst = drawn.centroid, shapeWorst = drawn.shape;
     ASSERT_GT(centroidWorst, 1.0);  // the pushed rows' centroids moved
     ASSERT_EQ(span.padError_mm.size(), fs.size());
     for (std::size_t f = 0; f < fs.size(); ++f)
@@ -509,28 +531,14 @@ TEST(LodTreeTest, ASpansPadErrorAtEveryFactorIsTheLargestOverEveryRow) {
     ASSERT_FALSE(plan.spans.empty());
     const SpanPlan& span = plan.spans.front();
     ASSERT_EQ(span.depth, 1);
-    const double gaugeRadius = spec.bitSize_mm / 2.0;
-    std::vector<glm::dvec2> gauge;
-    drawnRing(std::vector<double>(6, gaugeRadius), 1.0, gauge);
-    const glm::dvec2 gaugeCentroid = ringCentroid(gauge);
-    std::vector<double> expected(fs.size(), 0.0);
-    std::size_t counted = 0;
+    std::vector<std::vector<double>> pushes;
     for (const auto& [row, by] : pushed) {
         if (row > span.lastRow) break;
         ASSERT_FALSE(std::binary_search(span.rows.begin(), span.rows.end(), row)) << row;
-        ++counted;
-        std::vector<double> radii(6);
-        for (std::size_t a = 0; a < 6; ++a) radii[a] = gaugeRadius + by[a];
-        std::vector<glm::dvec2> ring;
-        drawnRing(radii, 1.0, ring);
-        const glm::dvec2 centroid = ringCentroid(ring);
-        const glm::dvec2 dc = centroid - gaugeCentroid;
-        for (std::size_t j = 0; j < 6; ++j) {
-            const glm::dvec2 ds = (ring[j] - centroid) - (gauge[j] - gaugeCentroid);
-            for (std::size_t f = 0; f < fs.size(); ++f)
-                expected[f] = std::max(expected[f], glm::length(dc + fs[f] * ds));
-        }
+        pushes.push_back(by);
     }
+    const std::size_t counted = pushes.size();
+    const std::vector<double> expected = drawnPadErrors(spec.bitSize_mm / 2.0, pushes, fs).at;
     ASSERT_GT(counted, 50u);
     ASSERT_EQ(span.padError_mm.size(), fs.size());
     for (std::size_t f = 0; f < fs.size(); ++f)
