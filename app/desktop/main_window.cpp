@@ -89,6 +89,17 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     // The first segments of a load, then the logs once everything is in (as render frames
     // them; View all shows the paths from the wellheads too).
     connect(m_session, &WellSession::firstSegmentsShown, m_navigator, &WellNavigator::viewAll);
+    // A field's load draws its first picture at once, then a frame a quarter second at most.
+    auto limitFramesWhileAFieldLoads = [this] {
+        if (m_session->loading() && m_session->wellCount() > 1)
+            m_viewer->limitFrames(kFieldLoadFrame);
+    };
+    connect(m_session, &WellSession::firstSegmentsShown, this, limitFramesWhileAFieldLoads);
+    connect(m_session, &WellSession::loadStarted, this, [this, limitFramesWhileAFieldLoads] {
+        if (m_session->framed()) limitFramesWhileAFieldLoads();
+    });
+    for (auto ended : {&WellSession::allWellsLoaded, &WellSession::loadCancelled})
+        connect(m_session, ended, this, [this] { m_viewer->limitFrames({}); });
     connect(m_session, &WellSession::allWellsLoaded, m_navigator,
             [this] { m_navigator->frameLogs([this] { return m_session->wellScenes(); }); });
     m_labelTimer.setInterval(kLabelPoll_ms);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <chrono>
 #include <memory>
 #include <string>
 #include <vector>
@@ -84,7 +85,10 @@ private:
     void placeLabelsWhenStill();
     static QSize defaultSize();
     static constexpr QSize kMinimumViewSize{480, 360};
-    static constexpr int kLabelPoll_ms = 150;       // the camera rests when unchanged this long
+    static constexpr int kLabelPoll_ms = 150;  // the camera rests when unchanged this long
+    // While a field loads, once its first picture is drawn: a frame a quarter second at most
+    // (WellViewer::limitFrames).
+    static constexpr std::chrono::milliseconds kFieldLoadFrame{250};
     static constexpr float kLabelRoom_px = 90.0f;   // a depth label right of a well
     static constexpr float kNameOffset_px = 25.0f;  // a well's name from its path
     static constexpr float kBold = 1.08f;           // DejaVu Sans Bold's width over Book's

@@ -110,6 +110,8 @@ public:
     void setWellVisible(int well, bool visible);
 
     std::size_t wellCount() const { return m_wells.size(); }
+    // Whether this opening's first segments are shown (firstSegmentsShown sent).
+    bool framed() const { return m_framed; }
     // Wells load a few at a time (loadsAtOnce: the machine's threads, at least 2), in the
     // order they were added: a field of a hundred started at once had two hundred threads
     // share the cores with the window, which showed nothing for eight seconds. A well added

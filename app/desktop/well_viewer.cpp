@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 
+#include <Inventor/SoSceneManager.h>
 #include <Inventor/events/SoMouseButtonEvent.h>
 #include <Inventor/nodes/SoSeparator.h>
 
@@ -9,9 +10,49 @@
 
 namespace caliper3d::app {
 
-WellViewer::WellViewer(QWidget* parent) : SoQtExaminerViewer(parent) {}
+WellViewer::WellViewer(QWidget* parent) : SoQtExaminerViewer(parent) {
+    // The scene manager asks for a frame when the scene changes: through frameWhenDue, which
+    // may hold it back (limitFrames), in place of the render area's own callback that draws
+    // at once.
+    getSceneManager()->setRenderCallback(&WellViewer::sceneChanged, this);
+    m_laterFrame.setSingleShot(true);
+    QObject::connect(&m_laterFrame, &QTimer::timeout, [this] { frameWhenDue(); });
+}
+
+void WellViewer::limitFrames(std::chrono::milliseconds interval) {
+    // The first frame a limit sees is drawn at once (a field's first picture).
+    if (m_frameInterval.count() <= 0) m_lastFrame = {};
+    m_frameInterval = interval;
+    // A frame held back comes now: no limit is left to wait for.
+    if (interval.count() <= 0 && m_laterFrame.isActive()) {
+        m_laterFrame.stop();
+        frameWhenDue();
+    }
+}
+
+void WellViewer::sceneChanged(void* self, SoSceneManager* /*manager*/) {
+    static_cast<WellViewer*>(self)->frameWhenDue();
+}
+
+void WellViewer::frameWhenDue() {
+    const Clock::time_point now = Clock::now();
+    const auto since = now - m_lastFrame;
+    if (m_frameInterval.count() > 0 && since < m_frameInterval && now - m_lastInput > kInputFree &&
+        !isAnimating()) {
+        if (!m_laterFrame.isActive())
+            m_laterFrame.start(
+                std::chrono::ceil<std::chrono::milliseconds>(m_frameInterval - since));
+        return;
+    }
+    m_laterFrame.stop();
+    m_lastFrame = now;
+    ++m_framesDrawn;
+    render();
+}
 
 WellViewer::~WellViewer() {
+    // No frame asked of this viewer once it is going (its timer goes first).
+    getSceneManager()->setRenderCallback(nullptr, nullptr);
     setLegend(nullptr);
 }
 
@@ -48,6 +89,7 @@ void WellViewer::sizeChanged(const SbVec2s& size) {
 }
 
 SbBool WellViewer::processSoEvent(const SoEvent* event) {
+    m_lastInput = Clock::now();
     if (m_onClick && event->isOfType(SoMouseButtonEvent::getClassTypeId())) {
         const auto* button = static_cast<const SoMouseButtonEvent*>(event);
         if (button->getButton() == SoMouseButtonEvent::BUTTON1) {

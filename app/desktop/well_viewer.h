@@ -1,7 +1,10 @@
 #pragma once
 
+#include <chrono>
 #include <functional>
 #include <optional>
+
+#include <QTimer>
 
 #include <Inventor/Qt/viewers/SoQtExaminerViewer.h>
 #include <Inventor/SbVec2s.h>
@@ -9,6 +12,7 @@
 #include "reconstruction/mesh/wall_colouring.h"
 #include "scenegraph/colour_legend.h"
 
+class SoSceneManager;
 class SoSeparator;
 
 namespace caliper3d::app {
@@ -35,12 +39,27 @@ public:
     void onClick(std::function<void(const SbVec2s& pixel)> callback) {
         m_onClick = std::move(callback);
     }
+    // While `interval` is above zero, the frames a change of the scene asks for come at most one
+    // an interval, the first at once and the last of them always (a field's load changes the scene
+    // for every well it draws, and each frame took the cores the load reads with:
+    // docs/architecture.md, "Frames while a field loads"). Frames asked for within kInputFree of
+    // the user's own input (a turn, a zoom, a click) or while the camera spins are drawn at once;
+    // so is render().
+    void limitFrames(std::chrono::milliseconds interval);
+    std::chrono::milliseconds frameLimit() const { return m_frameInterval; }
+    // Frames the scene's changes drew since the viewer was made (tests).
+    int framesDrawn() const { return m_framesDrawn; }
 
 protected:
     SbBool processSoEvent(const SoEvent* event) override;
     void sizeChanged(const SbVec2s& size) override;
 
 private:
+    using Clock = std::chrono::steady_clock;
+    static constexpr std::chrono::milliseconds kInputFree{500};
+    static void sceneChanged(void* self, SoSceneManager* manager);
+    void frameWhenDue();
+
     static constexpr int kClickSlop_px = 3;  // a press and release this close is a click
     // In the lower half of the view: the wells' names are at its top.
     static constexpr scenegraph::LegendBar kLegendBar = scenegraph::kLowerLegendBar;
@@ -49,6 +68,10 @@ private:
     short m_legendHeight = 0;  // the view's height the legend was laid out for
     std::function<void(const SbVec2s&)> m_onClick;
     SbVec2s m_pressedAt{-1000, -1000};
+    std::chrono::milliseconds m_frameInterval{0};
+    Clock::time_point m_lastFrame{}, m_lastInput{};
+    QTimer m_laterFrame;  // single shot: the frame held back
+    int m_framesDrawn = 0;
 };
 
 }  // namespace caliper3d::app

@@ -431,3 +431,39 @@ TEST_F(DesktopWindowTest, TheLegendsPanelIsWhereTheViewerDrawsIt) {
         5000));
     expectPanelWhereItsBoxSays("after the window was made lower");
 }
+
+// While a field loads, once its first picture is drawn, the viewer draws a frame a quarter
+// second at most (each well drawn asked for one, and they took the cores the load reads with);
+// the limit ends with the load, and a well opened alone is drawn as it streams.
+TEST_F(DesktopWindowTest, AFieldsLoadLimitsTheViewersFramesUntilItEnds) {
+    app::MainWindow window;
+    window.resize(1280, 960);
+    window.show();
+    auto* viewer = dynamic_cast<app::WellViewer*>(window.viewer());
+    ASSERT_NE(viewer, nullptr);
+    std::vector<std::chrono::milliseconds> asLoaded;
+    QObject::connect(&window.session(), &app::WellSession::wellLoaded,
+                     [&](int) { asLoaded.push_back(viewer->frameLimit()); });
+    const std::string log = test::syntheticLog("example", 100.0, 0.05).string();
+    const auto loadedAll = [&] {
+        return test::waitUntil([&] { return !window.session().loading(); }, 120000);
+    };
+
+    window.session().openWell(QString::fromStdString(log), app::LoadOptions{});
+    ASSERT_TRUE(loadedAll());
+    ASSERT_EQ(asLoaded.size(), 1u);
+    EXPECT_EQ(asLoaded[0].count(), 0) << "a well alone";
+
+    asLoaded.clear();
+    app::WellSource first{log, {}, reconstruction::Wellhead{0.0, 0.0, 0.0}, {}};
+    window.session().openWell(first, app::LoadOptions{});
+    for (const double east : {30.0, 60.0}) {
+        app::WellSource next{log, {}, reconstruction::Wellhead{east, 0.0, 0.0}, {}};
+        window.session().addWell(next, app::LoadOptions{});
+    }
+    ASSERT_TRUE(loadedAll());
+    ASSERT_EQ(asLoaded.size(), 3u);
+    for (const std::chrono::milliseconds limit : asLoaded)
+        EXPECT_EQ(limit.count(), 250) << "each well of the field loaded under the limit";
+    EXPECT_EQ(viewer->frameLimit().count(), 0) << "the limit ends with the load";
+}
