@@ -482,9 +482,17 @@ int WellSession::addWell(const WellSource& source, const LoadOptions& options) {
     m_model.addWell(record);
     emit lookChanged();
 
-    // Survey, log and geometry are all read on the worker (loadWell).
-    w.pipeline =
-        std::make_unique<reconstruction::WellLoadPipeline>(source, options, m_origin, firstLevel);
+    // Survey, log and geometry are all read on the worker (loadWell). A well added while
+    // others load reads and is placed on one thread, as render reads a field: the loads at
+    // once keep the cores busy, and each thread more is made and ended for every well
+    // (docs/benchmarks.md, "Frames while a field loads, and where the window's load still
+    // spends"). Its record keeps the options as given.
+    LoadOptions loadOptions = options;
+    if (std::any_of(m_wells.begin(), m_wells.end() - 1,
+                    [](const auto& other) { return other->pipeline && !other->done; }))
+        loadOptions.readThreads = 1;
+    w.pipeline = std::make_unique<reconstruction::WellLoadPipeline>(source, loadOptions, m_origin,
+                                                                    firstLevel);
     emit status("Loading " + w.name + "...");
     w.feeder = std::make_unique<scenegraph::SegmentFeeder>(*w.pipeline, w.view->scene(),
                                                            feederCallbacks(w, source.picksPath));
@@ -1245,15 +1253,16 @@ void WellSession::startLeanForm(Well& well) {
         this,
         [this, id = well.id, generation = m_styleGeneration, whole = record.geometry,
          analysis = record.analysis, colour = record.options.colour,
-         options = windowAnalysis(record.options),
-         firstLevel = well.view->firstCoarseLevel()]() -> std::function<void()> {
+         options = windowAnalysis(record.options), firstLevel = well.view->firstCoarseLevel(),
+         // While the field loads its loads keep the cores busy: the plan takes one thread.
+         threads = loading() ? 1 : 2]() -> std::function<void()> {
             auto form = std::make_shared<LeanForm>();
             std::string error;
             try {
                 form->plan = std::make_shared<const reconstruction::CoarsePlan>(
                     reconstruction::planCoarseMeshes(
                         *whole, firstLevel,
-                        plannedExaggerations({whole->options().radialExaggeration}), 2));
+                        plannedExaggerations({whole->options().radialExaggeration}), threads));
                 form->rows =
                     std::make_shared<const std::vector<std::size_t>>(heldRows(*whole, *form->plan));
                 form->base = std::make_shared<const reconstruction::WellGeometry>(

@@ -1,5 +1,6 @@
 #include "reconstruction/load/streamed_load.h"
 
+#include <algorithm>
 #include <atomic>
 #include <condition_variable>
 #include <exception>
@@ -148,6 +149,7 @@ LoadedWell loadWellStreamed(const WellSource& source, const LoadOptions& options
         try {
             io::StreamOptions stream;
             stream.cancel = options.cancel;
+            stream.threads = options.readThreads;
             // Blocks of 2 MB: the first stretch comes sooner, and a cancel is seen within a
             // block parsed while the meshing thread shares the cores.
             stream.blockBytes = 2u << 20;
@@ -213,7 +215,9 @@ LoadedWell loadWellStreamed(const WellSource& source, const LoadOptions& options
     io::SectionTable& whole = *handover.whole;
     whole.source = source.path;
     out.table = std::make_shared<const io::SectionTable>(std::move(whole));
-    geometry.threads = 2;  // the reading thread has ended: both cores place the whole well
+    // The reading thread has ended: the threads the read had place the whole well (both cores,
+    // or one where other wells' loads share them).
+    geometry.threads = std::max(1, options.readThreads);
     // The segments already sent were cut to this length: the whole well keeps it.
     if (builder.segmentLength_m() > 0.0) geometry.segmentLength_m = builder.segmentLength_m();
     out.geometry = std::make_shared<const WellGeometry>(out.table, geometry);

@@ -63,8 +63,8 @@ struct Sent {
     std::vector<LoadEvent> events;
     double readFraction = 0.0;
 };
-Sent loadSending(LoadSends sends) {
-    WellLoadPipeline pipeline(WellSource{wellFile(), {}, {}, {}}, LoadOptions{}, Wellhead{});
+Sent loadSending(LoadSends sends, const LoadOptions& options = {}) {
+    WellLoadPipeline pipeline(WellSource{wellFile(), {}, {}, {}}, options, Wellhead{});
     pipeline.start(sends);
     Sent sent;
     sent.events = drainAll(pipeline);
@@ -196,6 +196,34 @@ TEST(WellLoadPipelineTest, AWellSentAsGeometryOnlySendsItsWholeGeometryAndNoMesh
     EXPECT_EQ(std::get<LoadFinished>(a.back()).segments, 60u);
     for (std::size_t row = 0; row < placed.table().rowCount(); row += 997)
         EXPECT_EQ(placed.centre(row), reference.centre(row)) << row;
+}
+
+// A well the window loads beside others reads and is placed on one thread
+// (LoadOptions::readThreads): the same well, bit for bit, as on two.
+TEST(WellLoadPipelineTest, AWellReadAndPlacedOnOneThreadIsTheWellOnTwo) {
+    LoadOptions one;
+    one.readThreads = 1;
+    for (const LoadSends sends : {LoadSends::geometryOnly, LoadSends::streamed}) {
+        const Sent a = loadSending(sends), b = loadSending(sends, one);
+        const WellGeometry& two = geometrySent(a.events);
+        const WellGeometry& single = geometrySent(b.events);
+        ASSERT_EQ(single.table().rowCount(), 24'001u);
+        EXPECT_EQ(single.table().depth_m, two.table().depth_m);
+        EXPECT_EQ(single.table().radius_mm, two.table().radius_mm);
+        EXPECT_EQ(single.table().p1az_deg, two.table().p1az_deg);
+        EXPECT_EQ(single.table().devi_deg, two.table().devi_deg);
+        EXPECT_EQ(single.table().hazi_deg, two.table().hazi_deg);
+        ASSERT_EQ(single.segmentCount(), two.segmentCount());
+        for (std::size_t row = 0; row < single.table().rowCount(); ++row) {
+            const PathPoint &p = single.path()[row], &q = two.path()[row];
+            ASSERT_EQ(p.north, q.north) << row;
+            ASSERT_EQ(p.east, q.east) << row;
+            ASSERT_EQ(p.tvd, q.tvd) << row;
+            ASSERT_EQ(p.dls_degPer30m, q.dls_degPer30m) << row;
+        }
+        EXPECT_EQ(std::get<LoadFinished>(b.events.back()).segments,
+                  std::get<LoadFinished>(a.events.back()).segments);
+    }
 }
 
 TEST(WellLoadPipelineTest, StreamsALogWithExtraCurves) {
