@@ -54,7 +54,8 @@ TEST_F(WellViewerTest, WithoutALimitEveryChangeIsDrawn) {
     for (int i = 0; i < 20; ++i) {
         const int before = frames();
         changeScene();
-        ASSERT_TRUE(test::waitUntil([&] { return frames() == before + 1; }, 5000))
+        // At least one: the window system may ask for frames of its own (an expose).
+        ASSERT_TRUE(test::waitUntil([&] { return frames() > before; }, 5000))
             << "change " << i << " was not drawn";
     }
 }
@@ -81,19 +82,20 @@ TEST_F(WellViewerTest, ALimitHoldsFramesBackButNotTheFirstTheUsersOrTheLast) {
                      Qt::NoModifier);
     QApplication::sendEvent(m_viewer->getGLWidget(), &move);
     changeScene();
-    ASSERT_TRUE(test::waitUntil([&] { return frames() == start + 2; }, 5000))
+    ASSERT_TRUE(test::waitUntil([&] { return frames() > start + 1; }, 5000))
         << "a frame after the user's input is not held back";
 
-    // Past the input's grace, held back again; lifting the limit draws the held frame at once.
+    // Past the input's grace, held back again; lifting the limit draws the held frame at once
+    // (well before the ten seconds). Counted from here: within the grace the window system may
+    // have asked for frames of its own, drawn at once too.
     QTest::qWait(700);
+    const int held = frames();
     changeScene();
     QTest::qWait(300);
-    EXPECT_EQ(frames(), start + 2);
+    EXPECT_EQ(frames(), held);
     m_viewer->limitFrames(0ms);
-    EXPECT_TRUE(test::waitUntil([&] { return frames() == start + 3; }, 5000))
+    EXPECT_TRUE(test::waitUntil([&] { return frames() > held; }, 5000))
         << "the frame held back comes once the limit is lifted";
-    QTest::qWait(200);
-    EXPECT_EQ(frames(), start + 3) << "once";
 }
 
 // Frames come at most one an interval however fast the scene changes, and the last change
@@ -115,7 +117,7 @@ TEST_F(WellViewerTest, AFastChangingSceneIsDrawnAtMostOnceAnInterval) {
     // One more change: drawn with any held back, within the interval.
     const int before = frames();
     changeScene();
-    EXPECT_TRUE(test::waitUntil([&] { return frames() == before + 1; }, 5000))
+    EXPECT_TRUE(test::waitUntil([&] { return frames() > before; }, 5000))
         << "the last change is drawn";
 }
 
