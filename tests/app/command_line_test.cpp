@@ -369,14 +369,20 @@ TEST(CommandLineTest, ViewStatsTimesTheFirstPictureAndTheLoadThenCloses) {
     EXPECT_EQ(r.status, 0) << r.output;
     const auto line = r.output.find("first_picture_ms=");
     ASSERT_NE(line, std::string::npos) << r.output;
-    double first = -1.0, complete = -1.0, settled = -1.0, rss = -1.0;
+    double first = -1.0, complete = -1.0, settled = -1.0, rss = -1.0, open = -1.0;
+    int frames = -1;
     ASSERT_EQ(std::sscanf(r.output.c_str() + line,
-                          "first_picture_ms=%lf complete_ms=%lf settled_ms=%lf rss_mb=%lf", &first,
-                          &complete, &settled, &rss),
-              4)
+                          "first_picture_ms=%lf complete_ms=%lf settled_ms=%lf rss_mb=%lf "
+                          "frames_loading=%d open_ms=%lf",
+                          &first, &complete, &settled, &rss, &frames, &open),
+              6)
         << r.output;
     EXPECT_GT(first, 0.0);
     EXPECT_GT(complete, 0.0);
     EXPECT_GE(settled, complete);
     EXPECT_GT(rss, 1.0);
+    EXPECT_GE(frames, 0);
+    // The wells are opened once Qt and the window have started, before anything is drawn.
+    EXPECT_GT(open, 0.0);
+    EXPECT_LT(open, first);
 }
